@@ -1,0 +1,179 @@
+#include "PointGrid.h"
+
+namespace pcurv
+{
+
+void PointGrid::Build(const double* coordinates, std::int64_t count, double cellSize)
+{
+  this->Ids.clear();
+  this->Sorted.clear();
+  this->CellStart.assign(2, 0);
+  this->Dimensions = { { 1, 1, 1 } };
+  if (count <= 0)
+  {
+    return;
+  }
+  std::array<double, 3> upper;
+  for (int k = 0; k < 3; ++k)
+  {
+    this->Origin[k] = upper[k] = coordinates[k];
+  }
+  for (std::int64_t i = 1; i < count; ++i)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      this->Origin[k] = std::min(this->Origin[k], coordinates[3 * i + k]);
+      upper[k] = std::max(upper[k], coordinates[3 * i + k]);
+    }
+  }
+  double diagonalSquared = 0.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    diagonalSquared += (upper[k] - this->Origin[k]) * (upper[k] - this->Origin[k]);
+  }
+  this->Diagonal = std::sqrt(diagonalSquared);
+
+  // Cells: about cellSize, but never many more than points (a small radius
+  // in a large sparse box would otherwise allocate without bound).
+  const double maximumCells = 4.0 * static_cast<double>(count) + 4096.0;
+  double size = cellSize > 0.0 && std::isfinite(cellSize) ? cellSize : this->Diagonal;
+  if (!(size > 0.0))
+  {
+    size = 1.0; // all points coincide
+  }
+  for (;;)
+  {
+    double cells = 1.0;
+    for (int k = 0; k < 3; ++k)
+    {
+      cells *= std::floor((upper[k] - this->Origin[k]) / size) + 1.0;
+    }
+    if (cells <= maximumCells)
+    {
+      break;
+    }
+    size *= std::max(1.01, std::cbrt(cells / maximumCells));
+  }
+  this->CellSize = size;
+  for (int k = 0; k < 3; ++k)
+  {
+    this->Dimensions[k] =
+      static_cast<std::int64_t>(std::floor((upper[k] - this->Origin[k]) / size)) + 1;
+  }
+
+  // Counting sort by cell.
+  const std::int64_t numberOfCells =
+    this->Dimensions[0] * this->Dimensions[1] * this->Dimensions[2];
+  std::vector<std::int64_t> cellOf(count);
+  this->CellStart.assign(numberOfCells + 1, 0);
+  for (std::int64_t i = 0; i < count; ++i)
+  {
+    const double* x = coordinates + 3 * i;
+    cellOf[i] = (this->CellIndex(x[2], 2) * this->Dimensions[1] + this->CellIndex(x[1], 1)) *
+        this->Dimensions[0] +
+      this->CellIndex(x[0], 0);
+    ++this->CellStart[cellOf[i] + 1];
+  }
+  for (std::int64_t c = 0; c < numberOfCells; ++c)
+  {
+    this->CellStart[c + 1] += this->CellStart[c];
+  }
+  std::vector<std::int64_t> next(this->CellStart.begin(), this->CellStart.end() - 1);
+  this->Ids.resize(count);
+  this->Sorted.resize(3 * count);
+  for (std::int64_t i = 0; i < count; ++i)
+  {
+    const std::int64_t j = next[cellOf[i]]++;
+    this->Ids[j] = i;
+    for (int k = 0; k < 3; ++k)
+    {
+      this->Sorted[3 * j + k] = coordinates[3 * i + k];
+    }
+  }
+}
+
+void PointGrid::GatherWithinRadius(const double x[3], double radius, std::vector<double>& out) const
+{
+  out.clear();
+  if (this->Ids.empty() || !(radius > 0.0))
+  {
+    return;
+  }
+  std::array<std::int64_t, 3> low, high;
+  for (int k = 0; k < 3; ++k)
+  {
+    low[k] = this->CellIndex(x[k] - radius, k);
+    high[k] = this->CellIndex(x[k] + radius, k);
+  }
+  std::int64_t candidates = 0;
+  for (std::int64_t iz = low[2]; iz <= high[2]; ++iz)
+  {
+    for (std::int64_t iy = low[1]; iy <= high[1]; ++iy)
+    {
+      const std::int64_t row = (iz * this->Dimensions[1] + iy) * this->Dimensions[0];
+      candidates += this->CellStart[row + high[0] + 1] - this->CellStart[row + low[0]];
+    }
+  }
+  out.resize(3 * candidates + 3); // one spare slot for the last, maybe rejected, write
+  double* write = out.data();
+  std::int64_t kept = 0;
+  const double radiusSquared = radius * radius;
+  for (std::int64_t iz = low[2]; iz <= high[2]; ++iz)
+  {
+    for (std::int64_t iy = low[1]; iy <= high[1]; ++iy)
+    {
+      const std::int64_t row = (iz * this->Dimensions[1] + iy) * this->Dimensions[0];
+      const std::int64_t end = this->CellStart[row + high[0] + 1];
+      for (std::int64_t j = this->CellStart[row + low[0]]; j < end; ++j)
+      {
+        const double* q = &this->Sorted[3 * j];
+        const double dx = q[0] - x[0], dy = q[1] - x[1], dz = q[2] - x[2];
+        write[3 * kept] = q[0];
+        write[3 * kept + 1] = q[1];
+        write[3 * kept + 2] = q[2];
+        kept += (dx * dx + dy * dy + dz * dz < radiusSquared) ? 1 : 0;
+      }
+    }
+  }
+  out.resize(3 * kept);
+}
+
+double PointGrid::SquaredDistanceToKth(const double x[3], int k, std::vector<double>& scratch) const
+{
+  const std::int64_t wanted = std::min<std::int64_t>(std::max(k, 1), this->GetNumberOfPoints());
+  if (wanted == 0)
+  {
+    return 0.0;
+  }
+  double radius = this->CellSize;
+  for (;;)
+  {
+    scratch.clear();
+    // Beyond the whole box every point is found: the loop ends.
+    const bool everything = radius > 2.0 * this->Diagonal + this->CellSize;
+    const double queryRadius = everything ? std::nextafter(radius, HUGE_VAL) : radius;
+    this->ForEachWithinRadius(x,
+      queryRadius,
+      [&](const double* q, std::int64_t)
+      {
+        const double dx = q[0] - x[0], dy = q[1] - x[1], dz = q[2] - x[2];
+        scratch.push_back(dx * dx + dy * dy + dz * dz);
+      });
+    const std::int64_t found = static_cast<std::int64_t>(scratch.size());
+    if (found >= wanted)
+    {
+      std::nth_element(scratch.begin(), scratch.begin() + (wanted - 1), scratch.end());
+      return scratch[wanted - 1];
+    }
+    if (everything)
+    {
+      return found > 0 ? *std::max_element(scratch.begin(), scratch.end()) : 0.0;
+    }
+    // Points on a surface: the count grows with the area, radius^2.
+    const double factor =
+      1.1 * std::sqrt(static_cast<double>(wanted) / std::max<std::int64_t>(found, 1));
+    radius *= std::min(4.0, std::max(1.25, factor));
+  }
+}
+
+} // namespace pcurv

@@ -1,0 +1,421 @@
+#include "PrincipalCurvatureCore.h"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <limits>
+
+namespace pcurv
+{
+namespace
+{
+constexpr double Pi = 3.14159265358979323846;
+constexpr double DirectionStep = Pi / 8.0;
+
+/// cos and sin of theta_i = i pi / 8, the angles of the 16 half planes.
+struct DirectionTable
+{
+  std::array<double, NumberOfDirections> Cos;
+  std::array<double, NumberOfDirections> Sin;
+  DirectionTable()
+  {
+    for (int i = 0; i < NumberOfDirections; ++i)
+    {
+      this->Cos[i] = std::cos(i * DirectionStep);
+      this->Sin[i] = std::sin(i * DirectionStep);
+    }
+  }
+};
+
+const DirectionTable& Directions()
+{
+  static const DirectionTable table;
+  return table;
+}
+
+Vector3 Cross(const Vector3& a, const Vector3& b)
+{
+  return { { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] } };
+}
+
+Vector3 Normalized(const Vector3& a)
+{
+  const double length = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+  return { { a[0] / length, a[1] / length, a[2] / length } };
+}
+
+/// True when |numerator/denominator| would be meaningless because the
+/// denominator vanished relative to the size of the terms it was made of.
+bool VanishingDenominator(double denominator, double termMagnitude)
+{
+  return !(std::fabs(denominator) > 1e-13 * termMagnitude);
+}
+
+CircleFit MakeFit(double curvature)
+{
+  CircleFit fit;
+  fit.Valid = std::isfinite(curvature);
+  fit.Curvature = fit.Valid ? curvature : 0.0;
+  return fit;
+}
+
+/// Entries of B named as in the paper: a..f.
+struct CgaMatrix
+{
+  double a, b, c, d, e, f;
+  explicit CgaMatrix(const CgaSums& s)
+    : a(s.SumH2)
+    , b(-s.SumH)
+    , c(-0.5 * s.SumHD)
+    , d(static_cast<double>(s.Count))
+    , e(0.5 * s.SumD)
+    , f(0.25 * s.SumD2)
+  {
+  }
+};
+} // namespace
+
+TangentFrame MakeTangentFrame(const Vector3& unitNormal)
+{
+  int leastAligned = 0;
+  for (int axis = 1; axis < 3; ++axis)
+  {
+    if (std::fabs(unitNormal[axis]) < std::fabs(unitNormal[leastAligned]))
+    {
+      leastAligned = axis;
+    }
+  }
+  Vector3 axisVector{ { 0.0, 0.0, 0.0 } };
+  axisVector[leastAligned] = 1.0;
+  TangentFrame frame;
+  frame.Normal = unitNormal;
+  frame.V0 = Normalized(Cross(unitNormal, axisVector));
+  frame.W0 = Cross(unitNormal, frame.V0);
+  return frame;
+}
+
+CircleFit FitPrevious(const CgaSums& sums)
+{
+  const CgaMatrix m(sums);
+  Eigen::Matrix3d B;
+  B << m.a, m.b, m.c, m.b, m.d, m.e, m.c, m.e, m.f;
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
+  // The iterative solver: computeDirect loses the smallest eigenvector's
+  // accuracy when the eigenvalues spread over many orders of magnitude,
+  // which is the normal case here (a ~ sum h^2 is tiny next to d = N).
+  solver.compute(B);
+  if (solver.info() != Eigen::Success)
+  {
+    return CircleFit{};
+  }
+  const Eigen::Vector3d S = solver.eigenvectors().col(0);
+  const double sN = S[0];
+  const double sInf = S[1];
+  const double s0 = S[2];
+  const double radicand = sN * sN - 2.0 * sInf * s0;
+  if (!(radicand > 0.0))
+  {
+    return CircleFit{}; // imaginary or degenerate sphere
+  }
+  return MakeFit(std::copysign(1.0, sN) * s0 / std::sqrt(radicand));
+}
+
+CircleFit FitEquations12(const CgaSums& sums)
+{
+  const CgaMatrix m(sums);
+  const double denominator = m.b * m.e - m.c * m.d;
+  if (VanishingDenominator(denominator, std::fabs(m.b * m.e) + std::fabs(m.c * m.d)))
+  {
+    return CircleFit{};
+  }
+  return MakeFit((m.a * m.d - m.b * m.b) / denominator);
+}
+
+CircleFit FitEquations23(const CgaSums& sums)
+{
+  const CgaMatrix m(sums);
+  const double denominator = m.e * m.e - m.f * m.d;
+  if (VanishingDenominator(denominator, m.e * m.e + std::fabs(m.f * m.d)))
+  {
+    return CircleFit{};
+  }
+  return MakeFit((m.c * m.d - m.b * m.e) / denominator);
+}
+
+SineFit FitSine(const std::array<double, NumberOfDirections>& curvature,
+  const std::array<bool, NumberOfDirections>& valid)
+{
+  SineFit fit;
+  // 2 theta_i = i pi / 4: directions i and i + 8 share one position on the
+  // circle of 2 theta (they are the two halves of one plane).
+  std::array<bool, 8> occupied{};
+  Eigen::Matrix3d normal = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d rhs = Eigen::Vector3d::Zero();
+  const DirectionTable& table = Directions();
+  for (int i = 0; i < NumberOfDirections; ++i)
+  {
+    if (!valid[i])
+    {
+      continue;
+    }
+    ++fit.ValidDirections;
+    occupied[i % 8] = true;
+    const int doubled = (2 * i) % NumberOfDirections;
+    const Eigen::Vector3d row(1.0, table.Cos[doubled], table.Sin[doubled]);
+    normal += row * row.transpose();
+    rhs += row * curvature[i];
+  }
+
+  int distinct = 0;
+  int largestGap = 0;
+  int firstOccupied = -1;
+  int previous = -1;
+  for (int position = 0; position < 8; ++position)
+  {
+    if (!occupied[position])
+    {
+      continue;
+    }
+    ++distinct;
+    if (previous >= 0)
+    {
+      largestGap = std::max(largestGap, position - previous);
+    }
+    else
+    {
+      firstOccupied = position;
+    }
+    previous = position;
+  }
+  if (distinct < 3)
+  {
+    return fit;
+  }
+  largestGap = std::max(largestGap, firstOccupied + 8 - previous);
+  if (largestGap >= 4) // all positions inside one closed half-turn of 2 theta
+  {
+    return fit;
+  }
+
+  const Eigen::Vector3d coefficients = normal.ldlt().solve(rhs);
+  fit.Offset = coefficients[0];
+  fit.CosineAmplitude = coefficients[1];
+  fit.SineAmplitude = coefficients[2];
+  double squaredResidual = 0.0;
+  for (int i = 0; i < NumberOfDirections; ++i)
+  {
+    if (valid[i])
+    {
+      const int doubled = (2 * i) % NumberOfDirections;
+      const double model = fit.Offset + fit.CosineAmplitude * table.Cos[doubled] +
+        fit.SineAmplitude * table.Sin[doubled];
+      squaredResidual += (curvature[i] - model) * (curvature[i] - model);
+    }
+  }
+  fit.RmsResidual = std::sqrt(squaredResidual / fit.ValidDirections);
+  fit.Valid = std::isfinite(fit.Offset) && std::isfinite(fit.CosineAmplitude) &&
+    std::isfinite(fit.SineAmplitude);
+  return fit;
+}
+
+void PrincipalCurvaturesFromSine(const SineFit& fit, const TangentFrame& frame, PointCurvature& out)
+{
+  out.ValidDirections = fit.ValidDirections;
+  out.SineFitRms = fit.RmsResidual;
+  out.Valid = fit.Valid;
+  if (!fit.Valid)
+  {
+    return;
+  }
+  const double amplitude = std::hypot(fit.CosineAmplitude, fit.SineAmplitude);
+  // Paper sign: extremes offset -/+ amplitude; output sign flips them.
+  out.MaximumCurvature = -(fit.Offset - amplitude);
+  out.MinimumCurvature = -(fit.Offset + amplitude);
+  // The paper-sign maximum (output minimum) lies at 2 theta = atan2(As, Ac).
+  const double theta = 0.5 * std::atan2(fit.SineAmplitude, fit.CosineAmplitude);
+  const double c = std::cos(theta);
+  const double s = std::sin(theta);
+  for (int k = 0; k < 3; ++k)
+  {
+    out.MinimumDirection[k] = c * frame.V0[k] + s * frame.W0[k];
+  }
+  out.MaximumDirection = Cross(frame.Normal, out.MinimumDirection);
+}
+
+std::uint32_t PointCurvatureEstimator::DirectionMask(double tx, double ty, double p)
+{
+  const DirectionTable& table = Directions();
+  auto inHalfPlane = [&](int direction)
+  {
+    const double along = tx * table.Cos[direction] + ty * table.Sin[direction];
+    const double across = -tx * table.Sin[direction] + ty * table.Cos[direction];
+    return along > 0.0 && std::fabs(across) < p;
+  };
+  const double rhoSquared = tx * tx + ty * ty;
+  // Within p / sin(pi/8) of the normal line, a neighbour can be near many
+  // planes: test all of them (a small share of the neighbours).
+  constexpr double SinEighthPiSquared = 0.14644660940672624; // sin^2(pi / 8)
+  if (rhoSquared * SinEighthPiSquared < p * p)
+  {
+    std::uint32_t mask = 0;
+    for (int i = 0; i < NumberOfDirections; ++i)
+    {
+      mask |= inHalfPlane(i) ? (1u << i) : 0u;
+    }
+    return mask;
+  }
+  // Farther out, every plane but the two bounding the neighbour's sector
+  // (of angle pi / 8) is at least rho sin(pi / 8) >= p away. The sector is
+  // found without atan2: quadrant from the signs, then which of the four
+  // eighth-pi slices from comparisons with tan(pi / 8). A neighbour on a
+  // sector boundary may land in either adjacent sector; both contain the
+  // direction it lies on, and the exact test decides.
+  constexpr double TanEighthPi = 0.41421356237309503;
+  const double ax = std::fabs(tx);
+  const double ay = std::fabs(ty);
+  const int slice = (ay >= TanEighthPi * ax) + (ay >= ax) + (TanEighthPi * ay > ax);
+  // Quadrant q = 2 [ty < 0] + [tx < 0]; the angle is alpha, pi - alpha,
+  // 2 pi - alpha or pi + alpha: sector = base + sign * slice, without branches.
+  static constexpr int Base[4] = { 0, 7, 15, 8 };
+  static constexpr int Sign[4] = { 1, -1, -1, 1 };
+  const int quadrant = 2 * (ty < 0.0) + (tx < 0.0);
+  const int sector = Base[quadrant] + Sign[quadrant] * slice;
+  const int next = (sector + 1) % NumberOfDirections;
+  return (inHalfPlane(sector) ? (1u << sector) : 0u) | (inHalfPlane(next) ? (1u << next) : 0u);
+}
+
+void PointCurvatureEstimator::Begin(const Vector3& point,
+  const Vector3& unitNormal,
+  double planeDistance)
+{
+  this->Point = point;
+  this->Frame = MakeTangentFrame(unitNormal);
+  this->PlaneDistance = planeDistance;
+  this->Neighbors.clear();
+}
+
+void PointCurvatureEstimator::AccumulateDirections(double scale, double scaledPlaneDistance)
+{
+  this->Sums.fill(CgaSums{});
+  this->Masks.resize(this->Neighbors.size());
+  const double inverseScale = 1.0 / scale;
+  for (std::size_t j = 0; j < this->Neighbors.size(); ++j)
+  {
+    const Local& local = this->Neighbors[j];
+    const double h = local.H * inverseScale;
+    const double tx = local.Tx * inverseScale;
+    const double ty = local.Ty * inverseScale;
+    const double squaredDistance = h * h + tx * tx + ty * ty;
+    std::uint32_t mask = DirectionMask(tx, ty, scaledPlaneDistance);
+    this->Masks[j] = mask;
+    while (mask)
+    {
+      const int direction = __builtin_ctz(mask);
+      mask &= mask - 1;
+      this->Sums[direction].Add(h, squaredDistance);
+    }
+  }
+}
+
+void PointCurvatureEstimator::FitDirections(const FitSettings& settings, double scale)
+{
+  std::array<CircleFit, NumberOfDirections> candidate12{};
+  std::array<CircleFit, NumberOfDirections> candidate23{};
+  bool needQuality = false;
+  for (int i = 0; i < NumberOfDirections; ++i)
+  {
+    const CgaSums& sums = this->Sums[i];
+    if (sums.Count < settings.MinimumPointsPerDirection)
+    {
+      continue;
+    }
+    switch (settings.Mode)
+    {
+      case FitMode::Previous:
+        candidate23[i] = FitPrevious(sums);
+        break;
+      case FitMode::New01:
+        candidate23[i] = FitEquations23(sums);
+        break;
+      case FitMode::New02:
+        candidate12[i] = FitEquations12(sums);
+        candidate23[i] = FitEquations23(sums);
+        needQuality = needQuality || (candidate12[i].Valid && candidate23[i].Valid);
+        break;
+    }
+  }
+
+  if (needQuality)
+  {
+    // Q = summed geometric distance of the direction's points to each
+    // candidate circle; keep the candidate with the smaller Q.
+    std::array<double, NumberOfDirections> quality12{};
+    std::array<double, NumberOfDirections> quality23{};
+    const double inverseScale = 1.0 / scale;
+    for (std::size_t j = 0; j < this->Neighbors.size(); ++j)
+    {
+      std::uint32_t mask = this->Masks[j];
+      if (!mask)
+      {
+        continue;
+      }
+      const Local& local = this->Neighbors[j];
+      const double h = local.H * inverseScale;
+      const double tx = local.Tx * inverseScale;
+      const double ty = local.Ty * inverseScale;
+      const double squaredDistance = h * h + tx * tx + ty * ty;
+      while (mask)
+      {
+        const int direction = __builtin_ctz(mask);
+        mask &= mask - 1;
+        quality12[direction] +=
+          DistanceToCircle(candidate12[direction].Curvature, h, squaredDistance);
+        quality23[direction] +=
+          DistanceToCircle(candidate23[direction].Curvature, h, squaredDistance);
+      }
+    }
+    for (int i = 0; i < NumberOfDirections; ++i)
+    {
+      if (candidate12[i].Valid && candidate23[i].Valid && quality12[i] < quality23[i])
+      {
+        candidate23[i] = candidate12[i];
+      }
+    }
+  }
+
+  for (int i = 0; i < NumberOfDirections; ++i)
+  {
+    const CircleFit& chosen = candidate23[i].Valid ? candidate23[i] : candidate12[i];
+    this->DirectionValid[i] = chosen.Valid;
+    this->DirectionCurvature[i] = chosen.Valid ? chosen.Curvature / scale : 0.0;
+  }
+}
+
+PointCurvature PointCurvatureEstimator::Estimate(const FitSettings& settings)
+{
+  PointCurvature result;
+  result.NeighborCount = static_cast<int>(this->Neighbors.size());
+  this->DirectionValid.fill(false);
+  this->DirectionCurvature.fill(0.0);
+  double largestSquaredDistance = 0.0;
+  for (const Local& local : this->Neighbors)
+  {
+    largestSquaredDistance = std::max(
+      largestSquaredDistance, local.H * local.H + local.Tx * local.Tx + local.Ty * local.Ty);
+  }
+  if (!(largestSquaredDistance > 0.0) || !std::isfinite(largestSquaredDistance) ||
+    !(this->PlaneDistance > 0.0))
+  {
+    return result;
+  }
+  // Work in units of the neighbourhood's size: B's entries are then O(1)
+  // whatever the cloud's unit, and the fits are scale invariant.
+  const double scale = std::sqrt(largestSquaredDistance);
+  this->AccumulateDirections(scale, this->PlaneDistance / scale);
+  this->FitDirections(settings, scale);
+  const SineFit sine = FitSine(this->DirectionCurvature, this->DirectionValid);
+  PrincipalCurvaturesFromSine(sine, this->Frame, result);
+  return result;
+}
+
+} // namespace pcurv

@@ -1,0 +1,230 @@
+/**
+ * @file PrincipalCurvatureCore.h
+ * @brief Numeric core of principal curvature estimation by osculating-circle
+ * fitting in conformal geometric algebra (Seibert et al. 2010, Getto &
+ * Hildenbrand 2011). No VTK types: this header can be used, tested and
+ * profiled on its own.
+ *
+ * Conventions (see ALGORITHM.md in the repository documentation):
+ * - Circle fits work in the paper's sign: a circle whose centre lies on the
+ *   normal's side has positive curvature.
+ * - Results leaving the core (PointCurvature) are in the output sign:
+ *   positive where the surface bends away from the normal, so a sphere with
+ *   outward normals has k_min = k_max = +1/R.
+ */
+#ifndef PrincipalCurvatureCore_h
+#define PrincipalCurvatureCore_h
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+namespace pcurv
+{
+
+/// Number of half planes around the normal (the paper's 16 directions).
+constexpr int NumberOfDirections = 16;
+
+/// The three osculating-circle fits of the paper.
+enum class FitMode : int
+{
+  Previous = 0, ///< eigenvector of the smallest eigenvalue of B (Seibert et al.)
+  New01 = 1,    ///< closed form from equations (2) and (3)
+  New02 = 2     ///< better of the closed forms from (1)+(2) and (2)+(3)
+};
+
+using Vector3 = std::array<double, 3>;
+
+/// Orthonormal frame at a query point: normal n, first direction v0, w0 = n x v0.
+struct TangentFrame
+{
+  Vector3 Normal;
+  Vector3 V0;
+  Vector3 W0;
+};
+
+/// Builds the frame; `unitNormal` must have length 1. v0 is n x e normalised,
+/// with e the coordinate axis least aligned with n (deterministic, stable).
+TangentFrame MakeTangentFrame(const Vector3& unitNormal);
+
+/// Running sums of one direction from which the CGA matrix B is formed:
+///   B = [a b c; b d e; c e f], a = sum h^2, b = -sum h, c = -1/2 sum h D,
+///   d = N, e = 1/2 sum D, f = 1/4 sum D^2.
+struct CgaSums
+{
+  double SumH2 = 0.0;
+  double SumH = 0.0;
+  double SumHD = 0.0;
+  double SumD = 0.0;
+  double SumD2 = 0.0;
+  int Count = 0;
+
+  void Add(double h, double squaredDistance)
+  {
+    this->SumH2 += h * h;
+    this->SumH += h;
+    this->SumHD += h * squaredDistance;
+    this->SumD += squaredDistance;
+    this->SumD2 += squaredDistance * squaredDistance;
+    ++this->Count;
+  }
+};
+
+/// Result of one circle fit, paper sign.
+struct CircleFit
+{
+  bool Valid = false;
+  double Curvature = 0.0;
+};
+
+/// Previous fit: eigenvector S of the smallest eigenvalue of B,
+/// kappa = sign(s_n) s_0 / sqrt(s_n^2 - 2 s_inf s_0). Invalid for an
+/// imaginary sphere (negative radicand).
+CircleFit FitPrevious(const CgaSums& sums);
+
+/// kappa_12 = (a d - b^2) / (b e - c d): least squares with s_0 = 1.
+CircleFit FitEquations12(const CgaSums& sums);
+
+/// kappa_23 = (c d - b e) / (e^2 - f d): regression of h on D/2 (New01).
+CircleFit FitEquations23(const CgaSums& sums);
+
+/// Geometric distance of a point (height h, squared distance D from the
+/// query point) to the circle through the query point whose centre is
+/// normal / kappa; stable for kappa -> 0.
+inline double DistanceToCircle(double kappa, double h, double squaredDistance)
+{
+  const double radicand = kappa * kappa * squaredDistance - 2.0 * kappa * h + 1.0;
+  return std::fabs(kappa * squaredDistance - 2.0 * h) /
+    (1.0 + std::sqrt(radicand > 0.0 ? radicand : 0.0));
+}
+
+/// Three-parameter least-squares sine fit of known frequency (IEEE Std 1241)
+/// of the paper-sign curvatures kappa_i = C + Ac cos(2 theta_i) + As sin(2 theta_i).
+struct SineFit
+{
+  bool Valid = false;
+  double Offset = 0.0;
+  double CosineAmplitude = 0.0;
+  double SineAmplitude = 0.0;
+  double RmsResidual = 0.0;
+  int ValidDirections = 0;
+};
+
+/// Fits over the valid directions only. Requires at least three distinct
+/// values of 2 theta that are not contained in any closed half-turn, i.e.
+/// the largest circular gap between them is below pi; otherwise Valid=false.
+SineFit FitSine(const std::array<double, NumberOfDirections>& curvature,
+  const std::array<bool, NumberOfDirections>& valid);
+
+/// Everything estimated at one point, output sign.
+struct PointCurvature
+{
+  bool Valid = false;
+  double MinimumCurvature = 0.0;
+  double MaximumCurvature = 0.0;
+  Vector3 MinimumDirection{ { 0.0, 0.0, 0.0 } };
+  Vector3 MaximumDirection{ { 0.0, 0.0, 0.0 } };
+  int NeighborCount = 0;
+  int ValidDirections = 0;
+  double SineFitRms = 0.0;
+};
+
+/// Converts a sine fit (paper sign) in the frame into output-sign principal
+/// curvatures and directions.
+void PrincipalCurvaturesFromSine(const SineFit& fit,
+  const TangentFrame& frame,
+  PointCurvature& out);
+
+/// Settings of the per-point estimate that do not change between points.
+struct FitSettings
+{
+  FitMode Mode = FitMode::New02;
+  int MinimumPointsPerDirection = 3;
+};
+
+/**
+ * Estimates the principal curvatures at one point from its neighbours.
+ * Reuse one instance per thread: it keeps its scratch buffers.
+ *
+ * Usage: Begin(x, n, p); AddNeighbor(q) for each neighbour; Estimate(settings).
+ * All geometry is taken relative to x and divided by the largest neighbour
+ * distance before fitting, so results do not depend on where the cloud sits
+ * or on its unit (up to the unit of the curvature).
+ */
+class PointCurvatureEstimator
+{
+public:
+  /// Starts a query at `point` with unit normal `unitNormal` and the
+  /// plane-distance-threshold `planeDistance` (a length, > 0).
+  void Begin(const Vector3& point, const Vector3& unitNormal, double planeDistance);
+
+  /// Adds one neighbour. A neighbour that coincides with the query point
+  /// carries no information about the curvature and is ignored.
+  void AddNeighbor(const double q[3])
+  {
+    const double dx = q[0] - this->Point[0];
+    const double dy = q[1] - this->Point[1];
+    const double dz = q[2] - this->Point[2];
+    if (dx == 0.0 && dy == 0.0 && dz == 0.0)
+    {
+      return;
+    }
+    const Vector3& n = this->Frame.Normal;
+    const Vector3& v = this->Frame.V0;
+    const Vector3& w = this->Frame.W0;
+    Local local;
+    local.H = dx * n[0] + dy * n[1] + dz * n[2];
+    local.Tx = dx * v[0] + dy * v[1] + dz * v[2];
+    local.Ty = dx * w[0] + dy * w[1] + dz * w[2];
+    this->Neighbors.push_back(local);
+  }
+
+  /// Number of neighbours added so far (coincident points excluded).
+  int GetNumberOfNeighbors() const { return static_cast<int>(this->Neighbors.size()); }
+
+  /// Bins the neighbours into the 16 half planes, fits a circle per
+  /// direction and a sine over the directions.
+  PointCurvature Estimate(const FitSettings& settings);
+
+  /// Paper-sign curvature of each direction and whether it is valid, from
+  /// the last Estimate() call (for tests and diagnostics).
+  const std::array<double, NumberOfDirections>& GetDirectionCurvatures() const
+  {
+    return this->DirectionCurvature;
+  }
+  const std::array<bool, NumberOfDirections>& GetDirectionValid() const
+  {
+    return this->DirectionValid;
+  }
+
+  /// Bit i is set when a neighbour at tangent coordinates (tx, ty) belongs
+  /// to direction i for the plane-distance-threshold p: t . v_i > 0 and
+  /// |t . (n x v_i)| < p. Binned by polar angle: only the few directions
+  /// near the neighbour's angle are tested.
+  static std::uint32_t DirectionMask(double tx, double ty, double p);
+
+private:
+  struct Local
+  {
+    double H;
+    double Tx;
+    double Ty;
+  };
+
+  void AccumulateDirections(double scale, double scaledPlaneDistance);
+  void FitDirections(const FitSettings& settings, double scale);
+
+  Vector3 Point{ { 0.0, 0.0, 0.0 } };
+  TangentFrame Frame{};
+  double PlaneDistance = 0.0;
+  std::vector<Local> Neighbors;
+  std::vector<std::uint32_t> Masks;
+  std::array<CgaSums, NumberOfDirections> Sums{};
+  std::array<double, NumberOfDirections> DirectionCurvature{};
+  std::array<bool, NumberOfDirections> DirectionValid{};
+};
+
+} // namespace pcurv
+
+#endif

@@ -1,0 +1,202 @@
+/**
+ * @class   vtkPrincipalCurvatureEstimation
+ * @brief   principal curvatures and directions of a point cloud with normals,
+ *          by osculating-circle fitting in conformal geometric algebra
+ *
+ * For every input point x with normal n, the neighbours within the
+ * surroundings-threshold s (or the k nearest) are sorted into 16 half planes
+ * around n: a neighbour belongs to half plane i when it lies on the plane's
+ * side and closer than the plane-distance-threshold p to it. In each half
+ * plane a circle through x with its centre on the normal line is fitted in
+ * conformal geometric algebra (Seibert et al. 2010; Getto & Hildenbrand,
+ * WSCG 2011), giving one normal curvature per direction. A sine of period pi
+ * fitted to these 16 values (IEEE Std 1241, three parameters) gives the
+ * principal curvatures (its extremes) and directions (where they occur).
+ *
+ * Three circle fits are offered (SetFitMode): PREVIOUS, the eigenvector of the
+ * smallest eigenvalue of the CGA matrix; NEW01, one closed-form equation;
+ * NEW02, the better (by summed geometric distance) of two closed forms.
+ *
+ * Output: the input points and point data, vertex cells (or the input's
+ * cells when the input is a vtkPolyData that has cells), and these point-data
+ * arrays (doubles unless stated):
+ * - Minimum_Curvature, Maximum_Curvature (1/length, Maximum >= Minimum),
+ *   Mean_Curvature (their mean), Gauss_Curvature (their product). Sign:
+ *   positive where the surface bends away from the normal, so a sphere with
+ *   outward normals gives +1/R, as vtkCurvatures reports.
+ * - Minimum_Curvature_Direction, Maximum_Curvature_Direction: unit 3-vectors
+ *   orthogonal to the normal and to each other (defined up to sign).
+ * - Curvature_Valid (unsigned char): 1 where estimated, 0 where not (then the
+ *   curvatures are NaN and the directions zero vectors).
+ * - Neighbor_Count (int), Valid_Direction_Count (int, 0..16),
+ *   Sine_Fit_RMS (1/length), Surroundings_Threshold and
+ *   Plane_Distance_Threshold (the lengths used at the point).
+ *
+ * By default the thresholds are derived from the cloud: s is the median,
+ * over a fixed sample of points, of the distance to the NumberOfNeighbors-th
+ * nearest neighbour (so a typical point has about that many neighbours), and
+ * p = PlaneDistanceRatio * s.
+ *
+ * The work is spread over all cores (the STDThread SMP backend is used when
+ * the process default is the sequential one); every point is computed
+ * independently, so results do not depend on the number of threads.
+ *
+ * @warning Normals need not be consistently oriented for the magnitudes, but
+ * the signs of the curvatures follow the normals. Points with a missing,
+ * zero or non-finite normal or non-finite coordinates are not estimated.
+ *
+ * @sa vtkCurvatures vtkPCACurvatureEstimation vtkPCANormalEstimation
+ */
+#ifndef vtkPrincipalCurvatureEstimation_h
+#define vtkPrincipalCurvatureEstimation_h
+
+#include "vtkPolyDataAlgorithm.h"
+#include "vtkPrincipalCurvatureFiltersModule.h" // for export macro
+
+class VTKPRINCIPALCURVATUREFILTERS_EXPORT vtkPrincipalCurvatureEstimation
+  : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkPrincipalCurvatureEstimation* New();
+  vtkTypeMacro(vtkPrincipalCurvatureEstimation, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /// The osculating-circle fits of the paper.
+  enum FitModes
+  {
+    PREVIOUS = 0,
+    NEW01 = 1,
+    NEW02 = 2
+  };
+
+  /// How the neighbours of a point are chosen.
+  enum NeighborhoodModes
+  {
+    RADIUS = 0,   ///< all points closer than the surroundings-threshold
+    K_NEAREST = 1 ///< the NumberOfNeighbors nearest points
+  };
+
+  ///@{
+  /**
+   * The circle fit per direction. Default NEW02.
+   */
+  vtkSetClampMacro(FitMode, int, PREVIOUS, NEW02);
+  vtkGetMacro(FitMode, int);
+  void SetFitModeToPrevious() { this->SetFitMode(PREVIOUS); }
+  void SetFitModeToNew01() { this->SetFitMode(NEW01); }
+  void SetFitModeToNew02() { this->SetFitMode(NEW02); }
+  ///@}
+
+  ///@{
+  /**
+   * RADIUS (default) or K_NEAREST neighbourhoods.
+   */
+  vtkSetClampMacro(NeighborhoodMode, int, RADIUS, K_NEAREST);
+  vtkGetMacro(NeighborhoodMode, int);
+  void SetNeighborhoodModeToRadius() { this->SetNeighborhoodMode(RADIUS); }
+  void SetNeighborhoodModeToKNearest() { this->SetNeighborhoodMode(K_NEAREST); }
+  ///@}
+
+  ///@{
+  /**
+   * When on (default), the surroundings-threshold s and the
+   * plane-distance-threshold p are derived from the cloud (see the class
+   * description) and SurroundingsThreshold / PlaneDistanceThreshold are
+   * ignored. In K_NEAREST mode, p = PlaneDistanceRatio times the distance to
+   * the farthest of the point's neighbours.
+   */
+  vtkSetMacro(AutomaticThresholds, bool);
+  vtkGetMacro(AutomaticThresholds, bool);
+  vtkBooleanMacro(AutomaticThresholds, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Target number of neighbours for the automatic surroundings-threshold, and
+   * k in K_NEAREST mode. Default 375 (the paper's target).
+   */
+  vtkSetClampMacro(NumberOfNeighbors, int, 3, 1000000);
+  vtkGetMacro(NumberOfNeighbors, int);
+  ///@}
+
+  ///@{
+  /**
+   * The surroundings-threshold s (a radius, in the cloud's length unit) used
+   * when AutomaticThresholds is off in RADIUS mode. Default 1.
+   */
+  vtkSetClampMacro(SurroundingsThreshold, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(SurroundingsThreshold, double);
+  ///@}
+
+  ///@{
+  /**
+   * The plane-distance-threshold p (a length) used when AutomaticThresholds
+   * is off. Default 0.1.
+   */
+  vtkSetClampMacro(PlaneDistanceThreshold, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(PlaneDistanceThreshold, double);
+  ///@}
+
+  ///@{
+  /**
+   * p / s when AutomaticThresholds is on. Default 0.1.
+   */
+  vtkSetClampMacro(PlaneDistanceRatio, double, 0.001, 1.0);
+  vtkGetMacro(PlaneDistanceRatio, double);
+  ///@}
+
+  ///@{
+  /**
+   * Fewest points a direction needs for its circle fit. Default 3 (the least
+   * that determines a circle).
+   */
+  vtkSetClampMacro(MinimumPointsPerDirection, int, 3, 1000000);
+  vtkGetMacro(MinimumPointsPerDirection, int);
+  ///@}
+
+  ///@{
+  /**
+   * Upper bound on the number of threads; 0 (default) uses all cores.
+   */
+  vtkSetClampMacro(NumberOfThreads, int, 0, 4096);
+  vtkGetMacro(NumberOfThreads, int);
+  ///@}
+
+  ///@{
+  /**
+   * What the last execution used and found: the surroundings-threshold and
+   * plane-distance-threshold in RADIUS mode (0 in K_NEAREST mode, where they
+   * vary per point), and the number of points that could not be estimated.
+   */
+  vtkGetMacro(UsedSurroundingsThreshold, double);
+  vtkGetMacro(UsedPlaneDistanceThreshold, double);
+  vtkGetMacro(NumberOfUnestimatedPoints, vtkIdType);
+  ///@}
+
+protected:
+  vtkPrincipalCurvatureEstimation();
+  ~vtkPrincipalCurvatureEstimation() override = default;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  int FitMode = NEW02;
+  int NeighborhoodMode = RADIUS;
+  bool AutomaticThresholds = true;
+  int NumberOfNeighbors = 375;
+  double SurroundingsThreshold = 1.0;
+  double PlaneDistanceThreshold = 0.1;
+  double PlaneDistanceRatio = 0.1;
+  int MinimumPointsPerDirection = 3;
+  int NumberOfThreads = 0;
+
+  double UsedSurroundingsThreshold = 0.0;
+  double UsedPlaneDistanceThreshold = 0.0;
+  vtkIdType NumberOfUnestimatedPoints = 0;
+
+private:
+  vtkPrincipalCurvatureEstimation(const vtkPrincipalCurvatureEstimation&) = delete;
+  void operator=(const vtkPrincipalCurvatureEstimation&) = delete;
+};
+
+#endif

@@ -1,0 +1,80 @@
+/**
+ * @file TestChecks.h
+ * @brief A few named checks that count failures and print what failed, for
+ * the plain C++ tests (VTK style: main returns EXIT_SUCCESS/EXIT_FAILURE).
+ */
+#ifndef TestChecks_h
+#define TestChecks_h
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
+class Checks
+{
+public:
+  void True(const char* what, bool ok)
+  {
+    ++this->Count;
+    if (!ok)
+    {
+      this->Fail(what, "is false");
+    }
+  }
+
+  void Near(const char* what, double value, double expected, double tolerance)
+  {
+    ++this->Count;
+    if (!(std::fabs(value - expected) <= tolerance))
+    {
+      char detail[160];
+      std::snprintf(
+        detail, sizeof(detail), "= %.10g, expected %.10g +- %.3g", value, expected, tolerance);
+      this->Fail(what, detail);
+    }
+  }
+
+  void Below(const char* what, double value, double limit)
+  {
+    ++this->Count;
+    if (!(value < limit))
+    {
+      char detail[160];
+      std::snprintf(detail, sizeof(detail), "= %.6g, must be below %.6g", value, limit);
+      this->Fail(what, detail);
+    }
+  }
+
+  void Equal(const char* what, long long value, long long expected)
+  {
+    ++this->Count;
+    if (value != expected)
+    {
+      char detail[160];
+      std::snprintf(detail, sizeof(detail), "= %lld, expected %lld", value, expected);
+      this->Fail(what, detail);
+    }
+  }
+
+  int Summary() const
+  {
+    std::printf("%d checks, %d failed\n", this->Count, this->Failures);
+    // A test that checked nothing has not passed.
+    return this->Failures == 0 && this->Count > 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  }
+
+private:
+  void Fail(const char* what, const char* detail)
+  {
+    ++this->Failures;
+    if (this->Failures <= 50)
+    {
+      std::printf("FAILED: %s %s\n", what, detail);
+    }
+  }
+
+  int Count = 0;
+  int Failures = 0;
+};
+
+#endif

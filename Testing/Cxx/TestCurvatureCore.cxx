@@ -1,0 +1,318 @@
+// Tests of the numeric core alone (no VTK): frame, half-plane binning,
+// circle fits, sine fit and the per-point estimator.
+#include "AnalyticSurfaces.h"
+#include "PrincipalCurvatureCore.h"
+#include "TestChecks.h"
+
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+
+namespace
+{
+using namespace pcurv;
+using testing::Random;
+
+void TestTangentFrame(Checks& checks)
+{
+  Random random(1);
+  for (int trial = 0; trial < 1000; ++trial)
+  {
+    testing::Vec n{ { random.Normal(), random.Normal(), random.Normal() } };
+    n = testing::Unit(n);
+    const TangentFrame frame = MakeTangentFrame(n);
+    checks.Near("|v0| = 1", testing::Dot(frame.V0, frame.V0), 1.0, 1e-12);
+    checks.Near("|w0| = 1", testing::Dot(frame.W0, frame.W0), 1.0, 1e-12);
+    checks.Near("v0 . n = 0", testing::Dot(frame.V0, n), 0.0, 1e-12);
+    checks.Near("w0 . v0 = 0", testing::Dot(frame.W0, frame.V0), 0.0, 1e-12);
+    const testing::Vec w = testing::Cross(n, frame.V0);
+    checks.Near("w0 = n x v0", testing::Dot(w, frame.W0), 1.0, 1e-12);
+  }
+}
+
+/// The polar-angle binning must give exactly the directions of the plain
+/// 16-plane test of the definition.
+void TestDirectionMaskMatchesPlaneTest(Checks& checks)
+{
+  Random random(2);
+  int mismatches = 0;
+  for (int trial = 0; trial < 200000; ++trial)
+  {
+    const double tx = 2.0 * random.Uniform() - 1.0;
+    const double ty = 2.0 * random.Uniform() - 1.0;
+    const double p = 0.3 * random.Uniform() * random.Uniform();
+    std::uint32_t expected = 0;
+    for (int i = 0; i < NumberOfDirections; ++i)
+    {
+      const double theta = i * 3.14159265358979323846 / 8.0;
+      const double along = tx * std::cos(theta) + ty * std::sin(theta);
+      const double across = -tx * std::sin(theta) + ty * std::cos(theta);
+      if (along > 0.0 && std::fabs(across) < p)
+      {
+        expected |= 1u << i;
+      }
+    }
+    mismatches += PointCurvatureEstimator::DirectionMask(tx, ty, p) != expected;
+  }
+  checks.Equal("direction mask mismatches", mismatches, 0);
+  checks.Equal("point on the normal line has no direction",
+    static_cast<int>(PointCurvatureEstimator::DirectionMask(0.0, 0.0, 0.1)),
+    0);
+  // A point on direction 0's ray, far away, belongs to direction 0 only.
+  checks.Equal("far point on the ray of direction 0",
+    static_cast<int>(PointCurvatureEstimator::DirectionMask(1.0, 0.0, 0.01)),
+    1);
+}
+
+/// Points of a circle through the origin with centre (0, 1/kappa) in the
+/// (along, h) plane; paper sign: centre on the normal's side is positive.
+CgaSums CirclePoints(double kappa, int count, double extent, double noise, Random& random)
+{
+  CgaSums sums;
+  for (int j = 0; j < count; ++j)
+  {
+    const double along = extent * (j + 1) / count;
+    double h;
+    if (kappa == 0.0)
+    {
+      h = 0.0;
+    }
+    else
+    {
+      const double r = 1.0 / kappa;
+      h = r - std::copysign(std::sqrt(r * r - along * along), r);
+    }
+    h += noise * random.Normal();
+    sums.Add(h, along * along + h * h);
+  }
+  return sums;
+}
+
+void TestCircleFits(Checks& checks)
+{
+  Random random(3);
+  for (const double kappa : { 2.0, 0.5, -0.5, -2.0, 0.01 })
+  {
+    const CgaSums sums = CirclePoints(kappa, 12, 0.4, 0.0, random);
+    char label[64];
+    std::snprintf(label, sizeof(label), "exact circle kappa=%g", kappa);
+    checks.True(
+      label, FitPrevious(sums).Valid && FitEquations12(sums).Valid && FitEquations23(sums).Valid);
+    checks.Near(label, FitPrevious(sums).Curvature, kappa, 1e-8 * std::fabs(kappa) + 1e-10);
+    checks.Near(label, FitEquations12(sums).Curvature, kappa, 1e-9 * std::fabs(kappa));
+    checks.Near(label, FitEquations23(sums).Curvature, kappa, 1e-9 * std::fabs(kappa));
+  }
+  const CgaSums plane = CirclePoints(0.0, 10, 0.5, 0.0, random);
+  checks.True("plane: Previous valid", FitPrevious(plane).Valid);
+  checks.Near("plane: Previous gives 0", FitPrevious(plane).Curvature, 0.0, 1e-12);
+  checks.Near("plane: kappa_23 gives 0", FitEquations23(plane).Curvature, 0.0, 1e-12);
+  checks.True("plane: kappa_12 is 0/0, invalid", !FitEquations12(plane).Valid);
+
+  CgaSums twoPoints;
+  twoPoints.Add(0.1, 0.2);
+  twoPoints.Add(0.1, 0.2);
+  checks.True("identical points: kappa_23 invalid", !FitEquations23(twoPoints).Valid);
+
+  // Noise in h: kappa_23 (New01) stays close; kappa_12 is biased.
+  const CgaSums noisy = CirclePoints(0.5, 200, 0.5, 0.002, random);
+  checks.Near("noisy circle kappa_23", FitEquations23(noisy).Curvature, 0.5, 0.05);
+  checks.Near("noisy circle Previous", FitPrevious(noisy).Curvature, 0.5, 0.05);
+}
+
+void TestDistanceToCircle(Checks& checks)
+{
+  // Circle of curvature 1 (radius 1, centre (0, 1)); the point (0, 3) lies 1
+  // outside it, the point (0, 1) (the centre) 1 inside; h = 0, D = 0 on it.
+  checks.Near("distance outside", DistanceToCircle(1.0, 3.0, 9.0), 1.0, 1e-12);
+  checks.Near("distance centre", DistanceToCircle(1.0, 1.0, 1.0), 1.0, 1e-12);
+  checks.Near("distance on circle", DistanceToCircle(1.0, 0.0, 0.0), 0.0, 1e-12);
+  // kappa = 0 is the tangent line h = 0: distance |h|.
+  checks.Near("distance to line", DistanceToCircle(0.0, 0.25, 1.0), 0.25, 1e-12);
+}
+
+void TestSineFit(Checks& checks)
+{
+  const double offset = 0.3, cosine = -0.2, sine = 0.15;
+  std::array<double, NumberOfDirections> kappa{};
+  std::array<bool, NumberOfDirections> valid{};
+  for (int i = 0; i < NumberOfDirections; ++i)
+  {
+    const double angle = 2.0 * i * 3.14159265358979323846 / 8.0;
+    kappa[i] = offset + cosine * std::cos(angle) + sine * std::sin(angle);
+    valid[i] = (i % 5) != 3; // a few gaps
+  }
+  SineFit fit = FitSine(kappa, valid);
+  checks.True("sine fit with gaps valid", fit.Valid);
+  checks.Near("offset", fit.Offset, offset, 1e-12);
+  checks.Near("cos amplitude", fit.CosineAmplitude, cosine, 1e-12);
+  checks.Near("sin amplitude", fit.SineAmplitude, sine, 1e-12);
+  checks.Near("rms", fit.RmsResidual, 0.0, 1e-12);
+
+  // Directions 0, 1, 2 and their opposites 8, 9, 10: 2 theta covers only
+  // 0..pi/2, inside a half-turn: rejected.
+  valid.fill(false);
+  for (int i : { 0, 1, 2, 8, 9, 10 })
+  {
+    valid[i] = true;
+  }
+  checks.True("clustered directions rejected", !FitSine(kappa, valid).Valid);
+  // 2 theta at 0, pi/2, pi (a closed half-turn): rejected; adding 3pi/2: fine.
+  valid.fill(false);
+  valid[0] = valid[2] = valid[4] = true;
+  checks.True("closed half-turn rejected", !FitSine(kappa, valid).Valid);
+  valid[6] = true;
+  checks.True("spread directions accepted", FitSine(kappa, valid).Valid);
+  valid.fill(false);
+  valid[0] = valid[8] = true;
+  checks.True("two directions rejected", !FitSine(kappa, valid).Valid);
+}
+
+/// One point on a sphere, ellipsoid and saddle with exact neighbours: the
+/// estimator must recover the exact values in every mode.
+void TestEstimatorOnSurfaces(Checks& checks)
+{
+  struct Case
+  {
+    testing::Surface Surface;
+    double Radius;
+  };
+  const Case cases[] = { { testing::Sphere(2.0), 0.5 },
+    { testing::Ellipsoid(3.0, 2.0, 1.5), 0.4 },
+    { testing::Saddle(2.0, 1.0), 0.25 },
+    { testing::Torus(3.0, 1.0), 0.35 } };
+  for (const Case& c : cases)
+  {
+    const auto samples = testing::Sample(c.Surface, 60000, 7);
+    for (int mode = 0; mode < 3; ++mode)
+    {
+      PointCurvatureEstimator estimator;
+      FitSettings settings;
+      settings.Mode = static_cast<FitMode>(mode);
+      double worst = 0.0;
+      double worstAngle = 0.0;
+      for (int q = 0; q < 50; ++q)
+      {
+        const testing::SurfaceSample& x = samples[q * 97];
+        if (x.BoundaryDistance < 2.0 * c.Radius)
+        {
+          continue;
+        }
+        estimator.Begin(x.Point, x.Normal, 0.1 * c.Radius);
+        for (const testing::SurfaceSample& s : samples)
+        {
+          const testing::Vec d = testing::Add(s.Point, testing::Scale(-1.0, x.Point));
+          if (testing::Dot(d, d) < c.Radius * c.Radius)
+          {
+            estimator.AddNeighbor(s.Point.data());
+          }
+        }
+        const PointCurvature r = estimator.Estimate(settings);
+        checks.True("estimate valid", r.Valid);
+        const double scale = std::max(std::fabs(x.MaximumCurvature), std::fabs(x.MinimumCurvature));
+        worst = std::max(worst, std::fabs(r.MinimumCurvature - x.MinimumCurvature) / scale);
+        worst = std::max(worst, std::fabs(r.MaximumCurvature - x.MaximumCurvature) / scale);
+        checks.True("max >= min", r.MaximumCurvature >= r.MinimumCurvature);
+        checks.Near("d_max . n", testing::Dot(r.MaximumDirection, x.Normal), 0.0, 1e-12);
+        checks.Near(
+          "d_min . d_max", testing::Dot(r.MaximumDirection, r.MinimumDirection), 0.0, 1e-12);
+        if (x.MaximumCurvature - x.MinimumCurvature > 0.2 * scale)
+        {
+          const double cosine = std::fabs(testing::Dot(r.MaximumDirection, x.MaximumDirection));
+          worstAngle = std::max(worstAngle, std::acos(std::min(1.0, cosine)) * 180.0 / testing::Pi);
+        }
+      }
+      char label[96];
+      std::snprintf(
+        label, sizeof(label), "%s mode %d worst relative error", c.Surface.Name.c_str(), mode);
+      std::printf("%s = %.4g\n", label, worst);
+      checks.Below(label, worst, 0.05);
+      std::snprintf(label,
+        sizeof(label),
+        "%s mode %d worst direction error (deg)",
+        c.Surface.Name.c_str(),
+        mode);
+      std::printf("%s = %.3g\n", label, worstAngle);
+      checks.Below(label, worstAngle, 5.0);
+    }
+  }
+}
+
+void TestDegenerateNeighborhoods(Checks& checks)
+{
+  PointCurvatureEstimator estimator;
+  FitSettings settings;
+  estimator.Begin({ { 0, 0, 0 } }, { { 0, 0, 1 } }, 0.1);
+  checks.True("no neighbours: invalid", !estimator.Estimate(settings).Valid);
+  estimator.Begin({ { 0, 0, 0 } }, { { 0, 0, 1 } }, 0.1);
+  const double same[3] = { 0, 0, 0 };
+  estimator.AddNeighbor(same);
+  checks.Equal("coincident neighbour ignored", estimator.GetNumberOfNeighbors(), 0);
+  // Points on a line: only two directions get points.
+  estimator.Begin({ { 0, 0, 0 } }, { { 0, 0, 1 } }, 0.01);
+  for (int j = -20; j <= 20; ++j)
+  {
+    const double q[3] = { 0.05 * j, 0.0, 0.0 };
+    estimator.AddNeighbor(q);
+  }
+  const PointCurvature line = estimator.Estimate(settings);
+  checks.True("points on a line: invalid", !line.Valid);
+  checks.Equal("points on a line: 2 valid directions", line.ValidDirections, 2);
+}
+
+/// Translating and scaling the neighbourhood must not change the result
+/// beyond the unit.
+void TestInvariance(Checks& checks)
+{
+  const auto samples = testing::Sample(testing::Torus(3.0, 1.0), 40000, 11);
+  const testing::SurfaceSample& x = samples[123];
+  FitSettings settings;
+  auto estimate = [&](double scale, double shift)
+  {
+    PointCurvatureEstimator estimator;
+    const testing::Vec point{
+      { scale * x.Point[0] + shift, scale * x.Point[1] + shift, scale * x.Point[2] + shift }
+    };
+    estimator.Begin(point, x.Normal, 0.04 * scale);
+    for (const testing::SurfaceSample& s : samples)
+    {
+      const testing::Vec d = testing::Add(s.Point, testing::Scale(-1.0, x.Point));
+      if (testing::Dot(d, d) < 0.16)
+      {
+        const double q[3] = {
+          scale * s.Point[0] + shift, scale * s.Point[1] + shift, scale * s.Point[2] + shift
+        };
+        estimator.AddNeighbor(q);
+      }
+    }
+    return estimator.Estimate(settings);
+  };
+  const PointCurvature reference = estimate(1.0, 0.0);
+  for (const double scale : { 1e-6, 1e6 })
+  {
+    const PointCurvature scaled = estimate(scale, 0.0);
+    checks.Near("scaled k_max",
+      scaled.MaximumCurvature * scale,
+      reference.MaximumCurvature,
+      1e-9 * std::fabs(reference.MaximumCurvature));
+  }
+  const PointCurvature shifted = estimate(1.0, 1e6);
+  checks.Near("shifted by 1e6 k_max",
+    shifted.MaximumCurvature,
+    reference.MaximumCurvature,
+    1e-4 * std::fabs(reference.MaximumCurvature));
+}
+} // namespace
+
+int main()
+{
+  Checks checks;
+  TestTangentFrame(checks);
+  TestDirectionMaskMatchesPlaneTest(checks);
+  TestCircleFits(checks);
+  TestDistanceToCircle(checks);
+  TestSineFit(checks);
+  TestEstimatorOnSurfaces(checks);
+  TestDegenerateNeighborhoods(checks);
+  TestInvariance(checks);
+  return checks.Summary();
+}
