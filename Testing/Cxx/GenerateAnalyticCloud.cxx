@@ -1,0 +1,85 @@
+// Writes a point cloud sampled on an analytic surface, with exact normals
+// and exact principal curvatures, as a .vtp file:
+//   GenerateAnalyticCloud <torus|sphere|cylinder|saddle|ellipsoid|plane|paraboloid|wave>
+//                         <number of points> <output.vtp> [seed] [noise, in units of the spacing]
+#include "AnalyticClouds.h"
+
+#include "vtkXMLPolyDataWriter.h"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+namespace
+{
+bool MakeSurface(const std::string& name, pcurv::testing::Surface& surface)
+{
+  using namespace pcurv::testing;
+  if (name == "torus")
+    surface = Torus(3.0, 1.0);
+  else if (name == "sphere")
+    surface = Sphere(1.0);
+  else if (name == "cylinder")
+    surface = Cylinder(1.0, 6.0);
+  else if (name == "saddle")
+    surface = Saddle(1.0, 1.0);
+  else if (name == "ellipsoid")
+    surface = Ellipsoid(3.0, 2.0, 1.5);
+  else if (name == "plane")
+    surface = Plane(1.0);
+  else if (name == "paraboloid")
+    surface = Paraboloid(1.0, 1.0);
+  else if (name == "wave")
+    surface = Wave(3.0, 0.3, 0.5);
+  else
+    return false;
+  return true;
+}
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  pcurv::testing::Surface surface;
+  if (argc < 4 || !MakeSurface(argv[1], surface))
+  {
+    std::fprintf(stderr,
+      "usage: %s <torus|sphere|cylinder|saddle|ellipsoid|plane|paraboloid|wave> <points> "
+      "<output.vtp> [seed] [noise in spacings]\n",
+      argv[0]);
+    return EXIT_FAILURE;
+  }
+  const int count = std::atoi(argv[2]);
+  const unsigned long long seed = argc > 4 ? std::strtoull(argv[4], nullptr, 10) : 1;
+  const double noise = argc > 5 ? std::atof(argv[5]) : 0.0;
+  auto samples = pcurv::testing::Sample(surface, count, seed);
+  if (noise > 0.0)
+  {
+    // Spacing: sqrt(area per point), with the area estimated by sampling.
+    double area = 0.0;
+    pcurv::testing::Random random(seed + 1);
+    const int trials = 100000;
+    for (int t = 0; t < trials; ++t)
+    {
+      const double u = surface.U0 + (surface.U1 - surface.U0) * random.Uniform();
+      const double v = surface.V0 + (surface.V1 - surface.V0) * random.Uniform();
+      const pcurv::testing::Jet j = surface.Evaluate(u, v);
+      const pcurv::testing::Vec c = pcurv::testing::Cross(j.Xu, j.Xv);
+      area += std::sqrt(pcurv::testing::Dot(c, c));
+    }
+    area *= (surface.U1 - surface.U0) * (surface.V1 - surface.V0) / trials;
+    pcurv::testing::AddPositionNoise(samples, noise * std::sqrt(area / count), seed + 2);
+  }
+  vtkNew<vtkXMLPolyDataWriter> writer;
+  writer->SetInputData(pcurv::testing::MakeCloud(samples));
+  writer->SetFileName(argv[3]);
+  writer->SetDataModeToAppended();
+  writer->SetCompressorTypeToNone();
+  if (!writer->Write())
+  {
+    std::fprintf(stderr, "could not write %s\n", argv[3]);
+    return EXIT_FAILURE;
+  }
+  std::printf("wrote %d points on a %s to %s\n", count, argv[1], argv[3]);
+  return EXIT_SUCCESS;
+}
