@@ -1,5 +1,6 @@
 #include "vtkPrincipalCurvatureEstimation.h"
 
+#include "DynamicAdjustment.h"
 #include "PointGrid.h"
 #include "PrincipalCurvatureCore.h"
 
@@ -242,10 +243,16 @@ struct NeighborhoodRule
   double Radius = 0.0;        // RADIUS mode
   double PlaneDistance = 0.0; // fixed p, or 0 to use Ratio times the neighbourhood size
   double Ratio = 0.0;
+  bool Adjusted = false; // dynamic variable adjustment instead of the above
+  pcurv::AdjustmentSettings Adjustment;
+  vtkIdType BlockSize = 256;
 };
 
-/// Estimates a range of points in the grid's (spatially coherent) order;
-/// one instance is shared by all threads, each point written by one thread.
+/// Estimates the points in the grid's (spatially coherent) order; one
+/// instance is shared by all threads, each point written by one thread.
+/// With fixed thresholds the work items are points; with the dynamic
+/// adjustment they are fixed blocks of BlockSize consecutive points, each
+/// started afresh, so that results do not depend on the threads.
 class EstimateWorker
 {
 public:
@@ -266,30 +273,38 @@ public:
   {
   }
 
+  /// Number of work items for vtkSMPTools::For.
+  vtkIdType GetNumberOfItems() const
+  {
+    const vtkIdType points = this->Grid.GetNumberOfPoints();
+    return this->Rule.Adjusted ? (points + this->Rule.BlockSize - 1) / this->Rule.BlockSize
+                               : points;
+  }
+
   void Initialize() {}
 
   void operator()(vtkIdType begin, vtkIdType end)
   {
     Scratch& scratch = this->PerThread.Local();
     const bool reportsProgress = vtkSMPTools::GetSingleThread();
-    for (vtkIdType j = begin; j < end; ++j)
+    for (vtkIdType item = begin; item < end; ++item)
     {
       if (this->Aborted.load(std::memory_order_relaxed))
       {
         return;
       }
-      if (reportsProgress && (j - begin) % 4096 == 0)
+      if (reportsProgress)
       {
-        this->ReportProgress(j);
+        this->ReportProgress(item);
       }
-      const vtkIdType i = this->Cloud.FiniteToInput[this->Grid.GetSortedId(j)];
-      const double* n = &this->Normals[3 * i];
-      if (n[0] == 0.0 && n[1] == 0.0 && n[2] == 0.0)
+      if (this->Rule.Adjusted)
       {
-        this->Out.Store(i, pcurv::PointCurvature{}, NaN, NaN);
-        continue;
+        this->EstimateBlock(item, scratch);
       }
-      this->EstimatePoint(i, n, scratch);
+      else
+      {
+        this->EstimateFixed(item, scratch);
+      }
     }
   }
 
@@ -301,12 +316,31 @@ private:
   struct Scratch
   {
     pcurv::PointCurvatureEstimator Estimator;
+    pcurv::DynamicAdjustment Adjustment;
     std::vector<double> Distances;
     std::vector<double> Neighbors;
   };
 
-  void EstimatePoint(vtkIdType i, const double* n, Scratch& scratch)
+  /// Input id of the j-th point in grid order, or -1 when its normal is unusable.
+  vtkIdType UsablePoint(vtkIdType j) const
   {
+    const vtkIdType i = this->Cloud.FiniteToInput[this->Grid.GetSortedId(j)];
+    const double* n = &this->Normals[3 * i];
+    if (n[0] == 0.0 && n[1] == 0.0 && n[2] == 0.0)
+    {
+      this->Out.Store(i, pcurv::PointCurvature{}, NaN, NaN);
+      return -1;
+    }
+    return i;
+  }
+
+  void EstimateFixed(vtkIdType j, Scratch& scratch)
+  {
+    const vtkIdType i = this->UsablePoint(j);
+    if (i < 0)
+    {
+      return;
+    }
     const double* x = &this->Cloud.All[3 * i];
     double s = this->Rule.Radius;
     if (this->Rule.KNearest)
@@ -315,21 +349,66 @@ private:
       s = std::sqrt(this->Grid.SquaredDistanceToKth(x, this->Rule.K + 1, scratch.Distances));
       s = std::nextafter(s, HUGE_VAL); // the query keeps distances < s
     }
+    this->Grid.GatherWithinRadius(x, s, scratch.Neighbors);
     const double p =
       this->Rule.PlaneDistance > 0.0 ? this->Rule.PlaneDistance : this->Rule.Ratio * s;
+    this->EstimateGathered(i, s, p, scratch);
+  }
+
+  /// The paper's sequence within one block: s carries over from point to
+  /// point; the block's first point repeats its search with the adjusted s.
+  void EstimateBlock(vtkIdType block, Scratch& scratch)
+  {
+    const vtkIdType first = block * this->Rule.BlockSize;
+    const vtkIdType last =
+      std::min<vtkIdType>(first + this->Rule.BlockSize, this->Grid.GetNumberOfPoints());
+    pcurv::DynamicAdjustment& adjustment = scratch.Adjustment;
+    adjustment = pcurv::DynamicAdjustment(this->Rule.Adjustment);
+    bool firstPoint = true;
+    for (vtkIdType j = first; j < last; ++j)
+    {
+      const vtkIdType i = this->UsablePoint(j);
+      if (i < 0)
+      {
+        continue;
+      }
+      const double* x = &this->Cloud.All[3 * i];
+      double s = adjustment.GetSurroundingsThreshold();
+      this->Grid.GatherWithinRadius(x, s, scratch.Neighbors);
+      if (firstPoint)
+      {
+        adjustment.Adjust(static_cast<int>(scratch.Neighbors.size() / 3));
+        s = adjustment.GetSurroundingsThreshold();
+        this->Grid.GatherWithinRadius(x, s, scratch.Neighbors);
+        firstPoint = false;
+      }
+      const double p = adjustment.Adjust(static_cast<int>(scratch.Neighbors.size() / 3));
+      this->EstimateGathered(i, s, p, scratch);
+    }
+  }
+
+  void EstimateGathered(vtkIdType i, double s, double p, Scratch& scratch)
+  {
+    const double* x = &this->Cloud.All[3 * i];
+    const double* n = &this->Normals[3 * i];
     pcurv::PointCurvatureEstimator& estimator = scratch.Estimator;
     estimator.Begin({ { x[0], x[1], x[2] } }, { { n[0], n[1], n[2] } }, p);
-    this->Grid.GatherWithinRadius(x, s, scratch.Neighbors);
-    for (std::size_t j = 0; j < scratch.Neighbors.size(); j += 3)
+    for (std::size_t k = 0; k < scratch.Neighbors.size(); k += 3)
     {
-      estimator.AddNeighbor(&scratch.Neighbors[j]);
+      estimator.AddNeighbor(&scratch.Neighbors[k]);
     }
     this->Out.Store(i, estimator.Estimate(this->Settings), s, p);
   }
 
-  void ReportProgress(vtkIdType j)
+  /// Progress every few thousand points, and the abort flag, from one thread.
+  void ReportProgress(vtkIdType item)
   {
-    this->Self->UpdateProgress(static_cast<double>(j) / this->Grid.GetNumberOfPoints());
+    const vtkIdType pointsPerItem = this->Rule.Adjusted ? this->Rule.BlockSize : 1;
+    if ((item * pointsPerItem) % 4096 >= pointsPerItem)
+    {
+      return;
+    }
+    this->Self->UpdateProgress(static_cast<double>(item) / this->GetNumberOfItems());
     if (this->Self->GetAbortExecute())
     {
       this->Aborted.store(true);
@@ -418,6 +497,7 @@ int vtkPrincipalCurvatureEstimation::RequestData(vtkInformation*,
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
   this->UsedSurroundingsThreshold = 0.0;
   this->UsedPlaneDistanceThreshold = 0.0;
+  this->UsedLengthUnit = 0.0;
   this->NumberOfUnestimatedPoints = 0;
   if (!input || !output)
   {
@@ -455,16 +535,42 @@ int vtkPrincipalCurvatureEstimation::RequestData(vtkInformation*,
   rule.KNearest = this->NeighborhoodMode == K_NEAREST;
   rule.K = this->NumberOfNeighbors;
   rule.Ratio = this->PlaneDistanceRatio;
+  rule.Adjusted = this->DynamicAdjustment;
+  rule.BlockSize = this->AdjustmentBlockSize;
+  // The neighbour count the cloud's typical radius is measured for.
+  const int typicalCount =
+    rule.Adjusted ? static_cast<int>(this->TargetNeighborCounts[0]) : this->NumberOfNeighbors;
+  const bool needsTypicalRadius =
+    rule.Adjusted ? this->AutomaticLengthUnit : (this->AutomaticThresholds || rule.KNearest);
   pcurv::PointGrid grid;
-  // A first grid sized for the neighbour count, to measure the spacing;
-  // rebuilt below with cells of the radius actually used.
   double typicalRadius = 0.0;
-  if (this->AutomaticThresholds || rule.KNearest)
+  if (needsTypicalRadius)
   {
-    BuildGrid(grid, cloud, GuessRadiusForNeighborCount(cloud, this->NumberOfNeighbors));
-    typicalRadius = EstimateRadiusForNeighborCount(grid, cloud, this->NumberOfNeighbors);
+    // A first grid from a guess, to measure the spacing; rebuilt below with
+    // cells fitting the radius actually used.
+    BuildGrid(grid, cloud, GuessRadiusForNeighborCount(cloud, typicalCount));
+    typicalRadius = EstimateRadiusForNeighborCount(grid, cloud, typicalCount);
   }
-  if (!this->AutomaticThresholds)
+  double cellRadius = typicalRadius;
+  if (rule.Adjusted)
+  {
+    pcurv::AdjustmentSettings& adjustment = rule.Adjustment;
+    adjustment.InitialSurroundingsThreshold = this->InitialSurroundingsThreshold;
+    std::copy(this->TargetNeighborCounts,
+      this->TargetNeighborCounts + 3,
+      adjustment.TargetNeighborCounts.begin());
+    std::copy(this->TargetPlaneDistances,
+      this->TargetPlaneDistances + 3,
+      adjustment.TargetPlaneDistances.begin());
+    std::copy(this->SwitchLengths, this->SwitchLengths + 3, adjustment.SwitchLengths.begin());
+    // Scale free: the initial s holds about the first target count.
+    adjustment.LengthUnit = this->AutomaticLengthUnit
+      ? typicalRadius / this->InitialSurroundingsThreshold
+      : this->LengthUnit;
+    this->UsedLengthUnit = adjustment.LengthUnit;
+    cellRadius = adjustment.LengthUnit * this->InitialSurroundingsThreshold;
+  }
+  else if (!this->AutomaticThresholds)
   {
     rule.PlaneDistance = this->PlaneDistanceThreshold;
     rule.Radius = this->SurroundingsThreshold;
@@ -474,12 +580,13 @@ int vtkPrincipalCurvatureEstimation::RequestData(vtkInformation*,
     rule.Radius = typicalRadius;
     rule.PlaneDistance = this->PlaneDistanceRatio * rule.Radius;
   }
-  if (!rule.KNearest)
+  if (!rule.Adjusted && !rule.KNearest)
   {
     this->UsedSurroundingsThreshold = rule.Radius;
     this->UsedPlaneDistanceThreshold = rule.PlaneDistance;
+    cellRadius = rule.Radius;
   }
-  BuildGrid(grid, cloud, rule.KNearest ? typicalRadius : rule.Radius);
+  BuildGrid(grid, cloud, cellRadius);
 
   pcurv::FitSettings settings;
   settings.Mode = static_cast<pcurv::FitMode>(this->FitMode);
@@ -494,8 +601,9 @@ int vtkPrincipalCurvatureEstimation::RequestData(vtkInformation*,
     }
   }
   EstimateWorker worker(this, cloud, normals, grid, rule, settings, arrays);
+  const vtkIdType grain = rule.Adjusted ? 1 : 1024;
   RunOnAllCores(this->NumberOfThreads,
-    [&]() { vtkSMPTools::For(0, cloud.GetNumberOfFinitePoints(), 1024, worker); });
+    [&]() { vtkSMPTools::For(0, worker.GetNumberOfItems(), grain, worker); });
   if (worker.WasAborted())
   {
     return 1;
@@ -531,6 +639,18 @@ void vtkPrincipalCurvatureEstimation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "PlaneDistanceRatio: " << this->PlaneDistanceRatio << "\n";
   os << indent << "MinimumPointsPerDirection: " << this->MinimumPointsPerDirection << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
+  os << indent << "DynamicAdjustment: " << (this->DynamicAdjustment ? "On" : "Off") << "\n";
+  os << indent << "AutomaticLengthUnit: " << (this->AutomaticLengthUnit ? "On" : "Off") << "\n";
+  os << indent << "LengthUnit: " << this->LengthUnit << "\n";
+  os << indent << "InitialSurroundingsThreshold: " << this->InitialSurroundingsThreshold << "\n";
+  os << indent << "TargetNeighborCounts: " << this->TargetNeighborCounts[0] << " "
+     << this->TargetNeighborCounts[1] << " " << this->TargetNeighborCounts[2] << "\n";
+  os << indent << "TargetPlaneDistances: " << this->TargetPlaneDistances[0] << " "
+     << this->TargetPlaneDistances[1] << " " << this->TargetPlaneDistances[2] << "\n";
+  os << indent << "SwitchLengths: " << this->SwitchLengths[0] << " " << this->SwitchLengths[1]
+     << " " << this->SwitchLengths[2] << "\n";
+  os << indent << "AdjustmentBlockSize: " << this->AdjustmentBlockSize << "\n";
+  os << indent << "UsedLengthUnit: " << this->UsedLengthUnit << "\n";
   os << indent << "UsedSurroundingsThreshold: " << this->UsedSurroundingsThreshold << "\n";
   os << indent << "UsedPlaneDistanceThreshold: " << this->UsedPlaneDistanceThreshold << "\n";
   os << indent << "NumberOfUnestimatedPoints: " << this->NumberOfUnestimatedPoints << "\n";

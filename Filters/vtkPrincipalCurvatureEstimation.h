@@ -164,11 +164,74 @@ public:
 
   ///@{
   /**
+   * Dynamic variable adjustment (Getto & Hildenbrand 2011, section 5): the
+   * surroundings-threshold found for one point is used for the next and
+   * adapted to reach a target neighbour count, the plane-distance-threshold
+   * follows the count found, and the targets step between three
+   * combinations as s shrinks or grows. When on, NeighborhoodMode,
+   * AutomaticThresholds, SurroundingsThreshold and PlaneDistance* are
+   * ignored. Points are processed in the neighbour grid's spatially coherent
+   * order, cut into blocks of AdjustmentBlockSize points that each start
+   * like the paper's first point (initial s, first targets, the first
+   * search repeated with the adjusted s): the block size, not the number of
+   * threads, decides the result. Default off.
+   */
+  vtkSetMacro(DynamicAdjustment, bool);
+  vtkGetMacro(DynamicAdjustment, bool);
+  vtkBooleanMacro(DynamicAdjustment, bool);
+  ///@}
+
+  ///@{
+  /**
+   * The length unit L that multiplies every length of the adjustment
+   * (initial s, switch lengths, target plane distances). With
+   * AutomaticLengthUnit on (default), L is derived from the cloud so that
+   * the initial s (4 L) holds about TargetNeighborCounts[0] points: the
+   * method is then scale free. Off, LengthUnit is used (default 1: the
+   * paper's absolute values).
+   */
+  vtkSetMacro(AutomaticLengthUnit, bool);
+  vtkGetMacro(AutomaticLengthUnit, bool);
+  vtkBooleanMacro(AutomaticLengthUnit, bool);
+  vtkSetClampMacro(LengthUnit, double, 1e-300, VTK_DOUBLE_MAX);
+  vtkGetMacro(LengthUnit, double);
+  ///@}
+
+  ///@{
+  /**
+   * The adjustment's constants (the paper's by default): the initial s (4,
+   * in units of L), the target neighbour counts (375, 750, 1500) and plane
+   * distances (0.1, 0.05, 0.025, in units of L) of the three combinations,
+   * and the switch lengths (2: to the second combination below it; 1: to
+   * the third below it; 4: one combination back above it; in units of L).
+   */
+  vtkSetClampMacro(InitialSurroundingsThreshold, double, 1e-300, VTK_DOUBLE_MAX);
+  vtkGetMacro(InitialSurroundingsThreshold, double);
+  vtkSetVector3Macro(TargetNeighborCounts, double);
+  vtkGetVector3Macro(TargetNeighborCounts, double);
+  vtkSetVector3Macro(TargetPlaneDistances, double);
+  vtkGetVector3Macro(TargetPlaneDistances, double);
+  vtkSetVector3Macro(SwitchLengths, double);
+  vtkGetVector3Macro(SwitchLengths, double);
+  ///@}
+
+  ///@{
+  /**
+   * Points per independently adjusted block. Default 256.
+   */
+  vtkSetClampMacro(AdjustmentBlockSize, int, 1, VTK_INT_MAX);
+  vtkGetMacro(AdjustmentBlockSize, int);
+  ///@}
+
+  ///@{
+  /**
    * What the last execution used and found: the surroundings-threshold and
    * plane-distance-threshold in RADIUS mode (0 in K_NEAREST mode, where they
-   * vary per point), and the number of points that could not be estimated.
+   * vary per point), the length unit L of the dynamic adjustment, and the
+   * number of points that could not be estimated.
    */
   vtkGetMacro(UsedSurroundingsThreshold, double);
+  vtkGetMacro(UsedLengthUnit, double);
   vtkGetMacro(UsedPlaneDistanceThreshold, double);
   vtkGetMacro(NumberOfUnestimatedPoints, vtkIdType);
   ///@}
@@ -189,7 +252,16 @@ protected:
   double PlaneDistanceRatio = 0.1;
   int MinimumPointsPerDirection = 3;
   int NumberOfThreads = 0;
+  bool DynamicAdjustment = false;
+  bool AutomaticLengthUnit = true;
+  double LengthUnit = 1.0;
+  double InitialSurroundingsThreshold = 4.0;
+  double TargetNeighborCounts[3] = { 375.0, 750.0, 1500.0 };
+  double TargetPlaneDistances[3] = { 0.1, 0.05, 0.025 };
+  double SwitchLengths[3] = { 2.0, 1.0, 4.0 };
+  int AdjustmentBlockSize = 256;
 
+  double UsedLengthUnit = 0.0;
   double UsedSurroundingsThreshold = 0.0;
   double UsedPlaneDistanceThreshold = 0.0;
   vtkIdType NumberOfUnestimatedPoints = 0;

@@ -1,0 +1,47 @@
+#include "DynamicAdjustment.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace pcurv
+{
+
+DynamicAdjustment::DynamicAdjustment(const AdjustmentSettings& settings)
+  : Settings(settings)
+{
+  this->Restart();
+}
+
+void DynamicAdjustment::Restart()
+{
+  this->Surroundings = this->Settings.InitialSurroundingsThreshold * this->Settings.LengthUnit;
+  this->Level = 0;
+}
+
+double DynamicAdjustment::Adjust(int neighborCount)
+{
+  const AdjustmentSettings& c = this->Settings;
+  const double target = c.TargetNeighborCounts[this->Level];
+  // No neighbour at all: the formulas divide by zero; grow s by the largest
+  // factor one neighbour would give instead (the paper is silent here).
+  const double found = std::max(1, neighborCount);
+  const double planeDistance = c.TargetPlaneDistances[this->Level] * c.LengthUnit * target / found;
+
+  this->Surroundings *= std::sqrt(target / found);
+  const double s = this->Surroundings / c.LengthUnit;
+  if (this->Level == 0 && s < c.SwitchLengths[0])
+  {
+    this->Level = 1;
+  }
+  if (this->Level == 1 && s < c.SwitchLengths[1])
+  {
+    this->Level = 2;
+  }
+  else if (this->Level > 0 && s > c.SwitchLengths[2])
+  {
+    --this->Level;
+  }
+  return planeDistance;
+}
+
+} // namespace pcurv

@@ -1,0 +1,67 @@
+/**
+ * @file DynamicAdjustment.h
+ * @brief The paper's dynamic variable adjustment (Getto & Hildenbrand 2011,
+ * section 5) of the surroundings-threshold s and the plane-distance-threshold
+ * p while points are processed one after another. No VTK.
+ *
+ * State: a target combination (N_t, p_t), initially the first of three, and
+ * s, initially InitialSurroundingsThreshold. After the N neighbours of a
+ * point within s are gathered:
+ *  1. p = p_t * N_t / N for this point (fewer points than targeted: wider
+ *     planes, so each direction still gets points);
+ *  2. s <- s * sqrt(N_t / N) for the next point (on a surface the count
+ *     grows with the area, s^2);
+ *  3. when s falls below the first switch length the targets move to the
+ *     second combination, below the second to the third; when s rises above
+ *     the return length they step back one combination.
+ * Every length (initial s, switch lengths, p_t) is multiplied by a length
+ * unit L: L = 1 gives the paper's absolute values; a cloud-derived L makes
+ * the method scale free.
+ */
+#ifndef DynamicAdjustment_h
+#define DynamicAdjustment_h
+
+#include <array>
+
+namespace pcurv
+{
+
+struct AdjustmentSettings
+{
+  double LengthUnit = 1.0;                   ///< L, multiplies every length below
+  double InitialSurroundingsThreshold = 4.0; ///< s at the start, in units of L
+  std::array<double, 3> TargetNeighborCounts{ { 375.0, 750.0, 1500.0 } };
+  std::array<double, 3> TargetPlaneDistances{ { 0.1, 0.05, 0.025 } }; ///< in units of L
+  /// Switch to the second combination below SwitchLengths[0], to the third
+  /// below SwitchLengths[1]; step back one above SwitchLengths[2] (units of L).
+  std::array<double, 3> SwitchLengths{ { 2.0, 1.0, 4.0 } };
+};
+
+class DynamicAdjustment
+{
+public:
+  explicit DynamicAdjustment(const AdjustmentSettings& settings = AdjustmentSettings{});
+
+  /// Back to the initial state, as at the paper's very first point.
+  void Restart();
+
+  /// The surroundings-threshold to gather the current point's neighbours with.
+  double GetSurroundingsThreshold() const { return this->Surroundings; }
+
+  /// Index (0..2) of the current target combination.
+  int GetLevel() const { return this->Level; }
+
+  /// Takes the number of neighbours found within GetSurroundingsThreshold(),
+  /// returns the plane-distance-threshold for this point and updates s and
+  /// the target combination for the next point.
+  double Adjust(int neighborCount);
+
+private:
+  AdjustmentSettings Settings;
+  double Surroundings = 0.0;
+  int Level = 0;
+};
+
+} // namespace pcurv
+
+#endif
