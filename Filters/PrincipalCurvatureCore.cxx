@@ -242,46 +242,69 @@ void PrincipalCurvaturesFromSine(const SineFit& fit, const TangentFrame& frame, 
   out.MaximumDirection = Cross(frame.Normal, out.MinimumDirection);
 }
 
-std::uint32_t PointCurvatureEstimator::DirectionMask(double tx, double ty, double p)
+namespace
 {
-  const DirectionTable& table = Directions();
-  auto inHalfPlane = [&](int direction)
-  {
-    const double along = tx * table.Cos[direction] + ty * table.Sin[direction];
-    const double across = -tx * table.Sin[direction] + ty * table.Cos[direction];
-    return along > 0.0 && std::fabs(across) < p;
-  };
-  const double rhoSquared = tx * tx + ty * ty;
-  // Within p / sin(pi/8) of the normal line, a neighbour can be near many
-  // planes: test all of them (a small share of the neighbours).
+/// 1 when (tx, ty) lies in half plane i: on its side and closer than p.
+/// Bitwise, not short-circuit: which neighbours pass is too random for the
+/// branch predictor.
+inline std::uint32_t InHalfPlane(const DirectionTable& table, int i, double tx, double ty, double p)
+{
+  const double along = tx * table.Cos[i] + ty * table.Sin[i];
+  const double across = -tx * table.Sin[i] + ty * table.Cos[i];
+  return static_cast<std::uint32_t>(along > 0.0) &
+    static_cast<std::uint32_t>(std::fabs(across) < p);
+}
+
+/// Within p / sin(pi / 8) of the normal line a neighbour can be near many
+/// planes; farther out, every plane but the two bounding its sector (of
+/// angle pi / 8) is at least rho sin(pi / 8) >= p away.
+inline bool NearNormalLine(double tx, double ty, double p)
+{
   constexpr double SinEighthPiSquared = 0.14644660940672624; // sin^2(pi / 8)
-  if (rhoSquared * SinEighthPiSquared < p * p)
-  {
-    std::uint32_t mask = 0;
-    for (int i = 0; i < NumberOfDirections; ++i)
-    {
-      mask |= inHalfPlane(i) ? (1u << i) : 0u;
-    }
-    return mask;
-  }
-  // Farther out, every plane but the two bounding the neighbour's sector
-  // (of angle pi / 8) is at least rho sin(pi / 8) >= p away. The sector is
-  // found without atan2: quadrant from the signs, then which of the four
-  // eighth-pi slices from comparisons with tan(pi / 8). A neighbour on a
-  // sector boundary may land in either adjacent sector; both contain the
-  // direction it lies on, and the exact test decides.
+  return (tx * tx + ty * ty) * SinEighthPiSquared < p * p;
+}
+
+/// Index m of the sector between directions m and m + 1 holding (tx, ty),
+/// without atan2: the quadrant from the signs, then which of the four
+/// eighth-pi slices from comparisons with tan(pi / 8). A point on a sector
+/// boundary may land in either adjacent sector; both contain the direction
+/// it lies on, and the exact test decides.
+inline int SectorOf(double tx, double ty)
+{
   constexpr double TanEighthPi = 0.41421356237309503;
   const double ax = std::fabs(tx);
   const double ay = std::fabs(ty);
   const int slice = (ay >= TanEighthPi * ax) + (ay >= ax) + (TanEighthPi * ay > ax);
   // Quadrant q = 2 [ty < 0] + [tx < 0]; the angle is alpha, pi - alpha,
-  // 2 pi - alpha or pi + alpha: sector = base + sign * slice, without branches.
+  // 2 pi - alpha or pi + alpha: sector = base + sign * slice.
   static constexpr int Base[4] = { 0, 7, 15, 8 };
   static constexpr int Sign[4] = { 1, -1, -1, 1 };
   const int quadrant = 2 * (ty < 0.0) + (tx < 0.0);
-  const int sector = Base[quadrant] + Sign[quadrant] * slice;
+  return Base[quadrant] + Sign[quadrant] * slice;
+}
+
+std::uint32_t AllHalfPlanesMask(const DirectionTable& table, double tx, double ty, double p)
+{
+  std::uint32_t mask = 0;
+  for (int i = 0; i < NumberOfDirections; ++i)
+  {
+    mask |= InHalfPlane(table, i, tx, ty, p) << i;
+  }
+  return mask;
+}
+} // namespace
+
+std::uint32_t PointCurvatureEstimator::DirectionMask(double tx, double ty, double p)
+{
+  const DirectionTable& table = Directions();
+  if (NearNormalLine(tx, ty, p))
+  {
+    return AllHalfPlanesMask(table, tx, ty, p);
+  }
+  const int sector = SectorOf(tx, ty);
   const int next = (sector + 1) % NumberOfDirections;
-  return (inHalfPlane(sector) ? (1u << sector) : 0u) | (inHalfPlane(next) ? (1u << next) : 0u);
+  return (InHalfPlane(table, sector, tx, ty, p) << sector) |
+    (InHalfPlane(table, next, tx, ty, p) << next);
 }
 
 void PointCurvatureEstimator::Begin(const Vector3& point,
@@ -296,24 +319,55 @@ void PointCurvatureEstimator::Begin(const Vector3& point,
 
 void PointCurvatureEstimator::AccumulateDirections(double scale, double scaledPlaneDistance)
 {
-  this->Sums.fill(CgaSums{});
+  // Consecutive neighbours (read cell by cell) often fall into the same
+  // direction: adding them into one set of sums chains every add to the
+  // previous store. Rotating over a few banks of sums breaks the chains;
+  // the banks are added up at the end (in a fixed order: deterministic).
+  constexpr int Banks = 4;
+  std::array<std::array<CgaSums, NumberOfDirections>, Banks> banks{};
   this->Masks.resize(this->Neighbors.size());
+  const DirectionTable& table = Directions();
   const double inverseScale = 1.0 / scale;
+  const double p = scaledPlaneDistance;
   for (std::size_t j = 0; j < this->Neighbors.size(); ++j)
   {
+    std::array<CgaSums, NumberOfDirections>& sums = banks[j % Banks];
     const Local& local = this->Neighbors[j];
     const double h = local.H * inverseScale;
     const double tx = local.Tx * inverseScale;
     const double ty = local.Ty * inverseScale;
     const double squaredDistance = h * h + tx * tx + ty * ty;
-    std::uint32_t mask = DirectionMask(tx, ty, scaledPlaneDistance);
-    this->Masks[j] = mask;
-    while (mask)
+    if (NearNormalLine(tx, ty, p)) // rare: a few percent of the neighbours
     {
-      const int direction = __builtin_ctz(mask);
-      mask &= mask - 1;
-      this->Sums[direction].Add(h, squaredDistance);
+      std::uint32_t mask = AllHalfPlanesMask(table, tx, ty, p);
+      this->Masks[j] = mask;
+      while (mask)
+      {
+        const int direction = __builtin_ctz(mask);
+        mask &= mask - 1;
+        sums[direction].Add(h, squaredDistance);
+      }
+      continue;
     }
+    // The common case: at most the two directions bounding the sector. Both
+    // are always updated, with weight 0 or 1, so that no branch depends on
+    // the neighbour.
+    const int sector = SectorOf(tx, ty);
+    const int next = (sector + 1) % NumberOfDirections;
+    const std::uint32_t inSector = InHalfPlane(table, sector, tx, ty, p);
+    const std::uint32_t inNext = InHalfPlane(table, next, tx, ty, p);
+    this->Masks[j] = (inSector << sector) | (inNext << next);
+    sums[sector].AddWeighted(static_cast<int>(inSector), h, squaredDistance);
+    sums[next].AddWeighted(static_cast<int>(inNext), h, squaredDistance);
+  }
+  for (int i = 0; i < NumberOfDirections; ++i)
+  {
+    CgaSums total = banks[0][i];
+    for (int bank = 1; bank < Banks; ++bank)
+    {
+      total.Merge(banks[bank][i]);
+    }
+    this->Sums[i] = total;
   }
 }
 

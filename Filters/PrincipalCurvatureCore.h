@@ -69,6 +69,30 @@ struct CgaSums
     this->SumD2 += squaredDistance * squaredDistance;
     ++this->Count;
   }
+
+  void Merge(const CgaSums& other)
+  {
+    this->SumH2 += other.SumH2;
+    this->SumH += other.SumH;
+    this->SumHD += other.SumHD;
+    this->SumD += other.SumD;
+    this->SumD2 += other.SumD2;
+    this->Count += other.Count;
+  }
+
+  /// Add(h, D) when weight is 1, nothing when it is 0, without a branch.
+  void AddWeighted(int weight, double h, double squaredDistance)
+  {
+    const double w = weight;
+    const double wh = w * h;
+    const double whD = wh * squaredDistance;
+    this->SumH2 += wh * h;
+    this->SumH += wh;
+    this->SumHD += whD;
+    this->SumD += w * squaredDistance;
+    this->SumD2 += w * squaredDistance * squaredDistance;
+    this->Count += weight;
+  }
 };
 
 /// Result of one circle fit, paper sign.
