@@ -1,7 +1,7 @@
 // Writes a point cloud sampled on an analytic surface, with exact normals
 // and exact principal curvatures, as a .vtp file:
 //   GenerateAnalyticCloud <torus|sphere|cylinder|saddle|ellipsoid|plane|paraboloid|wave>
-//                         <number of points> <output.vtp> [seed] [noise, in units of the spacing]
+//                         <number of points> <output.vtp|output.xyz> [seed] [noise, in spacings]
 #include "AnalyticClouds.h"
 
 #include "vtkXMLPolyDataWriter.h"
@@ -69,6 +69,31 @@ int main(int argc, char* argv[])
     }
     area *= (surface.U1 - surface.U0) * (surface.V1 - surface.V0) / trials;
     pcurv::testing::AddPositionNoise(samples, noise * std::sqrt(area / count), seed + 2);
+  }
+  const std::string output = argv[3];
+  if (output.size() > 4 && output.substr(output.size() - 4) == ".xyz")
+  {
+    // Text: x y z nx ny nz per line, as scanners and CGAL's data sets have.
+    std::FILE* file = std::fopen(argv[3], "w");
+    if (!file)
+    {
+      std::fprintf(stderr, "could not write %s\n", argv[3]);
+      return EXIT_FAILURE;
+    }
+    for (const auto& s : samples)
+    {
+      std::fprintf(file,
+        "%.17g %.17g %.17g %.17g %.17g %.17g\n",
+        s.Point[0],
+        s.Point[1],
+        s.Point[2],
+        s.Normal[0],
+        s.Normal[1],
+        s.Normal[2]);
+    }
+    std::fclose(file);
+    std::printf("wrote %d points on a %s to %s\n", count, argv[1], argv[3]);
+    return EXIT_SUCCESS;
   }
   vtkNew<vtkXMLPolyDataWriter> writer;
   writer->SetInputData(pcurv::testing::MakeCloud(samples));
