@@ -1,0 +1,14 @@
+"""Principal curvatures of point clouds by osculating-circle fitting in
+conformal geometric algebra (Getto & Hildenbrand 2011), for VTK Python.
+
+    from principal_curvatures import vtkPrincipalCurvatureEstimation
+
+Needs the VTK that ParaView bundles (run it in pvpython or pvbatch).
+"""
+
+# The wrapped classes need VTK's Python modules of their dependencies.
+import vtkmodules.vtkCommonExecutionModel  # noqa: F401
+
+from .vtkPrincipalCurvatureFilters import vtkPrincipalCurvatureEstimation  # noqa: F401
+
+__all__ = ["vtkPrincipalCurvatureEstimation"]
