@@ -1,0 +1,50 @@
+#!/usr/bin/env bash
+# The real ParaView GUI under Xvfb: load the plugin, apply the filter, colour
+# by Mean_Curvature, capture the whole screen, and check (by OCR) that the
+# filter's Properties panel is showing.
+#   RunGuiTest.sh PARAVIEW PLUGIN CLOUD SCREENSHOT.png
+set -u
+paraview=$1 plugin=$2 cloud=$3 screenshot=$4
+here=$(cd "$(dirname "$0")" && pwd)
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+export GUI_TEST_PLUGIN=$plugin GUI_TEST_CLOUD=$cloud GUI_TEST_MARKER=$work/marker
+mkdir -p "$(dirname "$screenshot")"
+rm -f "$screenshot"
+
+xvfb-run -a -s "-screen 0 1600x1000x24" bash -c '
+  "$0" --dr --script="$1" > "$2/paraview.log" 2>&1 &
+  pid=$!
+  for i in $(seq 1 120); do [ -s "$GUI_TEST_MARKER" ] && break; sleep 1; done
+  window=$(xdotool search --sync --onlyvisible --name "ParaView" | head -n 1)
+  [ -n "$window" ] && xdotool windowmove "$window" 0 0 windowsize "$window" 1600 1000
+  sleep 5
+  import -window root "$3"
+  kill "$pid" 2>/dev/null
+  wait "$pid" 2>/dev/null
+  exit 0' "$paraview" "$here/gui_script.py" "$work" "$screenshot"
+
+status=0
+marker=$(cat "$GUI_TEST_MARKER" 2>/dev/null || echo "no marker: the GUI script did not run")
+echo "GUI script: $marker"
+case "$marker" in ok*) ;; *) status=1; tail -n 20 "$work/paraview.log" ;; esac
+if [ ! -s "$screenshot" ]; then
+  echo "FAILED: no screenshot"
+  exit 1
+fi
+# The left column (pipeline browser and Properties panel), enlarged: UI text
+# is too small for OCR at screen size.
+convert "$screenshot" -crop 300x1000+0+0 +repage -resize 300% -colorspace Gray "$work/panel.png"
+text=$(tesseract "$work/panel.png" - 2>/dev/null)
+for label in "Fit Mode" "Dynamic Adjustment" "Automatic Thresholds" "Neighbourhood"; do
+  if grep -q "$label" <<< "$text"; then
+    echo "panel shows: $label"
+  else
+    echo "FAILED: the Properties panel does not show '$label'"
+    status=1
+  fi
+done
+grep -q "PrincipalCurvatures1" <<< "$text" && echo "pipeline browser shows PrincipalCurvatures1" ||
+  { echo "FAILED: no PrincipalCurvatures1 in the pipeline browser"; status=1; }
+echo "screenshot: $screenshot"
+exit $status
