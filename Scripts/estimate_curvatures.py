@@ -4,8 +4,10 @@ Run with ParaView's Python:
 
     pvpython Scripts/estimate_curvatures.py INPUT OUTPUT.vtp [options]
 
-INPUT may be .vtp, .vtu, .ply, or text with one point per line
-(``x y z nx ny nz``, whitespace or comma separated: .xyz, .pwn, .txt, .csv).
+INPUT may be .vtp, .vtu, .ply, an .off triangle mesh (its vertices, with
+normals from the triangles, oriented outwards), or text with one point per
+line (``x y z nx ny nz``, whitespace or comma separated: .xyz, .pwn, .txt,
+.csv).
 Writes OUTPUT (.vtp) with the curvature arrays and prints a summary table.
 """
 
@@ -78,6 +80,52 @@ def read_text_cloud(path):
     return producer
 
 
+def read_off_mesh(path):
+    """The vertices of an OFF triangle mesh, with point normals computed from
+    the triangles and turned to point away from the centroid (for a closed,
+    roughly star-shaped scan such as the Stanford bunny)."""
+    import numpy
+    from vtkmodules.numpy_interface import dataset_adapter
+    from vtkmodules.vtkCommonCore import vtkIdTypeArray
+    from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
+    from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
+
+    with open(path) as handle:
+        words = [line.split("#")[0].split() for line in handle]
+    words = [w for w in words if w]
+    if not words or words[0][0] != "OFF":
+        fail("%s: not an OFF file" % path)
+    header = words[1] if len(words[0]) == 1 else words[0][1:]
+    first = 2 if len(words[0]) == 1 else 1
+    vertices, faces = int(header[0]), int(header[1])
+    points = numpy.array([[float(v) for v in row[:3]] for row in words[first:first + vertices]])
+    polygons = [[int(v) for v in row[1:1 + int(row[0])]] for row in words[first + vertices:first + vertices + faces]]
+    mesh = dataset_adapter.WrapDataObject(vtkPolyData())
+    mesh.Points = points
+    connectivity = numpy.concatenate([[len(p)] + p for p in polygons]).astype(numpy.int64)
+    cells = vtkCellArray()
+    ids = vtkIdTypeArray()
+    ids.SetNumberOfValues(len(connectivity))
+    for i, v in enumerate(connectivity):
+        ids.SetValue(i, int(v))
+    cells.ImportLegacyFormat(ids)
+    mesh.VTKObject.SetPolys(cells)
+    normals = vtkPolyDataNormals()
+    normals.SetInputData(mesh.VTKObject)
+    normals.ComputePointNormalsOn()
+    normals.ComputeCellNormalsOff()
+    normals.SplittingOff()
+    normals.ConsistencyOn()
+    normals.Update()
+    cloud = dataset_adapter.WrapDataObject(normals.GetOutput())
+    outward = ((cloud.Points - cloud.Points.mean(axis=0)) * cloud.PointData["Normals"]).sum(axis=1)
+    if numpy.median(outward) < 0:
+        cloud.PointData["Normals"][:] *= -1
+    producer = simple.TrivialProducer()
+    producer.GetClientSideObject().SetOutput(cloud.VTKObject)
+    return producer
+
+
 def open_cloud(path):
     if not os.path.exists(path):
         fail("input not found: %s" % path)
@@ -90,7 +138,9 @@ def open_cloud(path):
         return simple.PLYReader(FileNames=[path])
     if extension in TEXT_EXTENSIONS:
         return read_text_cloud(path)
-    fail("unknown input type '%s' (use .vtp .vtu .ply .xyz .pwn .txt .csv)" % extension)
+    if extension == ".off":
+        return read_off_mesh(path)
+    fail("unknown input type '%s' (use .vtp .vtu .ply .off .xyz .pwn .txt .csv)" % extension)
 
 
 def choose_normals(source, requested):

@@ -1,0 +1,101 @@
+"""Render a point cloud coloured by curvature, with short line glyphs along
+the maximum principal direction. Needs an X display (xvfb-run works):
+
+    xvfb-run -a pvpython Scripts/render_principal_directions.py INPUT OUTPUT.png
+        [--fit-mode New02] [--color Mean_Curvature] [--glyph-every 8] [--view x,y,z]
+
+INPUT: any cloud Scripts/estimate_curvatures.py reads (.vtp .vtu .ply .off
+.xyz .pwn .txt .csv).
+"""
+
+import argparse
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import estimate_curvatures  # noqa: E402  (reading clouds, loading the plugin)
+
+from paraview import simple  # noqa: E402
+
+
+def main(argv):
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("input")
+    parser.add_argument("output", help="picture (.png)")
+    parser.add_argument("--fit-mode", choices=["Previous", "New01", "New02"], default="New02")
+    parser.add_argument("--color", default="Mean_Curvature", help="array to colour by")
+    parser.add_argument("--glyph-every", type=int, default=6, help="a glyph on every n-th point")
+    parser.add_argument("--view", default="0,0,1", help="camera direction towards the object, x,y,z")
+    parser.add_argument("--up", default="0,1,0", help="camera up vector, x,y,z")
+    parser.add_argument("--size", default="1600,1200")
+    parser.add_argument("--plugin", default=estimate_curvatures.DEFAULT_PLUGIN)
+    arguments = parser.parse_args(argv)
+
+    estimate_curvatures.load_plugin(arguments.plugin)
+    source = estimate_curvatures.open_cloud(arguments.input)
+    source.UpdatePipeline()
+    curvatures = simple.PrincipalCurvatures(Input=source, FitMode=arguments.fit_mode)
+    curvatures.Normals = ["POINTS", estimate_curvatures.choose_normals(source, None)]
+    curvatures.UpdatePipeline()
+    spacing = curvatures.GetDataInformation().DataInformation.GetBounds()
+    diagonal = sum((spacing[2 * k + 1] - spacing[2 * k]) ** 2 for k in range(3)) ** 0.5
+
+    view = simple.CreateView("RenderView")
+    view.ViewSize = [int(v) for v in arguments.size.split(",")]
+    view.OrientationAxesVisibility = 0
+    view.Background = [1, 1, 1]
+    try:
+        view.UseColorPaletteForBackground = 0
+    except AttributeError:
+        pass
+
+    cloud = simple.Show(curvatures, view)
+    cloud.Representation = "Points"
+    cloud.PointSize = 4
+    simple.ColorBy(cloud, ("POINTS", arguments.color))
+    lookup = simple.GetColorTransferFunction(arguments.color)
+    lookup.ApplyPreset("Cool to Warm", True)
+    # Robust colour range: curvature has long tails at sharp features.
+    values = curvatures.PointData[arguments.color].GetRange()
+    import numpy
+    from paraview import servermanager
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    data = vtk_to_numpy(servermanager.Fetch(curvatures).GetPointData().GetArray(arguments.color))
+    low, high = numpy.nanpercentile(data, [5, 95]) if data.size else values
+    bound = max(abs(low), abs(high))
+    lookup.RescaleTransferFunction(-bound, bound)
+    cloud.SetScalarBarVisibility(view, True)
+    bar = simple.GetScalarBar(lookup, view)
+    bar.Title = arguments.color.replace("_", " ")
+    bar.ComponentTitle = ""
+    bar.TitleColor = bar.LabelColor = [0, 0, 0]
+
+    # Short line glyphs along the maximum principal direction (defined up to
+    # sign: a line, not an arrow).
+    masked = simple.MaskPoints(Input=curvatures, OnRatio=arguments.glyph_every, GenerateVertices=0,
+                               MaximumNumberofPoints=10 ** 9)
+    glyphs = simple.Glyph(Input=masked, GlyphType="Line")
+    glyphs.OrientationArray = ["POINTS", "Maximum_Curvature_Direction"]
+    glyphs.ScaleArray = ["POINTS", "No scale array"]
+    glyphs.ScaleFactor = 0.012 * diagonal
+    glyphs.GlyphMode = "All Points"
+    lines = simple.Show(glyphs, view)
+    lines.ColorArrayName = ["POINTS", ""]
+    lines.AmbientColor = lines.DiffuseColor = [0.1, 0.1, 0.1]
+    lines.LineWidth = 1.5
+
+    direction = [float(v) for v in arguments.view.split(",")]
+    center = [(spacing[2 * k] + spacing[2 * k + 1]) / 2 for k in range(3)]
+    view.CameraFocalPoint = center
+    view.CameraPosition = [center[k] - direction[k] * 3 * diagonal for k in range(3)]
+    view.CameraViewUp = [float(v) for v in arguments.up.split(",")]
+    simple.ResetCamera(view)
+    camera = simple.GetActiveCamera()
+    camera.Dolly(1.3)
+    simple.Render(view)
+    simple.SaveScreenshot(arguments.output, view, ImageResolution=view.ViewSize)
+    print("wrote %s" % arguments.output)
+
+
+if __name__ == "__main__":
+    main(sys.argv[1:])
