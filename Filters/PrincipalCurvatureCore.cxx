@@ -309,69 +309,78 @@ std::uint32_t PointCurvatureEstimator::DirectionMask(double tx, double ty, doubl
 
 void PointCurvatureEstimator::Begin(const Vector3& point,
   const Vector3& unitNormal,
-  double planeDistance)
+  double planeDistance,
+  double scale)
 {
   this->Point = point;
   this->Frame = MakeTangentFrame(unitNormal);
-  this->PlaneDistance = planeDistance;
+  this->Scale = scale;
+  this->InverseScale = scale > 0.0 && std::isfinite(scale) ? 1.0 / scale : 0.0;
+  this->ScaledPlaneDistance = planeDistance * this->InverseScale;
   this->Neighbors.clear();
+  for (auto& bank : this->BankSums)
+  {
+    bank.fill(CgaSums{});
+  }
 }
 
-void PointCurvatureEstimator::AccumulateDirections(double scale, double scaledPlaneDistance)
+void PointCurvatureEstimator::AddNeighbors(const double* coordinates, std::size_t count)
 {
-  // Consecutive neighbours (read cell by cell) often fall into the same
-  // direction: adding them into one set of sums chains every add to the
-  // previous store. Rotating over a few banks of sums breaks the chains;
-  // the banks are added up at the end (in a fixed order: deterministic).
-  constexpr int Banks = 4;
-  std::array<std::array<CgaSums, NumberOfDirections>, Banks> banks{};
-  this->Masks.resize(this->Neighbors.size());
   const DirectionTable& table = Directions();
-  const double inverseScale = 1.0 / scale;
-  const double p = scaledPlaneDistance;
-  for (std::size_t j = 0; j < this->Neighbors.size(); ++j)
+  // Locals, not members: the stores into the sums below could alias
+  // members and would make the compiler reload them every iteration.
+  const double inverseScale = this->InverseScale;
+  const double p = this->ScaledPlaneDistance;
+  const Vector3 x = this->Point;
+  const Vector3 n = this->Frame.Normal;
+  const Vector3 v = this->Frame.V0;
+  const Vector3 w = this->Frame.W0;
+  std::size_t stored = this->Neighbors.size();
+  this->Neighbors.resize(stored + count);
+  Local* out = this->Neighbors.data();
+  for (std::size_t k = 0; k < count; ++k)
   {
-    std::array<CgaSums, NumberOfDirections>& sums = banks[j % Banks];
-    const Local& local = this->Neighbors[j];
-    const double h = local.H * inverseScale;
-    const double tx = local.Tx * inverseScale;
-    const double ty = local.Ty * inverseScale;
-    const double squaredDistance = h * h + tx * tx + ty * ty;
+    const double* q = coordinates + 3 * k;
+    const double dx = (q[0] - x[0]) * inverseScale;
+    const double dy = (q[1] - x[1]) * inverseScale;
+    const double dz = (q[2] - x[2]) * inverseScale;
+    const double h = dx * n[0] + dy * n[1] + dz * n[2];
+    const double tx = dx * v[0] + dy * v[1] + dz * v[2];
+    const double ty = dx * w[0] + dy * w[1] + dz * w[2];
+    const double squaredDistance = dx * dx + dy * dy + dz * dz;
+    if (squaredDistance == 0.0)
+    {
+      continue; // the query point itself, or a duplicate of it
+    }
+    std::array<CgaSums, NumberOfDirections>& sums = this->BankSums[stored % Banks];
+    std::uint32_t mask;
     if (NearNormalLine(tx, ty, p)) // rare: a few percent of the neighbours
     {
-      std::uint32_t mask = AllHalfPlanesMask(table, tx, ty, p);
-      this->Masks[j] = mask;
-      while (mask)
+      mask = AllHalfPlanesMask(table, tx, ty, p);
+      for (std::uint32_t rest = mask; rest; rest &= rest - 1)
       {
-        const int direction = __builtin_ctz(mask);
-        mask &= mask - 1;
-        sums[direction].Add(h, squaredDistance);
+        sums[__builtin_ctz(rest)].Add(h, squaredDistance);
       }
-      continue;
     }
-    // The common case: at most the two directions bounding the sector. Both
-    // are always updated, with weight 0 or 1, so that no branch depends on
-    // the neighbour.
-    const int sector = SectorOf(tx, ty);
-    const int next = (sector + 1) % NumberOfDirections;
-    const std::uint32_t inSector = InHalfPlane(table, sector, tx, ty, p);
-    const std::uint32_t inNext = InHalfPlane(table, next, tx, ty, p);
-    this->Masks[j] = (inSector << sector) | (inNext << next);
-    sums[sector].AddWeighted(static_cast<int>(inSector), h, squaredDistance);
-    sums[next].AddWeighted(static_cast<int>(inNext), h, squaredDistance);
-  }
-  for (int i = 0; i < NumberOfDirections; ++i)
-  {
-    CgaSums total = banks[0][i];
-    for (int bank = 1; bank < Banks; ++bank)
+    else
     {
-      total.Merge(banks[bank][i]);
+      // The common case: at most the two directions bounding the sector.
+      // Both are always updated, with weight 0 or 1, so that no branch
+      // depends on the neighbour.
+      const int sector = SectorOf(tx, ty);
+      const int next = (sector + 1) % NumberOfDirections;
+      const std::uint32_t inSector = InHalfPlane(table, sector, tx, ty, p);
+      const std::uint32_t inNext = InHalfPlane(table, next, tx, ty, p);
+      mask = (inSector << sector) | (inNext << next);
+      sums[sector].AddWeighted(static_cast<int>(inSector), h, squaredDistance);
+      sums[next].AddWeighted(static_cast<int>(inNext), h, squaredDistance);
     }
-    this->Sums[i] = total;
+    out[stored++] = Local{ h, squaredDistance, mask };
   }
+  this->Neighbors.resize(stored);
 }
 
-void PointCurvatureEstimator::FitDirections(const FitSettings& settings, double scale)
+void PointCurvatureEstimator::FitDirections(const FitSettings& settings)
 {
   std::array<CircleFit, NumberOfDirections> candidate12{};
   std::array<CircleFit, NumberOfDirections> candidate23{};
@@ -405,27 +414,15 @@ void PointCurvatureEstimator::FitDirections(const FitSettings& settings, double 
     // candidate circle; keep the candidate with the smaller Q.
     std::array<double, NumberOfDirections> quality12{};
     std::array<double, NumberOfDirections> quality23{};
-    const double inverseScale = 1.0 / scale;
-    for (std::size_t j = 0; j < this->Neighbors.size(); ++j)
+    for (const Local& local : this->Neighbors)
     {
-      std::uint32_t mask = this->Masks[j];
-      if (!mask)
+      for (std::uint32_t rest = local.Mask; rest; rest &= rest - 1)
       {
-        continue;
-      }
-      const Local& local = this->Neighbors[j];
-      const double h = local.H * inverseScale;
-      const double tx = local.Tx * inverseScale;
-      const double ty = local.Ty * inverseScale;
-      const double squaredDistance = h * h + tx * tx + ty * ty;
-      while (mask)
-      {
-        const int direction = __builtin_ctz(mask);
-        mask &= mask - 1;
+        const int direction = __builtin_ctz(rest);
         quality12[direction] +=
-          DistanceToCircle(candidate12[direction].Curvature, h, squaredDistance);
+          DistanceToCircle(candidate12[direction].Curvature, local.H, local.SquaredDistance);
         quality23[direction] +=
-          DistanceToCircle(candidate23[direction].Curvature, h, squaredDistance);
+          DistanceToCircle(candidate23[direction].Curvature, local.H, local.SquaredDistance);
       }
     }
     for (int i = 0; i < NumberOfDirections; ++i)
@@ -441,7 +438,7 @@ void PointCurvatureEstimator::FitDirections(const FitSettings& settings, double 
   {
     const CircleFit& chosen = candidate23[i].Valid ? candidate23[i] : candidate12[i];
     this->DirectionValid[i] = chosen.Valid;
-    this->DirectionCurvature[i] = chosen.Valid ? chosen.Curvature / scale : 0.0;
+    this->DirectionCurvature[i] = chosen.Valid ? chosen.Curvature * this->InverseScale : 0.0;
   }
 }
 
@@ -451,22 +448,20 @@ PointCurvature PointCurvatureEstimator::Estimate(const FitSettings& settings)
   result.NeighborCount = static_cast<int>(this->Neighbors.size());
   this->DirectionValid.fill(false);
   this->DirectionCurvature.fill(0.0);
-  double largestSquaredDistance = 0.0;
-  for (const Local& local : this->Neighbors)
-  {
-    largestSquaredDistance = std::max(
-      largestSquaredDistance, local.H * local.H + local.Tx * local.Tx + local.Ty * local.Ty);
-  }
-  if (!(largestSquaredDistance > 0.0) || !std::isfinite(largestSquaredDistance) ||
-    !(this->PlaneDistance > 0.0))
+  if (this->Neighbors.empty() || !(this->InverseScale > 0.0) || !(this->ScaledPlaneDistance > 0.0))
   {
     return result;
   }
-  // Work in units of the neighbourhood's size: B's entries are then O(1)
-  // whatever the cloud's unit, and the fits are scale invariant.
-  const double scale = std::sqrt(largestSquaredDistance);
-  this->AccumulateDirections(scale, this->PlaneDistance / scale);
-  this->FitDirections(settings, scale);
+  for (int i = 0; i < NumberOfDirections; ++i)
+  {
+    CgaSums total = this->BankSums[0][i];
+    for (int bank = 1; bank < Banks; ++bank)
+    {
+      total.Merge(this->BankSums[bank][i]);
+    }
+    this->Sums[i] = total;
+  }
+  this->FitDirections(settings);
   const SineFit sine = FitSine(this->DirectionCurvature, this->DirectionValid);
   PrincipalCurvaturesFromSine(sine, this->Frame, result);
   return result;

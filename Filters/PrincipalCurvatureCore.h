@@ -17,6 +17,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -179,30 +180,19 @@ struct FitSettings
 class PointCurvatureEstimator
 {
 public:
-  /// Starts a query at `point` with unit normal `unitNormal` and the
-  /// plane-distance-threshold `planeDistance` (a length, > 0).
-  void Begin(const Vector3& point, const Vector3& unitNormal, double planeDistance);
+  /// Starts a query at `point` with unit normal `unitNormal`, the
+  /// plane-distance-threshold `planeDistance` and the neighbourhood's size
+  /// `scale` (the surroundings-threshold; lengths > 0). Lengths are divided
+  /// by `scale` before anything is summed, so that the CGA matrix is well
+  /// conditioned and the result does not depend on the cloud's unit.
+  void Begin(const Vector3& point, const Vector3& unitNormal, double planeDistance, double scale);
 
-  /// Adds one neighbour. A neighbour that coincides with the query point
-  /// carries no information about the curvature and is ignored.
-  void AddNeighbor(const double q[3])
-  {
-    const double dx = q[0] - this->Point[0];
-    const double dy = q[1] - this->Point[1];
-    const double dz = q[2] - this->Point[2];
-    if (dx == 0.0 && dy == 0.0 && dz == 0.0)
-    {
-      return;
-    }
-    const Vector3& n = this->Frame.Normal;
-    const Vector3& v = this->Frame.V0;
-    const Vector3& w = this->Frame.W0;
-    Local local;
-    local.H = dx * n[0] + dy * n[1] + dz * n[2];
-    local.Tx = dx * v[0] + dy * v[1] + dz * v[2];
-    local.Ty = dx * w[0] + dy * w[1] + dz * w[2];
-    this->Neighbors.push_back(local);
-  }
+  /// Adds `count` neighbours (xyz triplets) in one pass: coordinates in the
+  /// tangent frame, half-plane membership and the six sums of each
+  /// direction. A neighbour that coincides with the query point carries no
+  /// information about the curvature and is ignored.
+  void AddNeighbors(const double* coordinates, std::size_t count);
+  void AddNeighbor(const double q[3]) { this->AddNeighbors(q, 1); }
 
   /// Number of neighbours added so far (coincident points excluded).
   int GetNumberOfNeighbors() const { return static_cast<int>(this->Neighbors.size()); }
@@ -229,21 +219,29 @@ public:
   static std::uint32_t DirectionMask(double tx, double ty, double p);
 
 private:
+  /// What the fits' second pass (New02's quality) needs of a neighbour.
   struct Local
   {
-    double H;
-    double Tx;
-    double Ty;
+    double H;               ///< height above the tangent plane, in units of the scale
+    double SquaredDistance; ///< |q - x|^2, in units of the scale
+    std::uint32_t Mask;     ///< the directions it belongs to
   };
 
-  void AccumulateDirections(double scale, double scaledPlaneDistance);
-  void FitDirections(const FitSettings& settings, double scale);
+  /// Consecutive neighbours (read cell by cell) often fall into the same
+  /// direction: adding them into one set of sums chains every add to the
+  /// previous store. Rotating over a few banks of sums breaks the chains;
+  /// the banks are added up in a fixed order (deterministic).
+  static constexpr int Banks = 4;
+
+  void FitDirections(const FitSettings& settings);
 
   Vector3 Point{ { 0.0, 0.0, 0.0 } };
   TangentFrame Frame{};
-  double PlaneDistance = 0.0;
+  double Scale = 0.0;
+  double InverseScale = 0.0;
+  double ScaledPlaneDistance = 0.0;
   std::vector<Local> Neighbors;
-  std::vector<std::uint32_t> Masks;
+  std::array<std::array<CgaSums, NumberOfDirections>, Banks> BankSums{};
   std::array<CgaSums, NumberOfDirections> Sums{};
   std::array<double, NumberOfDirections> DirectionCurvature{};
   std::array<bool, NumberOfDirections> DirectionValid{};

@@ -392,11 +392,8 @@ private:
     const double* x = &this->Cloud.All[3 * i];
     const double* n = &this->Normals[3 * i];
     pcurv::PointCurvatureEstimator& estimator = scratch.Estimator;
-    estimator.Begin({ { x[0], x[1], x[2] } }, { { n[0], n[1], n[2] } }, p);
-    for (std::size_t k = 0; k < scratch.Neighbors.size(); k += 3)
-    {
-      estimator.AddNeighbor(&scratch.Neighbors[k]);
-    }
+    estimator.Begin({ { x[0], x[1], x[2] } }, { { n[0], n[1], n[2] } }, p, s);
+    estimator.AddNeighbors(scratch.Neighbors.data(), scratch.Neighbors.size() / 3);
     this->Out.Store(i, estimator.Estimate(this->Settings), s, p);
   }
 

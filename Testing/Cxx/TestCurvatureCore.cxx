@@ -197,7 +197,7 @@ void TestEstimatorOnSurfaces(Checks& checks)
         {
           continue;
         }
-        estimator.Begin(x.Point, x.Normal, 0.1 * c.Radius);
+        estimator.Begin(x.Point, x.Normal, 0.1 * c.Radius, c.Radius);
         for (const testing::SurfaceSample& s : samples)
         {
           const testing::Vec d = testing::Add(s.Point, testing::Scale(-1.0, x.Point));
@@ -241,14 +241,14 @@ void TestDegenerateNeighborhoods(Checks& checks)
 {
   PointCurvatureEstimator estimator;
   FitSettings settings;
-  estimator.Begin({ { 0, 0, 0 } }, { { 0, 0, 1 } }, 0.1);
+  estimator.Begin({ { 0, 0, 0 } }, { { 0, 0, 1 } }, 0.1, 1.0);
   checks.True("no neighbours: invalid", !estimator.Estimate(settings).Valid);
-  estimator.Begin({ { 0, 0, 0 } }, { { 0, 0, 1 } }, 0.1);
+  estimator.Begin({ { 0, 0, 0 } }, { { 0, 0, 1 } }, 0.1, 1.0);
   const double same[3] = { 0, 0, 0 };
   estimator.AddNeighbor(same);
   checks.Equal("coincident neighbour ignored", estimator.GetNumberOfNeighbors(), 0);
   // Points on a line: only two directions get points.
-  estimator.Begin({ { 0, 0, 0 } }, { { 0, 0, 1 } }, 0.01);
+  estimator.Begin({ { 0, 0, 0 } }, { { 0, 0, 1 } }, 0.01, 1.0);
   for (int j = -20; j <= 20; ++j)
   {
     const double q[3] = { 0.05 * j, 0.0, 0.0 };
@@ -272,7 +272,7 @@ void TestInvariance(Checks& checks)
     const testing::Vec point{
       { scale * x.Point[0] + shift, scale * x.Point[1] + shift, scale * x.Point[2] + shift }
     };
-    estimator.Begin(point, x.Normal, 0.04 * scale);
+    estimator.Begin(point, x.Normal, 0.04 * scale, 0.4 * scale);
     for (const testing::SurfaceSample& s : samples)
     {
       const testing::Vec d = testing::Add(s.Point, testing::Scale(-1.0, x.Point));
