@@ -27,7 +27,8 @@ double DynamicAdjustment::Adjust(int neighborCount)
   const double found = std::max(1, neighborCount);
   const double planeDistance = c.TargetPlaneDistances[this->Level] * c.LengthUnit * target / found;
 
-  this->Surroundings *= std::sqrt(target / found);
+  this->Surroundings = std::min(
+    this->Surroundings * std::sqrt(target / found), c.MaximumSurroundingsThreshold * c.LengthUnit);
   const double s = this->Surroundings / c.LengthUnit;
   if (this->Level == 0 && s < c.SwitchLengths[0])
   {

@@ -35,6 +35,10 @@ struct AdjustmentSettings
   /// Switch to the second combination below SwitchLengths[0], to the third
   /// below SwitchLengths[1]; step back one above SwitchLengths[2] (units of L).
   std::array<double, 3> SwitchLengths{ { 2.0, 1.0, 4.0 } };
+  /// s never grows beyond this (units of L; the paper has no bound): in a
+  /// region far sparser than the targets it would otherwise grow without
+  /// limit, and a parallel run must know how far a query can reach.
+  double MaximumSurroundingsThreshold = 16.0;
 };
 
 class DynamicAdjustment

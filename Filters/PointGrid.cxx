@@ -3,50 +3,30 @@
 namespace pcurv
 {
 
-void PointGrid::Build(const double* coordinates, std::int64_t count, double cellSize)
+GridLattice GridLattice::Make(const double lower[3],
+  const double upper[3],
+  std::int64_t count,
+  double cellSize)
 {
-  this->Ids.clear();
-  this->Sorted.clear();
-  this->CellStart.assign(2, 0);
-  this->Dimensions = { { 1, 1, 1 } };
-  if (count <= 0)
-  {
-    return;
-  }
-  std::array<double, 3> upper;
-  for (int k = 0; k < 3; ++k)
-  {
-    this->Origin[k] = upper[k] = coordinates[k];
-  }
-  for (std::int64_t i = 1; i < count; ++i)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      this->Origin[k] = std::min(this->Origin[k], coordinates[3 * i + k]);
-      upper[k] = std::max(upper[k], coordinates[3 * i + k]);
-    }
-  }
+  GridLattice lattice;
   double diagonalSquared = 0.0;
   for (int k = 0; k < 3; ++k)
   {
-    diagonalSquared += (upper[k] - this->Origin[k]) * (upper[k] - this->Origin[k]);
+    lattice.Origin[k] = lower[k];
+    diagonalSquared += (upper[k] - lower[k]) * (upper[k] - lower[k]);
   }
-  this->Diagonal = std::sqrt(diagonalSquared);
-
-  // Cells: about cellSize, but never many more than points (a small radius
-  // in a large sparse box would otherwise allocate without bound).
-  const double maximumCells = 4.0 * static_cast<double>(count) + 4096.0;
-  double size = cellSize > 0.0 && std::isfinite(cellSize) ? cellSize : this->Diagonal;
+  double size = cellSize > 0.0 && std::isfinite(cellSize) ? cellSize : std::sqrt(diagonalSquared);
   if (!(size > 0.0))
   {
     size = 1.0; // all points coincide
   }
+  const double maximumCells = 4.0 * static_cast<double>(count) + 4096.0;
   for (;;)
   {
     double cells = 1.0;
     for (int k = 0; k < 3; ++k)
     {
-      cells *= std::floor((upper[k] - this->Origin[k]) / size) + 1.0;
+      cells *= std::floor((upper[k] - lower[k]) / size) + 1.0;
     }
     if (cells <= maximumCells)
     {
@@ -54,12 +34,46 @@ void PointGrid::Build(const double* coordinates, std::int64_t count, double cell
     }
     size *= std::max(1.01, std::cbrt(cells / maximumCells));
   }
-  this->CellSize = size;
+  lattice.CellSize = size;
+  return lattice;
+}
+
+void PointGrid::Build(const double* coordinates, std::int64_t count, const GridLattice& lattice)
+{
+  this->Lattice = lattice;
+  this->Ids.clear();
+  this->Sorted.clear();
+  this->CellStart.assign(2, 0);
+  this->Low = { { 0, 0, 0 } };
+  this->Dimensions = { { 1, 1, 1 } };
+  this->Diagonal = 0.0;
+  if (count <= 0)
+  {
+    return;
+  }
+  std::array<std::int64_t, 3> high;
+  std::array<double, 3> lower, upper;
   for (int k = 0; k < 3; ++k)
   {
-    this->Dimensions[k] =
-      static_cast<std::int64_t>(std::floor((upper[k] - this->Origin[k]) / size)) + 1;
+    lower[k] = upper[k] = coordinates[k];
   }
+  for (std::int64_t i = 1; i < count; ++i)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      lower[k] = std::min(lower[k], coordinates[3 * i + k]);
+      upper[k] = std::max(upper[k], coordinates[3 * i + k]);
+    }
+  }
+  double diagonalSquared = 0.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    this->Low[k] = lattice.Cell(lower[k], k);
+    high[k] = lattice.Cell(upper[k], k);
+    this->Dimensions[k] = high[k] - this->Low[k] + 1;
+    diagonalSquared += (upper[k] - lower[k]) * (upper[k] - lower[k]);
+  }
+  this->Diagonal = std::sqrt(diagonalSquared);
 
   // Counting sort by cell.
   const std::int64_t numberOfCells =
@@ -80,14 +94,37 @@ void PointGrid::Build(const double* coordinates, std::int64_t count, double cell
   }
   std::vector<std::int64_t> next(this->CellStart.begin(), this->CellStart.end() - 1);
   this->Ids.resize(count);
-  this->Sorted.resize(3 * count);
   for (std::int64_t i = 0; i < count; ++i)
   {
-    const std::int64_t j = next[cellOf[i]]++;
-    this->Ids[j] = i;
+    this->Ids[next[cellOf[i]]++] = i;
+  }
+  // Within a cell, by coordinates: independent of the input's order.
+  auto before = [coordinates](std::int64_t a, std::int64_t b)
+  {
+    const double* p = coordinates + 3 * a;
+    const double* q = coordinates + 3 * b;
+    if (p[0] != q[0])
+      return p[0] < q[0];
+    if (p[1] != q[1])
+      return p[1] < q[1];
+    if (p[2] != q[2])
+      return p[2] < q[2];
+    return a < b; // identical points: any fixed order
+  };
+  for (std::int64_t c = 0; c < numberOfCells; ++c)
+  {
+    if (this->CellStart[c + 1] - this->CellStart[c] > 1)
+    {
+      std::sort(
+        this->Ids.begin() + this->CellStart[c], this->Ids.begin() + this->CellStart[c + 1], before);
+    }
+  }
+  this->Sorted.resize(3 * count);
+  for (std::int64_t j = 0; j < count; ++j)
+  {
     for (int k = 0; k < 3; ++k)
     {
-      this->Sorted[3 * j + k] = coordinates[3 * i + k];
+      this->Sorted[3 * j + k] = coordinates[3 * this->Ids[j] + k];
     }
   }
 }
@@ -145,12 +182,12 @@ double PointGrid::SquaredDistanceToKth(const double x[3], int k, std::vector<dou
   {
     return 0.0;
   }
-  double radius = this->CellSize;
+  double radius = this->Lattice.CellSize;
   for (;;)
   {
     scratch.clear();
     // Beyond the whole box every point is found: the loop ends.
-    const bool everything = radius > 2.0 * this->Diagonal + this->CellSize;
+    const bool everything = radius > 2.0 * this->Diagonal + this->Lattice.CellSize;
     const double queryRadius = everything ? std::nextafter(radius, HUGE_VAL) : radius;
     this->ForEachWithinRadius(x,
       queryRadius,

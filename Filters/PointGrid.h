@@ -11,6 +11,12 @@
  * The sorted order is also a spatially coherent processing order: points
  * handled one after another are neighbours, which keeps their candidates in
  * cache and is what the dynamic variable adjustment assumes.
+ *
+ * The cells are those of a GridLattice that every process computes alike
+ * from global bounds, and the points of a cell are sorted by coordinates:
+ * the order in which a query visits its neighbours, hence every sum, does
+ * not depend on the order of the input points or on how they are split
+ * among processes.
  */
 #ifndef PointGrid_h
 #define PointGrid_h
@@ -24,16 +30,37 @@
 namespace pcurv
 {
 
+/// Cubic cells of one size at global positions: the cell of coordinate c
+/// along an axis is floor((c - Origin) / CellSize).
+struct GridLattice
+{
+  std::array<double, 3> Origin{ { 0.0, 0.0, 0.0 } };
+  double CellSize = 1.0;
+
+  /// A lattice over the box [lower, upper] holding `count` points, with
+  /// cells of about `cellSize`, enlarged when the box would need far more
+  /// cells than points (a small radius in a large, sparse box).
+  static GridLattice Make(const double lower[3],
+    const double upper[3],
+    std::int64_t count,
+    double cellSize);
+
+  std::int64_t Cell(double coordinate, int axis) const
+  {
+    return static_cast<std::int64_t>(
+      std::floor((coordinate - this->Origin[axis]) / this->CellSize));
+  }
+};
+
 class PointGrid
 {
 public:
-  /// Builds the grid over `count` points (xyz triplets, all finite) with
-  /// cells of about `cellSize` (enlarged when the bounding box would need
-  /// far more cells than points).
-  void Build(const double* coordinates, std::int64_t count, double cellSize);
+  /// Builds the grid over `count` points (xyz triplets, all finite) on the
+  /// given lattice; only the cells spanned by these points are stored.
+  void Build(const double* coordinates, std::int64_t count, const GridLattice& lattice);
 
   std::int64_t GetNumberOfPoints() const { return static_cast<std::int64_t>(this->Ids.size()); }
-  double GetCellSize() const { return this->CellSize; }
+  double GetCellSize() const { return this->Lattice.CellSize; }
 
   /// Id (index into the coordinates given to Build) of the j-th point in
   /// cell order.
@@ -88,16 +115,19 @@ public:
   double SquaredDistanceToKth(const double x[3], int k, std::vector<double>& scratch) const;
 
 private:
+  /// Local cell index along an axis, clamped to the stored cells.
   std::int64_t CellIndex(double coordinate, int axis) const
   {
-    const double cell = std::floor((coordinate - this->Origin[axis]) / this->CellSize);
+    const double cell =
+      std::floor((coordinate - this->Lattice.Origin[axis]) / this->Lattice.CellSize) -
+      static_cast<double>(this->Low[axis]);
     return static_cast<std::int64_t>(
       std::min(std::max(cell, 0.0), static_cast<double>(this->Dimensions[axis] - 1)));
   }
 
-  std::array<double, 3> Origin{ { 0.0, 0.0, 0.0 } };
+  GridLattice Lattice;
+  std::array<std::int64_t, 3> Low{ { 0, 0, 0 } }; // lattice cell of local cell 0
   std::array<std::int64_t, 3> Dimensions{ { 1, 1, 1 } };
-  double CellSize = 1.0;
   double Diagonal = 0.0;
   std::vector<std::int64_t> CellStart; // per cell, its first sorted point; one extra at the end
   std::vector<double> Sorted;          // coordinates in cell order

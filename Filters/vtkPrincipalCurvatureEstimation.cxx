@@ -2,6 +2,7 @@
 
 #include "DynamicAdjustment.h"
 #include "PointGrid.h"
+#include "PrincipalCurvatureCloud.h"
 #include "PrincipalCurvatureCore.h"
 
 #include "vtkCellArray.h"
@@ -9,12 +10,10 @@
 #include "vtkDataArray.h"
 #include "vtkDataSetAttributes.h"
 #include "vtkDoubleArray.h"
-#include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkIntArray.h"
-#include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -26,11 +25,13 @@
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
 #include <string>
+#include <tuple>
 #include <vector>
 
 vtkStandardNewMacro(vtkPrincipalCurvatureEstimation);
@@ -38,120 +39,6 @@ vtkStandardNewMacro(vtkPrincipalCurvatureEstimation);
 namespace
 {
 constexpr double NaN = std::numeric_limits<double>::quiet_NaN();
-
-/// Points of the input in double precision, with the finite ones gathered
-/// into a compact cloud for the neighbour search.
-struct CloudCoordinates
-{
-  std::vector<double> All;              // 3 per input point, as given
-  std::vector<unsigned char> Good;      // 1 where all three coordinates are finite
-  std::vector<double> Finite;           // 3 per finite point: what the search sees
-  std::vector<vtkIdType> FiniteToInput; // input id of each finite point
-
-  vtkIdType GetNumberOfFinitePoints() const
-  {
-    return static_cast<vtkIdType>(this->FiniteToInput.size());
-  }
-};
-
-void ReadCoordinates(vtkPointSet* input, CloudCoordinates& cloud)
-{
-  const vtkIdType numberOfPoints = input->GetNumberOfPoints();
-  cloud.All.resize(3 * numberOfPoints);
-  cloud.Good.resize(numberOfPoints);
-  cloud.Finite.reserve(3 * numberOfPoints);
-  cloud.FiniteToInput.reserve(numberOfPoints);
-  vtkDataArray* points = input->GetPoints()->GetData();
-  for (vtkIdType i = 0; i < numberOfPoints; ++i)
-  {
-    double* x = &cloud.All[3 * i];
-    points->GetTuple(i, x);
-    cloud.Good[i] = std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2]);
-    if (cloud.Good[i])
-    {
-      cloud.Finite.insert(cloud.Finite.end(), x, x + 3);
-      cloud.FiniteToInput.push_back(i);
-    }
-  }
-}
-
-/// Unit normals; points whose normal is zero or not finite get a zero
-/// vector and are not estimated.
-std::vector<double> ReadUnitNormals(vtkDataArray* normals)
-{
-  const vtkIdType numberOfPoints = normals->GetNumberOfTuples();
-  std::vector<double> unit(3 * numberOfPoints);
-  for (vtkIdType i = 0; i < numberOfPoints; ++i)
-  {
-    double* n = &unit[3 * i];
-    normals->GetTuple(i, n);
-    const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-    const bool usable = std::isfinite(length) && length > 0.0;
-    for (int k = 0; k < 3; ++k)
-    {
-      n[k] = usable ? n[k] / length : 0.0;
-    }
-  }
-  return unit;
-}
-
-/// Median, over an evenly strided sample of at most 512 points, of the
-/// distance to the k-th nearest other point: a radius holding about k
-/// neighbours at a typical point, whatever the cloud's unit.
-double EstimateRadiusForNeighborCount(const pcurv::PointGrid& grid,
-  const CloudCoordinates& cloud,
-  int k)
-{
-  const vtkIdType numberOfPoints = cloud.GetNumberOfFinitePoints();
-  if (numberOfPoints < 2)
-  {
-    return 0.0;
-  }
-  const vtkIdType stride = std::max<vtkIdType>(1, numberOfPoints / 512);
-  std::vector<double> radii;
-  std::vector<double> scratch;
-  for (vtkIdType i = 0; i < numberOfPoints; i += stride)
-  {
-    // k + 1: the sample point itself is among the points found.
-    radii.push_back(std::sqrt(grid.SquaredDistanceToKth(&cloud.Finite[3 * i], k + 1, scratch)));
-  }
-  std::nth_element(radii.begin(), radii.begin() + radii.size() / 2, radii.end());
-  return radii[radii.size() / 2];
-}
-
-/// Radius holding about k points if the cloud were spread evenly over a
-/// square as wide as its bounding box's diagonal: only a grid's cell size.
-double GuessRadiusForNeighborCount(const CloudCoordinates& cloud, int k)
-{
-  const vtkIdType count = cloud.GetNumberOfFinitePoints();
-  if (count == 0)
-  {
-    return 0.0;
-  }
-  double lower[3], upper[3];
-  for (int c = 0; c < 3; ++c)
-  {
-    lower[c] = upper[c] = cloud.Finite[c];
-  }
-  for (vtkIdType i = 1; i < count; ++i)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      lower[c] = std::min(lower[c], cloud.Finite[3 * i + c]);
-      upper[c] = std::max(upper[c], cloud.Finite[3 * i + c]);
-    }
-  }
-  const double diagonal = std::sqrt(vtkMath::Distance2BetweenPoints(lower, upper));
-  return diagonal * std::sqrt(k / (vtkMath::Pi() * count));
-}
-
-/// A grid with cells of half the query radius: a query visits at most
-/// 5 x 5 x 5 cells, and reads fewer far candidates than with cells of the
-/// radius (measured about 5 % faster at 375 neighbours).
-void BuildGrid(pcurv::PointGrid& grid, const CloudCoordinates& cloud, double radius)
-{
-  grid.Build(cloud.Finite.data(), cloud.GetNumberOfFinitePoints(), 0.5 * radius);
-}
 
 /// One named double point-data array of the output.
 vtkSmartPointer<vtkDoubleArray> NewDoubleArray(const char* name, int components, vtkIdType tuples)
@@ -245,40 +132,101 @@ struct NeighborhoodRule
   double Ratio = 0.0;
   bool Adjusted = false; // dynamic variable adjustment instead of the above
   pcurv::AdjustmentSettings Adjustment;
-  vtkIdType BlockSize = 256;
+  double BlockLength = 0.0; // side of an adjustment block (a length)
 };
 
-/// Estimates the points in the grid's (spatially coherent) order; one
-/// instance is shared by all threads, each point written by one thread.
-/// With fixed thresholds the work items are points; with the dynamic
-/// adjustment they are fixed blocks of BlockSize consecutive points, each
-/// started afresh, so that results do not depend on the threads.
+/// The order in which points are processed: the grid's order (cell by cell,
+/// by coordinates within a cell), which is global. With fixed thresholds a
+/// work item is one own point; with the dynamic adjustment it is one block:
+/// the points (own and halo) in one cell of a lattice of side BlockLength,
+/// processed in that order, each block started afresh. Blocks are defined
+/// in space, not by counting points, so neither the threads nor the split
+/// among processes change them.
+struct ProcessingOrder
+{
+  std::vector<vtkIdType> Points;      // cloud point indices
+  std::vector<vtkIdType> BlockStarts; // DVA: block b is Points[BlockStarts[b], BlockStarts[b+1])
+
+  vtkIdType GetNumberOfItems() const
+  {
+    return this->BlockStarts.empty() ? static_cast<vtkIdType>(this->Points.size())
+                                     : static_cast<vtkIdType>(this->BlockStarts.size()) - 1;
+  }
+
+  void MakePointwise(const pcurv::PointGrid& grid, const pcurv::CloudPoints& cloud)
+  {
+    for (vtkIdType j = 0; j < grid.GetNumberOfPoints(); ++j)
+    {
+      const vtkIdType point = grid.GetSortedId(j);
+      if (cloud.IsOwn(point))
+      {
+        this->Points.push_back(point);
+      }
+    }
+  }
+
+  void MakeBlocks(const pcurv::PointGrid& grid,
+    const pcurv::CloudPoints& cloud,
+    const pcurv::GridLattice& lattice,
+    double blockLength)
+  {
+    using Key = std::tuple<std::int64_t, std::int64_t, std::int64_t>;
+    std::vector<std::pair<Key, vtkIdType>> keyed; // (block, grid position)
+    keyed.reserve(grid.GetNumberOfPoints());
+    for (vtkIdType j = 0; j < grid.GetNumberOfPoints(); ++j)
+    {
+      const double* x = &cloud.Coordinates[3 * grid.GetSortedId(j)];
+      std::array<std::int64_t, 3> b;
+      for (int k = 0; k < 3; ++k)
+      {
+        b[k] = static_cast<std::int64_t>(std::floor((x[k] - lattice.Origin[k]) / blockLength));
+      }
+      keyed.emplace_back(Key{ b[2], b[1], b[0] }, j);
+    }
+    std::sort(keyed.begin(), keyed.end());
+    for (std::size_t first = 0; first < keyed.size();)
+    {
+      std::size_t last = first;
+      bool hasOwn = false;
+      while (last < keyed.size() && keyed[last].first == keyed[first].first)
+      {
+        hasOwn = hasOwn || cloud.IsOwn(grid.GetSortedId(keyed[last].second));
+        ++last;
+      }
+      if (hasOwn) // blocks of halo points only are another process's work
+      {
+        this->BlockStarts.push_back(static_cast<vtkIdType>(this->Points.size()));
+        for (std::size_t k = first; k < last; ++k)
+        {
+          this->Points.push_back(grid.GetSortedId(keyed[k].second));
+        }
+      }
+      first = last;
+    }
+    this->BlockStarts.push_back(static_cast<vtkIdType>(this->Points.size()));
+  }
+};
+
+/// Estimates the work items; one instance is shared by all threads, each
+/// point written by one thread.
 class EstimateWorker
 {
 public:
   EstimateWorker(vtkPrincipalCurvatureEstimation* self,
-    const CloudCoordinates& cloud,
-    const std::vector<double>& normals,
+    const pcurv::CloudPoints& cloud,
     const pcurv::PointGrid& grid,
+    const ProcessingOrder& order,
     const NeighborhoodRule& rule,
     const pcurv::FitSettings& settings,
     CurvatureArrays& out)
     : Self(self)
     , Cloud(cloud)
-    , Normals(normals)
     , Grid(grid)
+    , Order(order)
     , Rule(rule)
     , Settings(settings)
     , Out(out)
   {
-  }
-
-  /// Number of work items for vtkSMPTools::For.
-  vtkIdType GetNumberOfItems() const
-  {
-    const vtkIdType points = this->Grid.GetNumberOfPoints();
-    return this->Rule.Adjusted ? (points + this->Rule.BlockSize - 1) / this->Rule.BlockSize
-                               : points;
   }
 
   void Initialize() {}
@@ -303,7 +251,7 @@ public:
       }
       else
       {
-        this->EstimateFixed(item, scratch);
+        this->EstimateFixed(this->Order.Points[item], scratch);
       }
     }
   }
@@ -321,27 +269,20 @@ private:
     std::vector<double> Neighbors;
   };
 
-  /// Input id of the j-th point in grid order, or -1 when its normal is unusable.
-  vtkIdType UsablePoint(vtkIdType j) const
+  bool HasNormal(vtkIdType point) const
   {
-    const vtkIdType i = this->Cloud.FiniteToInput[this->Grid.GetSortedId(j)];
-    const double* n = &this->Normals[3 * i];
-    if (n[0] == 0.0 && n[1] == 0.0 && n[2] == 0.0)
-    {
-      this->Out.Store(i, pcurv::PointCurvature{}, NaN, NaN);
-      return -1;
-    }
-    return i;
+    const double* n = &this->Cloud.Normals[3 * point];
+    return n[0] != 0.0 || n[1] != 0.0 || n[2] != 0.0;
   }
 
-  void EstimateFixed(vtkIdType j, Scratch& scratch)
+  void EstimateFixed(vtkIdType point, Scratch& scratch)
   {
-    const vtkIdType i = this->UsablePoint(j);
-    if (i < 0)
+    if (!this->HasNormal(point))
     {
+      this->Out.Store(this->Cloud.InputIds[point], pcurv::PointCurvature{}, NaN, NaN);
       return;
     }
-    const double* x = &this->Cloud.All[3 * i];
+    const double* x = &this->Cloud.Coordinates[3 * point];
     double s = this->Rule.Radius;
     if (this->Rule.KNearest)
     {
@@ -352,60 +293,73 @@ private:
     this->Grid.GatherWithinRadius(x, s, scratch.Neighbors);
     const double p =
       this->Rule.PlaneDistance > 0.0 ? this->Rule.PlaneDistance : this->Rule.Ratio * s;
-    this->EstimateGathered(i, s, p, scratch);
+    this->EstimateGathered(point, s, p, scratch);
   }
 
   /// The paper's sequence within one block: s carries over from point to
   /// point; the block's first point repeats its search with the adjusted s.
+  /// Halo points take part in the sequence (their neighbour counts steer s)
+  /// but are not estimated: another process outputs them.
   void EstimateBlock(vtkIdType block, Scratch& scratch)
   {
-    const vtkIdType first = block * this->Rule.BlockSize;
-    const vtkIdType last =
-      std::min<vtkIdType>(first + this->Rule.BlockSize, this->Grid.GetNumberOfPoints());
     pcurv::DynamicAdjustment& adjustment = scratch.Adjustment;
     adjustment = pcurv::DynamicAdjustment(this->Rule.Adjustment);
     bool firstPoint = true;
-    for (vtkIdType j = first; j < last; ++j)
+    for (vtkIdType k = this->Order.BlockStarts[block]; k < this->Order.BlockStarts[block + 1]; ++k)
     {
-      const vtkIdType i = this->UsablePoint(j);
-      if (i < 0)
+      const vtkIdType point = this->Order.Points[k];
+      if (!this->HasNormal(point))
       {
+        if (this->Cloud.IsOwn(point))
+        {
+          this->Out.Store(this->Cloud.InputIds[point], pcurv::PointCurvature{}, NaN, NaN);
+        }
         continue;
       }
-      const double* x = &this->Cloud.All[3 * i];
+      const double* x = &this->Cloud.Coordinates[3 * point];
       double s = adjustment.GetSurroundingsThreshold();
       this->Grid.GatherWithinRadius(x, s, scratch.Neighbors);
       if (firstPoint)
       {
-        adjustment.Adjust(static_cast<int>(scratch.Neighbors.size() / 3));
+        adjustment.Adjust(NeighborCount(scratch));
         s = adjustment.GetSurroundingsThreshold();
         this->Grid.GatherWithinRadius(x, s, scratch.Neighbors);
         firstPoint = false;
       }
-      const double p = adjustment.Adjust(static_cast<int>(scratch.Neighbors.size() / 3));
-      this->EstimateGathered(i, s, p, scratch);
+      const double p = adjustment.Adjust(NeighborCount(scratch));
+      if (this->Cloud.IsOwn(point))
+      {
+        this->EstimateGathered(point, s, p, scratch);
+      }
     }
   }
 
-  void EstimateGathered(vtkIdType i, double s, double p, Scratch& scratch)
+  /// Neighbours found, the point itself excluded (as the estimator counts).
+  static int NeighborCount(const Scratch& scratch)
   {
-    const double* x = &this->Cloud.All[3 * i];
-    const double* n = &this->Normals[3 * i];
+    return std::max(0, static_cast<int>(scratch.Neighbors.size() / 3) - 1);
+  }
+
+  void EstimateGathered(vtkIdType point, double s, double p, Scratch& scratch)
+  {
+    const double* x = &this->Cloud.Coordinates[3 * point];
+    const double* n = &this->Cloud.Normals[3 * point];
     pcurv::PointCurvatureEstimator& estimator = scratch.Estimator;
     estimator.Begin({ { x[0], x[1], x[2] } }, { { n[0], n[1], n[2] } }, p, s);
     estimator.AddNeighbors(scratch.Neighbors.data(), scratch.Neighbors.size() / 3);
-    this->Out.Store(i, estimator.Estimate(this->Settings), s, p);
+    this->Out.Store(this->Cloud.InputIds[point], estimator.Estimate(this->Settings), s, p);
   }
 
   /// Progress every few thousand points, and the abort flag, from one thread.
   void ReportProgress(vtkIdType item)
   {
-    const vtkIdType pointsPerItem = this->Rule.Adjusted ? this->Rule.BlockSize : 1;
-    if ((item * pointsPerItem) % 4096 >= pointsPerItem)
+    const vtkIdType items = this->Order.GetNumberOfItems();
+    const vtkIdType every = std::max<vtkIdType>(1, this->Rule.Adjusted ? items / 100 : 4096);
+    if (item % every != 0)
     {
       return;
     }
-    this->Self->UpdateProgress(static_cast<double>(item) / this->GetNumberOfItems());
+    this->Self->UpdateProgress(static_cast<double>(item) / items);
     if (this->Self->GetAbortExecute())
     {
       this->Aborted.store(true);
@@ -413,15 +367,32 @@ private:
   }
 
   vtkPrincipalCurvatureEstimation* Self;
-  const CloudCoordinates& Cloud;
-  const std::vector<double>& Normals;
+  const pcurv::CloudPoints& Cloud;
   const pcurv::PointGrid& Grid;
+  const ProcessingOrder& Order;
   NeighborhoodRule Rule;
   pcurv::FitSettings Settings;
   CurvatureArrays& Out;
   vtkSMPThreadLocal<Scratch> PerThread;
   std::atomic<bool> Aborted{ false };
 };
+
+/// The largest distance from an own point to its k-th nearest neighbour
+/// among this process's points alone: at least the true distance, so a halo
+/// this wide holds every point's k nearest neighbours.
+double LargestLocalKthDistance(pcurv::CloudPoints& cloud, const pcurv::GridLattice& lattice, int k)
+{
+  pcurv::PointGrid grid;
+  grid.Build(cloud.Coordinates.data(), cloud.NumberOfOwnPoints, lattice);
+  std::vector<double> scratch;
+  double largest = 0.0;
+  for (vtkIdType i = 0; i < cloud.NumberOfOwnPoints; ++i)
+  {
+    largest =
+      std::max(largest, grid.SquaredDistanceToKth(&cloud.Coordinates[3 * i], k + 1, scratch));
+  }
+  return std::nextafter(std::sqrt(largest), HUGE_VAL);
+}
 
 /// Runs `work` on all cores unless the user chose otherwise: ParaView's
 /// bundled VTK defaults to the sequential SMP backend, so switch to
@@ -470,6 +441,65 @@ void CopyGeometry(vtkPointSet* input, vtkPolyData* output)
   }
   output->GetPointData()->PassData(input->GetPointData());
 }
+/// The thresholds for every point from the settings and, where automatic,
+/// from the cloud (global in a parallel run); the radius the grid's cells
+/// are made for; and how far beyond its own points a process must see.
+void ChooseThresholds(vtkPrincipalCurvatureEstimation* self,
+  pcurv::CloudPoints& cloud,
+  const pcurv::ProcessGroup& processes,
+  NeighborhoodRule& rule,
+  double& cellRadius,
+  double& reach)
+{
+  rule.KNearest = self->GetNeighborhoodMode() == vtkPrincipalCurvatureEstimation::K_NEAREST;
+  rule.K = self->GetNumberOfNeighbors();
+  rule.Ratio = self->GetPlaneDistanceRatio();
+  rule.Adjusted = self->GetDynamicAdjustment();
+  // The neighbour count the cloud's typical radius is measured for.
+  const int typicalCount = rule.Adjusted ? static_cast<int>(self->GetTargetNeighborCounts()[0])
+                                         : self->GetNumberOfNeighbors();
+  const bool needsTypicalRadius = rule.Adjusted ? self->GetAutomaticLengthUnit()
+                                                : (self->GetAutomaticThresholds() || rule.KNearest);
+  const double typicalRadius =
+    needsTypicalRadius ? pcurv::TypicalRadius(cloud, processes, typicalCount) : 0.0;
+  cellRadius = typicalRadius;
+  if (rule.Adjusted)
+  {
+    pcurv::AdjustmentSettings& adjustment = rule.Adjustment;
+    adjustment.InitialSurroundingsThreshold = self->GetInitialSurroundingsThreshold();
+    std::copy_n(self->GetTargetNeighborCounts(), 3, adjustment.TargetNeighborCounts.begin());
+    std::copy_n(self->GetTargetPlaneDistances(), 3, adjustment.TargetPlaneDistances.begin());
+    std::copy_n(self->GetSwitchLengths(), 3, adjustment.SwitchLengths.begin());
+    adjustment.MaximumSurroundingsThreshold =
+      self->GetMaximumSurroundingsFactor() * self->GetInitialSurroundingsThreshold();
+    // Scale free: the initial s holds about the first target count.
+    adjustment.LengthUnit = self->GetAutomaticLengthUnit()
+      ? typicalRadius / self->GetInitialSurroundingsThreshold()
+      : self->GetLengthUnit();
+    cellRadius = adjustment.LengthUnit * self->GetInitialSurroundingsThreshold();
+    rule.BlockLength = self->GetAdjustmentBlockLength() * adjustment.LengthUnit;
+    // A block's points, and every query they make.
+    reach = std::sqrt(3.0) * rule.BlockLength +
+      adjustment.MaximumSurroundingsThreshold * adjustment.LengthUnit;
+    return;
+  }
+  if (!self->GetAutomaticThresholds())
+  {
+    rule.PlaneDistance = self->GetPlaneDistanceThreshold();
+    rule.Radius = self->GetSurroundingsThreshold();
+  }
+  else if (!rule.KNearest)
+  {
+    rule.Radius = typicalRadius;
+    rule.PlaneDistance = self->GetPlaneDistanceRatio() * rule.Radius;
+  }
+  if (!rule.KNearest)
+  {
+    cellRadius = rule.Radius;
+    reach = rule.Radius;
+  }
+}
+
 } // namespace
 
 vtkPrincipalCurvatureEstimation::vtkPrincipalCurvatureEstimation()
@@ -500,107 +530,81 @@ int vtkPrincipalCurvatureEstimation::RequestData(vtkInformation*,
   {
     return 0;
   }
+  // In a parallel run every process takes part in every collective step,
+  // even with an empty piece or bad input: failures are agreed on first.
+  const pcurv::ProcessGroup processes;
   const vtkIdType numberOfPoints = input->GetNumberOfPoints();
-  if (numberOfPoints == 0)
+  if (numberOfPoints == 0 && !processes.IsDistributed())
   {
     CopyGeometry(input, output);
     return 1;
   }
-
-  vtkDataArray* normalsArray = this->GetInputArrayToProcess(0, inputVector);
-  if (!normalsArray)
+  vtkDataArray* normals = this->GetInputArrayToProcess(0, inputVector);
+  if (!normals && this->NormalsNotChosen())
   {
-    vtkErrorMacro("No normals: the input needs a 3-component point-data normals array "
-                  "(the active normals, or one chosen with SetInputArrayToProcess).");
-    return 0;
+    normals = input->GetPointData()->GetNormals(); // ParaView's "no selection"
   }
-  if (normalsArray->GetNumberOfComponents() != 3 ||
-    normalsArray->GetNumberOfTuples() != numberOfPoints)
+  const bool normalsUsable = numberOfPoints == 0 || this->CheckNormals(normals, numberOfPoints);
+  if (!processes.Min(normalsUsable ? 1 : 0))
   {
-    vtkErrorMacro("The normals array '" << (normalsArray->GetName() ? normalsArray->GetName() : "")
-                                        << "' has " << normalsArray->GetNumberOfComponents()
-                                        << " components and " << normalsArray->GetNumberOfTuples()
-                                        << " tuples; 3 components per point are required.");
     return 0;
   }
 
-  CloudCoordinates cloud;
-  ReadCoordinates(input, cloud);
-  const std::vector<double> normals = ReadUnitNormals(normalsArray);
-
+  pcurv::CloudPoints cloud;
+  if (numberOfPoints > 0)
+  {
+    cloud.Read(input, normals);
+  }
   NeighborhoodRule rule;
-  rule.KNearest = this->NeighborhoodMode == K_NEAREST;
-  rule.K = this->NumberOfNeighbors;
-  rule.Ratio = this->PlaneDistanceRatio;
-  rule.Adjusted = this->DynamicAdjustment;
-  rule.BlockSize = this->AdjustmentBlockSize;
-  // The neighbour count the cloud's typical radius is measured for.
-  const int typicalCount =
-    rule.Adjusted ? static_cast<int>(this->TargetNeighborCounts[0]) : this->NumberOfNeighbors;
-  const bool needsTypicalRadius =
-    rule.Adjusted ? this->AutomaticLengthUnit : (this->AutomaticThresholds || rule.KNearest);
-  pcurv::PointGrid grid;
-  double typicalRadius = 0.0;
-  if (needsTypicalRadius)
-  {
-    // A first grid from a guess, to measure the spacing; rebuilt below with
-    // cells fitting the radius actually used.
-    BuildGrid(grid, cloud, GuessRadiusForNeighborCount(cloud, typicalCount));
-    typicalRadius = EstimateRadiusForNeighborCount(grid, cloud, typicalCount);
-  }
-  double cellRadius = typicalRadius;
+  double cellRadius = 0.0;
+  double reach = 0.0;
+  ChooseThresholds(this, cloud, processes, rule, cellRadius, reach);
   if (rule.Adjusted)
   {
-    pcurv::AdjustmentSettings& adjustment = rule.Adjustment;
-    adjustment.InitialSurroundingsThreshold = this->InitialSurroundingsThreshold;
-    std::copy(this->TargetNeighborCounts,
-      this->TargetNeighborCounts + 3,
-      adjustment.TargetNeighborCounts.begin());
-    std::copy(this->TargetPlaneDistances,
-      this->TargetPlaneDistances + 3,
-      adjustment.TargetPlaneDistances.begin());
-    std::copy(this->SwitchLengths, this->SwitchLengths + 3, adjustment.SwitchLengths.begin());
-    // Scale free: the initial s holds about the first target count.
-    adjustment.LengthUnit = this->AutomaticLengthUnit
-      ? typicalRadius / this->InitialSurroundingsThreshold
-      : this->LengthUnit;
-    this->UsedLengthUnit = adjustment.LengthUnit;
-    cellRadius = adjustment.LengthUnit * this->InitialSurroundingsThreshold;
-  }
-  else if (!this->AutomaticThresholds)
-  {
-    rule.PlaneDistance = this->PlaneDistanceThreshold;
-    rule.Radius = this->SurroundingsThreshold;
+    this->UsedLengthUnit = rule.Adjustment.LengthUnit;
   }
   else if (!rule.KNearest)
   {
-    rule.Radius = typicalRadius;
-    rule.PlaneDistance = this->PlaneDistanceRatio * rule.Radius;
-  }
-  if (!rule.Adjusted && !rule.KNearest)
-  {
     this->UsedSurroundingsThreshold = rule.Radius;
     this->UsedPlaneDistanceThreshold = rule.PlaneDistance;
-    cellRadius = rule.Radius;
   }
-  BuildGrid(grid, cloud, cellRadius);
+
+  const pcurv::GridLattice lattice = pcurv::GlobalLattice(cloud, processes, cellRadius);
+  if (processes.IsDistributed())
+  {
+    if (rule.KNearest)
+    {
+      reach = processes.Max(LargestLocalKthDistance(cloud, lattice, rule.K));
+    }
+    processes.ExchangeHalo(cloud, reach);
+  }
+  pcurv::PointGrid grid;
+  grid.Build(cloud.Coordinates.data(), cloud.GetNumberOfPoints(), lattice);
+  ProcessingOrder order;
+  if (rule.Adjusted)
+  {
+    order.MakeBlocks(grid, cloud, lattice, rule.BlockLength);
+  }
+  else
+  {
+    order.MakePointwise(grid, cloud);
+  }
 
   pcurv::FitSettings settings;
   settings.Mode = static_cast<pcurv::FitMode>(this->FitMode);
   settings.MinimumPointsPerDirection = this->MinimumPointsPerDirection;
-
   CurvatureArrays arrays(numberOfPoints);
   for (vtkIdType i = 0; i < numberOfPoints; ++i)
   {
-    if (!cloud.Good[i])
+    if (!cloud.FiniteInput[i])
     {
       arrays.Store(i, pcurv::PointCurvature{}, NaN, NaN);
     }
   }
-  EstimateWorker worker(this, cloud, normals, grid, rule, settings, arrays);
+  EstimateWorker worker(this, cloud, grid, order, rule, settings, arrays);
   const vtkIdType grain = rule.Adjusted ? 1 : 1024;
-  RunOnAllCores(this->NumberOfThreads,
-    [&]() { vtkSMPTools::For(0, worker.GetNumberOfItems(), grain, worker); });
+  RunOnAllCores(
+    this->NumberOfThreads, [&]() { vtkSMPTools::For(0, order.GetNumberOfItems(), grain, worker); });
   if (worker.WasAborted())
   {
     return 1;
@@ -618,10 +622,35 @@ int vtkPrincipalCurvatureEstimation::RequestData(vtkInformation*,
                        "or a bad coordinate or normal); they have Curvature_Valid = 0 and NaN "
                        "curvatures.");
   }
-
   CopyGeometry(input, output);
   arrays.AddTo(output->GetPointData());
   return 1;
+}
+
+bool vtkPrincipalCurvatureEstimation::NormalsNotChosen()
+{
+  vtkInformation* chosen = this->GetInputArrayInformation(0);
+  return chosen && chosen->Has(vtkDataObject::FIELD_NAME()) &&
+    std::string(chosen->Get(vtkDataObject::FIELD_NAME())).empty();
+}
+
+bool vtkPrincipalCurvatureEstimation::CheckNormals(vtkDataArray* normals, vtkIdType numberOfPoints)
+{
+  if (!normals)
+  {
+    vtkErrorMacro("No normals: the input needs a 3-component point-data normals array "
+                  "(the active normals, or one chosen with SetInputArrayToProcess).");
+    return false;
+  }
+  if (normals->GetNumberOfComponents() != 3 || normals->GetNumberOfTuples() != numberOfPoints)
+  {
+    vtkErrorMacro("The normals array '" << (normals->GetName() ? normals->GetName() : "")
+                                        << "' has " << normals->GetNumberOfComponents()
+                                        << " components and " << normals->GetNumberOfTuples()
+                                        << " tuples; 3 components per point are required.");
+    return false;
+  }
+  return true;
 }
 
 void vtkPrincipalCurvatureEstimation::PrintSelf(ostream& os, vtkIndent indent)
@@ -646,7 +675,8 @@ void vtkPrincipalCurvatureEstimation::PrintSelf(ostream& os, vtkIndent indent)
      << this->TargetPlaneDistances[1] << " " << this->TargetPlaneDistances[2] << "\n";
   os << indent << "SwitchLengths: " << this->SwitchLengths[0] << " " << this->SwitchLengths[1]
      << " " << this->SwitchLengths[2] << "\n";
-  os << indent << "AdjustmentBlockSize: " << this->AdjustmentBlockSize << "\n";
+  os << indent << "MaximumSurroundingsFactor: " << this->MaximumSurroundingsFactor << "\n";
+  os << indent << "AdjustmentBlockLength: " << this->AdjustmentBlockLength << "\n";
   os << indent << "UsedLengthUnit: " << this->UsedLengthUnit << "\n";
   os << indent << "UsedSurroundingsThreshold: " << this->UsedSurroundingsThreshold << "\n";
   os << indent << "UsedPlaneDistanceThreshold: " << this->UsedPlaneDistanceThreshold << "\n";

@@ -53,6 +53,8 @@
 #include "vtkPolyDataAlgorithm.h"
 #include "vtkPrincipalCurvatureFiltersModule.h" // for export macro
 
+class vtkDataArray;
+
 class VTKPRINCIPALCURVATUREFILTERS_EXPORT vtkPrincipalCurvatureEstimation
   : public vtkPolyDataAlgorithm
 {
@@ -171,10 +173,10 @@ public:
    * combinations as s shrinks or grows. When on, NeighborhoodMode,
    * AutomaticThresholds, SurroundingsThreshold and PlaneDistance* are
    * ignored. Points are processed in the neighbour grid's spatially coherent
-   * order, cut into blocks of AdjustmentBlockSize points that each start
+   * order, grouped into blocks (cells of a lattice in space) that each start
    * like the paper's first point (initial s, first targets, the first
-   * search repeated with the adjusted s): the block size, not the number of
-   * threads, decides the result. Default off.
+   * search repeated with the adjusted s): see AdjustmentBlockLength. Default
+   * off.
    */
   vtkSetMacro(DynamicAdjustment, bool);
   vtkGetMacro(DynamicAdjustment, bool);
@@ -217,10 +219,26 @@ public:
 
   ///@{
   /**
-   * Points per independently adjusted block. Default 256.
+   * The surroundings-threshold never grows beyond this factor times the
+   * initial one (the paper has no bound; without one a far sparser region
+   * would grow it without limit, and a parallel run must know how far a
+   * query can reach). Default 4.
    */
-  vtkSetClampMacro(AdjustmentBlockSize, int, 1, VTK_INT_MAX);
-  vtkGetMacro(AdjustmentBlockSize, int);
+  vtkSetClampMacro(MaximumSurroundingsFactor, double, 1.0, 1e6);
+  vtkGetMacro(MaximumSurroundingsFactor, double);
+  ///@}
+
+  ///@{
+  /**
+   * Side of the adjustment's blocks, in units of L (default 8: a block then
+   * holds about 500 points of a surface at the first target). Blocks are
+   * the cells of a lattice fixed in space; the points of a block are
+   * processed in the neighbour grid's order and each block starts afresh.
+   * The block length, not the number of threads or processes, decides the
+   * result.
+   */
+  vtkSetClampMacro(AdjustmentBlockLength, double, 1e-6, 1e6);
+  vtkGetMacro(AdjustmentBlockLength, double);
   ///@}
 
   ///@{
@@ -241,6 +259,11 @@ protected:
   ~vtkPrincipalCurvatureEstimation() override = default;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
+  /// True when the normals were chosen by an empty name (ParaView's
+  /// property before its array list is filled): the active normals are used.
+  bool NormalsNotChosen();
+  /// One error (and false) unless `normals` has 3 components per point.
+  bool CheckNormals(vtkDataArray* normals, vtkIdType numberOfPoints);
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   int FitMode = NEW02;
@@ -259,7 +282,8 @@ protected:
   double TargetNeighborCounts[3] = { 375.0, 750.0, 1500.0 };
   double TargetPlaneDistances[3] = { 0.1, 0.05, 0.025 };
   double SwitchLengths[3] = { 2.0, 1.0, 4.0 };
-  int AdjustmentBlockSize = 256;
+  double MaximumSurroundingsFactor = 4.0;
+  double AdjustmentBlockLength = 8.0;
 
   double UsedLengthUnit = 0.0;
   double UsedSurroundingsThreshold = 0.0;

@@ -7,6 +7,8 @@ cd "$(dirname "$0")/.."
 packages=(
   paraview-dev python3-paraview build-essential cmake
   libopenmpi-dev libdouble-conversion-dev libeigen3-dev python3-numpy
+  # parallel ParaView tests: mpiexec
+  openmpi-bin
   # the GUI test: ParaView under a virtual display, window control, capture, OCR
   xvfb xauth xdotool imagemagick tesseract-ocr tesseract-ocr-eng libqt5svg5
 )

@@ -8,6 +8,7 @@
 
 #include "AnalyticSurfaces.h"
 
+#include "vtkCellArray.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkNew.h"
@@ -47,6 +48,7 @@ inline vtkSmartPointer<vtkPolyData> MakeCloud(const std::vector<SurfaceSample>& 
   auto kMax = array("Exact_Maximum_Curvature", 1);
   auto dMax = array("Exact_Maximum_Direction", 3);
   auto boundary = array("Boundary_Distance", 1);
+  auto ids = array("Sample_Id", 1); // to match points across runs and splits
   for (vtkIdType i = 0; i < n; ++i)
   {
     const SurfaceSample& s = samples[i];
@@ -56,9 +58,19 @@ inline vtkSmartPointer<vtkPolyData> MakeCloud(const std::vector<SurfaceSample>& 
     kMax->SetValue(i, s.MaximumCurvature);
     dMax->SetTuple(i, s.MaximumDirection.data());
     boundary->SetValue(i, std::min(s.BoundaryDistance, 1e300));
+    ids->SetValue(i, static_cast<double>(i));
   }
   auto cloud = vtkSmartPointer<vtkPolyData>::New();
   cloud->SetPoints(points);
+  // One vertex cell per point: it renders, and ParaView's redistribution
+  // (which moves cells) can split it among processes.
+  vtkNew<vtkCellArray> vertices;
+  vertices->AllocateExact(n, n);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    vertices->InsertNextCell(1, &i);
+  }
+  cloud->SetVerts(vertices);
   cloud->GetPointData()->SetNormals(normals);
   for (vtkDataArray* a : { static_cast<vtkDataArray*>(kMin),
          static_cast<vtkDataArray*>(kMax),

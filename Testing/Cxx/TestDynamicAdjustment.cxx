@@ -170,12 +170,12 @@ void TestVaryingDensity(Checks& checks)
   checks.True("noisy neighbour count p95 <= 1.25 x 2500", largeResult.CountP95 <= 1.25 * 2500);
 }
 
-vtkSmartPointer<vtkPolyData> RunAdjusted(vtkPolyData* cloud, int threads, int blockSize = 256)
+vtkSmartPointer<vtkPolyData> RunAdjusted(vtkPolyData* cloud, int threads, double blockLength = 8.0)
 {
   vtkNew<vtkPrincipalCurvatureEstimation> filter;
   filter->DynamicAdjustmentOn();
   filter->SetNumberOfThreads(threads);
-  filter->SetAdjustmentBlockSize(blockSize);
+  filter->SetAdjustmentBlockLength(blockLength);
   filter->SetInputData(cloud);
   filter->Update();
   auto output = vtkSmartPointer<vtkPolyData>::New();
@@ -209,7 +209,7 @@ void TestThreadsAndScale(Checks& checks)
     std::snprintf(label, sizeof(label), "DVA %s identical with 1 and 2 threads", name);
     checks.True(label, SameArray(one, two, name));
   }
-  auto otherBlocks = RunAdjusted(cloud, 2, 1000);
+  auto otherBlocks = RunAdjusted(cloud, 2, 20.0);
   checks.True("the block size, not the threads, decides",
     !SameArray(one, otherBlocks, "Surroundings_Threshold"));
 
