@@ -223,7 +223,10 @@ def main(argv):
     curvatures.UpdatePipeline()
     seconds = time.perf_counter() - start
 
-    writer = simple.XMLPolyDataWriter(Input=curvatures, FileName=arguments.output)
+    # Inline binary, not the default appended data: ParaView 5.11 with a
+    # current Debian 12 libexpat (2.5.0-1+deb12u2 and later) cannot read
+    # appended data (VTK issue 19258).
+    writer = simple.XMLPolyDataWriter(Input=curvatures, FileName=arguments.output, DataMode="Binary")
     writer.UpdatePipeline()
     summarize(servermanager.Fetch(curvatures), seconds, arguments.fit_mode)
     print()

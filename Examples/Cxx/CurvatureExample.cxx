@@ -73,12 +73,16 @@ int main(int argc, char* argv[])
     meanMax += kMax->GetTuple1(i) / result->GetNumberOfPoints();
   }
   std::printf("%lld points, s = %g, mean k_min = %.6f, mean k_max = %.6f, not estimated: %lld\n",
-    static_cast<long long>(result->GetNumberOfPoints()), curvatures->GetUsedSurroundingsThreshold(),
-    meanMin, meanMax, static_cast<long long>(curvatures->GetNumberOfUnestimatedPoints()));
+    static_cast<long long>(result->GetNumberOfPoints()),
+    curvatures->GetUsedSurroundingsThreshold(),
+    meanMin,
+    meanMax,
+    static_cast<long long>(curvatures->GetNumberOfUnestimatedPoints()));
 
   if (argc > 2)
   {
     vtkNew<vtkXMLPolyDataWriter> writer;
+    writer->SetDataModeToBinary(); // readable with a current Debian 12 libexpat
     writer->SetInputData(result);
     writer->SetFileName(argv[2]);
     writer->Write();

@@ -98,8 +98,9 @@ int main(int argc, char* argv[])
   vtkNew<vtkXMLPolyDataWriter> writer;
   writer->SetInputData(pcurv::testing::MakeCloud(samples));
   writer->SetFileName(argv[3]);
-  writer->SetDataModeToAppended();
-  writer->SetCompressorTypeToNone();
+  // Inline binary, not appended: ParaView 5.11 on a current Debian 12
+  // (libexpat 2.5.0-1+deb12u2 and later) cannot read appended data.
+  writer->SetDataModeToBinary();
   if (!writer->Write())
   {
     std::fprintf(stderr, "could not write %s\n", argv[3]);

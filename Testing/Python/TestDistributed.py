@@ -46,6 +46,7 @@ def as_arrays(data):
 
 def write(data, path):
     writer = vtkXMLPolyDataWriter()
+    writer.SetDataModeToBinary()  # appended data: unreadable with Debian 12's current libexpat
     writer.SetInputData(data)
     writer.SetFileName(path)
     writer.Write()
