@@ -359,7 +359,9 @@ void PointCurvatureEstimator::AddNeighbors(const double* coordinates, std::size_
       mask = AllHalfPlanesMask(table, tx, ty, p);
       for (std::uint32_t rest = mask; rest; rest &= rest - 1)
       {
-        sums[__builtin_ctz(rest)].Add(h, squaredDistance);
+        const int direction = __builtin_ctz(rest);
+        sums[direction].Add(
+          h, squaredDistance, tx * table.Cos[direction] + ty * table.Sin[direction]);
       }
     }
     else
@@ -372,8 +374,12 @@ void PointCurvatureEstimator::AddNeighbors(const double* coordinates, std::size_
       const std::uint32_t inSector = InHalfPlane(table, sector, tx, ty, p);
       const std::uint32_t inNext = InHalfPlane(table, next, tx, ty, p);
       mask = (inSector << sector) | (inNext << next);
-      sums[sector].AddWeighted(static_cast<int>(inSector), h, squaredDistance);
-      sums[next].AddWeighted(static_cast<int>(inNext), h, squaredDistance);
+      sums[sector].AddWeighted(static_cast<int>(inSector),
+        h,
+        squaredDistance,
+        tx * table.Cos[sector] + ty * table.Sin[sector]);
+      sums[next].AddWeighted(
+        static_cast<int>(inNext), h, squaredDistance, tx * table.Cos[next] + ty * table.Sin[next]);
     }
     out[stored++] = Local{ h, squaredDistance, mask };
   }
@@ -388,7 +394,8 @@ void PointCurvatureEstimator::FitDirections(const FitSettings& settings)
   for (int i = 0; i < NumberOfDirections; ++i)
   {
     const CgaSums& sums = this->Sums[i];
-    if (sums.Count < settings.MinimumPointsPerDirection)
+    if (sums.Count < settings.MinimumPointsPerDirection ||
+      sums.Extent < settings.MinimumDirectionExtent) // lengths are in units of the scale
     {
       continue;
     }

@@ -15,6 +15,7 @@
 #ifndef PrincipalCurvatureCore_h
 #define PrincipalCurvatureCore_h
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -60,9 +61,12 @@ struct CgaSums
   double SumD = 0.0;
   double SumD2 = 0.0;
   int Count = 0;
+  /// Farthest reach of the direction's points along it (t . v_i).
+  double Extent = 0.0;
 
-  void Add(double h, double squaredDistance)
+  void Add(double h, double squaredDistance, double along = 0.0)
   {
+    this->Extent = std::max(this->Extent, along);
     this->SumH2 += h * h;
     this->SumH += h;
     this->SumHD += h * squaredDistance;
@@ -79,11 +83,14 @@ struct CgaSums
     this->SumD += other.SumD;
     this->SumD2 += other.SumD2;
     this->Count += other.Count;
+    this->Extent = std::max(this->Extent, other.Extent);
   }
 
-  /// Add(h, D) when weight is 1, nothing when it is 0, without a branch.
-  void AddWeighted(int weight, double h, double squaredDistance)
+  /// Add(h, D) when weight is 1, nothing when it is 0, without a branch;
+  /// `along` is the point's reach along the direction.
+  void AddWeighted(int weight, double h, double squaredDistance, double along)
   {
+    this->Extent = std::max(this->Extent, weight * along);
     const double w = weight;
     const double wh = w * h;
     const double whD = wh * squaredDistance;
@@ -166,6 +173,11 @@ struct FitSettings
 {
   FitMode Mode = FitMode::New02;
   int MinimumPointsPerDirection = 3;
+  /// A direction's points must reach this far along it, as a fraction of
+  /// the neighbourhood's size: points bunched near the query point (as
+  /// where there is no surface around it, e.g. points on a line) do not
+  /// determine a circle. Default 0.5.
+  double MinimumDirectionExtent = 0.5;
 };
 
 /**

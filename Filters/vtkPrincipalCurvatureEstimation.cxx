@@ -231,10 +231,15 @@ public:
 
   void Initialize() {}
 
+  /// With no more items than the grain, vtkSMPTools runs the functor in the
+  /// calling thread without a thread pool, and (VTK 9.2, STDThread)
+  /// GetSingleThread() then crashes: that one thread reports progress.
+  void SetRunsInline(bool runsInline) { this->RunsInline = runsInline; }
+
   void operator()(vtkIdType begin, vtkIdType end)
   {
     Scratch& scratch = this->PerThread.Local();
-    const bool reportsProgress = vtkSMPTools::GetSingleThread();
+    const bool reportsProgress = this->RunsInline || vtkSMPTools::GetSingleThread();
     for (vtkIdType item = begin; item < end; ++item)
     {
       if (this->Aborted.load(std::memory_order_relaxed))
@@ -375,6 +380,7 @@ private:
   CurvatureArrays& Out;
   vtkSMPThreadLocal<Scratch> PerThread;
   std::atomic<bool> Aborted{ false };
+  bool RunsInline = false;
 };
 
 /// The largest distance from an own point to its k-th nearest neighbour
@@ -603,6 +609,7 @@ int vtkPrincipalCurvatureEstimation::RequestData(vtkInformation*,
   }
   EstimateWorker worker(this, cloud, grid, order, rule, settings, arrays);
   const vtkIdType grain = rule.Adjusted ? 1 : 1024;
+  worker.SetRunsInline(order.GetNumberOfItems() <= grain);
   RunOnAllCores(
     this->NumberOfThreads, [&]() { vtkSMPTools::For(0, order.GetNumberOfItems(), grain, worker); });
   if (worker.WasAborted())

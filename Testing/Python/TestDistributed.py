@@ -19,18 +19,27 @@ import sys
 import numpy
 from paraview import servermanager, simple
 from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkIOXML import vtkXMLPolyDataReader, vtkXMLPolyDataWriter
+from vtkmodules.vtkIOXML import vtkXMLPolyDataReader, vtkXMLPolyDataWriter, vtkXMLPPolyDataReader
 
 ARRAYS = ("Minimum_Curvature", "Maximum_Curvature", "Neighbor_Count")
 VARIANTS = {"fixed": {}, "dva": {"DynamicAdjustment": 1}}
 
 
-def estimate(source, properties):
+def estimate(source, properties, path):
+    """Runs the filter; every rank writes its piece (inline binary) and the
+    pieces are read back on rank 0. Not servermanager.Fetch: with a current
+    Debian 12 libexpat, ParaView 5.11's gather silently drops the pieces of
+    the other ranks (it moves data as appended VTK XML; VTK issue 19258)."""
     factory = globals().get("PrincipalCurvatures") or simple.PrincipalCurvatures
     curvatures = factory(Input=source, **properties)
     curvatures.Normals = ["POINTS", "Normals"]
     tagged = simple.ProcessIdScalars(Input=curvatures)
-    return servermanager.Fetch(tagged)
+    writer = simple.XMLPPolyDataWriter(Input=tagged, FileName=path, DataMode="Binary")
+    writer.UpdatePipeline()
+    reader = vtkXMLPPolyDataReader()
+    reader.SetFileName(path)
+    reader.Update()
+    return reader.GetOutput()
 
 
 def as_arrays(data):
@@ -45,6 +54,7 @@ def as_arrays(data):
 
 
 def write(data, path):
+    """One .vtp, inline binary (appended data is unreadable here, see above)."""
     writer = vtkXMLPolyDataWriter()
     writer.SetDataModeToBinary()  # appended data: unreadable with Debian 12's current libexpat
     writer.SetInputData(data)
@@ -84,14 +94,16 @@ def main(plugin, cloud, action, prefix):
     reader.UpdatePipeline()
     if action == "--write-reference":
         for variant, properties in VARIANTS.items():
-            write(estimate(reader, properties), "%s_%s.vtp" % (prefix, variant))
+            write(estimate(reader, properties, "%s_%s_pieces.pvtp" % (prefix, variant)),
+                  "%s_%s.vtp" % (prefix, variant))
         return 0
     ranks = servermanager.vtkProcessModule.GetProcessModule().GetNumberOfLocalPartitions()
     redistributed = simple.RedistributeDataSet(Input=reader)
     failures = []
     for split, source in (("as read", reader), ("redistributed", redistributed)):
         for variant, properties in VARIANTS.items():
-            result = as_arrays(estimate(source, properties))
+            pieces = "%s_%d_%s_%s.pvtp" % (prefix, ranks, split.replace(" ", "_"), variant)
+            result = as_arrays(estimate(source, properties, pieces))
             label = "%d ranks, %s, %s" % (ranks, split, variant)
             if split == "redistributed" and result["processes"] != ranks:
                 failures.append("%s: points came from %d processes" % (label, result["processes"]))
