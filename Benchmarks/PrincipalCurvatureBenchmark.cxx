@@ -61,30 +61,18 @@ std::vector<long> ParseList(const char* text)
   return values;
 }
 
-/// Peak resident memory (kB) since the last reset, from /proc.
-long PeakKilobytes()
+/// A memory figure (kB) from /proc/self/status: "VmHWM" (peak resident
+/// since the last reset) or "VmRSS" (resident now).
+long StatusKilobytes(const char* field)
 {
   std::ifstream status("/proc/self/status");
   std::string line;
+  const std::string prefix = std::string(field) + ":";
   while (std::getline(status, line))
   {
-    if (line.rfind("VmHWM:", 0) == 0)
+    if (line.rfind(prefix, 0) == 0)
     {
-      return std::atol(line.c_str() + 6);
-    }
-  }
-  return -1;
-}
-
-long ResidentKilobytes()
-{
-  std::ifstream status("/proc/self/status");
-  std::string line;
-  while (std::getline(status, line))
-  {
-    if (line.rfind("VmRSS:", 0) == 0)
-    {
-      return std::atol(line.c_str() + 6);
+      return std::atol(line.c_str() + prefix.size());
     }
   }
   return -1;
@@ -391,12 +379,12 @@ int main(int argc, char* argv[])
           filter->SetInputData(cloud);
           filter->SetFitMode(mode);
           filter->SetNumberOfThreads(static_cast<int>(threads));
-          before = ResidentKilobytes();
+          before = StatusKilobytes("VmRSS");
           ResetPeak();
           const auto start = Clock::now();
           filter->Update();
           times.push_back(Seconds(start));
-          peak = PeakKilobytes() - before;
+          peak = StatusKilobytes("VmHWM") - before;
           errors = pcurv::testing::MeasureErrors(filter->GetOutput());
           bytes = ArrayBytes(filter->GetOutput()) + 2 * 24L * n; // + the input's points and normals
           s = filter->GetUsedSurroundingsThreshold();

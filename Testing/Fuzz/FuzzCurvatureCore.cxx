@@ -120,11 +120,11 @@ void CheckEstimate(Bytes& in)
   {
     return;
   }
-  Require(std::isfinite(r.MinimumCurvature) && std::isfinite(r.MaximumCurvature), "finite curvatures");
+  Require(
+    std::isfinite(r.MinimumCurvature) && std::isfinite(r.MaximumCurvature), "finite curvatures");
   Require(r.MaximumCurvature >= r.MinimumCurvature, "max >= min");
-  auto dot = [](const pcurv::Vector3& a, const pcurv::Vector3& b) {
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-  };
+  auto dot = [](const pcurv::Vector3& a, const pcurv::Vector3& b)
+  { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
   Require(std::fabs(dot(r.MinimumDirection, r.MinimumDirection) - 1.0) < 1e-9, "unit d_min");
   Require(std::fabs(dot(r.MaximumDirection, r.MaximumDirection) - 1.0) < 1e-9, "unit d_max");
   Require(std::fabs(dot(r.MaximumDirection, r.MinimumDirection)) < 1e-9, "d_min . d_max = 0");
@@ -175,7 +175,8 @@ void CheckGrid(Bytes& in)
   std::size_t expected = 0;
   for (int i = 0; i < count; ++i)
   {
-    const double dx = points[3 * i] - x[0], dy = points[3 * i + 1] - x[1], dz = points[3 * i + 2] - x[2];
+    const double dx = points[3 * i] - x[0], dy = points[3 * i + 1] - x[1],
+                 dz = points[3 * i + 2] - x[2];
     expected += dx * dx + dy * dy + dz * dz < radius * radius;
   }
   Require(found.size() == 3 * expected, "grid finds what a scan finds");
@@ -191,7 +192,8 @@ void CheckAdjustment(Bytes& in)
     const double p = adjustment.Adjust(in.Byte() * in.Byte());
     Require(std::isfinite(p) && p > 0.0, "p finite, positive");
     const double s = adjustment.GetSurroundingsThreshold();
-    Require(std::isfinite(s) && s > 0.0 && s <= 16.0 * settings.LengthUnit * (1 + 1e-12), "s bounded");
+    Require(
+      std::isfinite(s) && s > 0.0 && s <= 16.0 * settings.LengthUnit * (1 + 1e-12), "s bounded");
     Require(adjustment.GetLevel() >= 0 && adjustment.GetLevel() <= 2, "level in range");
   }
 }
