@@ -171,7 +171,7 @@ void PrincipalCurvaturesFromSine(const SineFit& fit,
 /// Settings of the per-point estimate that do not change between points.
 struct FitSettings
 {
-  FitMode Mode = FitMode::New02;
+  FitMode Mode = FitMode::New01;
   int MinimumPointsPerDirection = 3;
   /// A direction's points must reach this far along it, as a fraction of
   /// the neighbourhood's size: points bunched near the query point (as

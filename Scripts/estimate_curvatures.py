@@ -34,7 +34,7 @@ def parse_arguments(argv):
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("input", help="point cloud with normals (.vtp .vtu .ply .xyz .pwn .txt .csv)")
     parser.add_argument("output", help="result (.vtp)")
-    parser.add_argument("--fit-mode", choices=["Previous", "New01", "New02"], default="New02")
+    parser.add_argument("--fit-mode", choices=["Previous", "New01", "New02"], default="New01")
     parser.add_argument("--neighbors", type=int, help="target neighbour count (automatic radius) or k")
     parser.add_argument("--k-nearest", action="store_true", help="use the k nearest neighbours")
     parser.add_argument("--radius", type=float, help="fixed surroundings-threshold s (turns automatic off)")

@@ -22,7 +22,7 @@ def main(argv):
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("input")
     parser.add_argument("output", help="picture (.png)")
-    parser.add_argument("--fit-mode", choices=["Previous", "New01", "New02"], default="New02")
+    parser.add_argument("--fit-mode", choices=["Previous", "New01", "New02"], default="New01")
     parser.add_argument("--color", default="Mean_Curvature", help="array to colour by")
     parser.add_argument("--glyph-every", type=int, default=6, help="a glyph on every n-th point")
     parser.add_argument("--view", default="0,0,1", help="camera direction towards the object, x,y,z")

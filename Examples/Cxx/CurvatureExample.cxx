@@ -60,7 +60,7 @@ int main(int argc, char* argv[])
 
   vtkNew<vtkPrincipalCurvatureEstimation> curvatures;
   curvatures->SetInputData(cloud); // the active normals are used by default
-  curvatures->SetFitModeToNew02();
+  curvatures->SetFitModeToNew01();
   curvatures->Update();
   vtkPolyData* result = curvatures->GetOutput();
 
