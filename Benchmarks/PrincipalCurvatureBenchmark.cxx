@@ -420,7 +420,8 @@ int main(int argc, char* argv[])
           std::printf("  New01 speed-up 1 -> %ld threads: %.2fx\n", threads, singleNew01 / t);
       }
     }
-    MeasurePhases(cloud, s, p, options.Runs, csv, n);
+    if (n <= 200000) // phases are proportions: measured where they are quick
+      MeasurePhases(cloud, s, p, options.Runs, csv, n);
     if (n == options.Sizes.front())
       MeasureFitsAlone(cloud, s, p);
 #ifdef PCURV_WITH_CGAL
