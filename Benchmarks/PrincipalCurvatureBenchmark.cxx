@@ -172,8 +172,8 @@ void MeasurePhases(vtkPolyData* cloud, double s, double p, int runs, std::FILE* 
       checksum += neighbors.size();
     }
     search.push_back(Seconds(start));
-    start = Clock::now();
-    for (vtkIdType j = 0; j < count; ++j)
+    // Search, then binning and sums, of the j-th point in grid order.
+    auto accumulate = [&](vtkIdType j)
     {
       const vtkIdType i = grid.GetSortedId(j);
       const double* x = &flat.Points[3 * i];
@@ -181,6 +181,11 @@ void MeasurePhases(vtkPolyData* cloud, double s, double p, int runs, std::FILE* 
       grid.GatherWithinRadius(x, s, neighbors);
       estimator.Begin({ { x[0], x[1], x[2] } }, { { nn[0], nn[1], nn[2] } }, p, s);
       estimator.AddNeighbors(neighbors.data(), neighbors.size() / 3);
+    };
+    start = Clock::now();
+    for (vtkIdType j = 0; j < count; ++j)
+    {
+      accumulate(j);
     }
     binning.push_back(Seconds(start));
     for (int mode = 0; mode < 3; ++mode)
@@ -190,12 +195,7 @@ void MeasurePhases(vtkPolyData* cloud, double s, double p, int runs, std::FILE* 
       start = Clock::now();
       for (vtkIdType j = 0; j < count; ++j)
       {
-        const vtkIdType i = grid.GetSortedId(j);
-        const double* x = &flat.Points[3 * i];
-        const double* nn = &flat.Normals[3 * i];
-        grid.GatherWithinRadius(x, s, neighbors);
-        estimator.Begin({ { x[0], x[1], x[2] } }, { { nn[0], nn[1], nn[2] } }, p, s);
-        estimator.AddNeighbors(neighbors.data(), neighbors.size() / 3);
+        accumulate(j);
         checksum += estimator.Estimate(settings).MaximumCurvature;
       }
       full[mode].push_back(Seconds(start));
