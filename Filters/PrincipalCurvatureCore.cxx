@@ -314,7 +314,6 @@ void PointCurvatureEstimator::Begin(const Vector3& point,
 {
   this->Point = point;
   this->Frame = MakeTangentFrame(unitNormal);
-  this->Scale = scale;
   this->InverseScale = scale > 0.0 && std::isfinite(scale) ? 1.0 / scale : 0.0;
   this->ScaledPlaneDistance = planeDistance * this->InverseScale;
   this->Neighbors.clear();

@@ -213,17 +213,6 @@ public:
   /// direction and a sine over the directions.
   PointCurvature Estimate(const FitSettings& settings);
 
-  /// Paper-sign curvature of each direction and whether it is valid, from
-  /// the last Estimate() call (for tests and diagnostics).
-  const std::array<double, NumberOfDirections>& GetDirectionCurvatures() const
-  {
-    return this->DirectionCurvature;
-  }
-  const std::array<bool, NumberOfDirections>& GetDirectionValid() const
-  {
-    return this->DirectionValid;
-  }
-
   /// Bit i is set when a neighbour at tangent coordinates (tx, ty) belongs
   /// to direction i for the plane-distance-threshold p: t . v_i > 0 and
   /// |t . (n x v_i)| < p. Binned by polar angle: only the few directions
@@ -249,7 +238,6 @@ private:
 
   Vector3 Point{ { 0.0, 0.0, 0.0 } };
   TangentFrame Frame{};
-  double Scale = 0.0;
   double InverseScale = 0.0;
   double ScaledPlaneDistance = 0.0;
   std::vector<Local> Neighbors;
