@@ -1,68 +1,482 @@
-// Benchmark of vtkPrincipalCurvatureEstimation: whole filter per fit mode,
-// size and thread count; phases measured in-process with the core on
-// identical neighbourhoods; the paper's fit-time claim; peak memory;
-// accuracy; and CGAL's jet fitting (Monge_via_jet_fitting, degree 2) on the
-// same neighbourhoods as a peer. A program, not a test: medians of several
-// runs, ratios, printed as tables (and CSV with --csv FILE).
+// Benchmark of vtkPrincipalCurvatureEstimation (a program, not a test).
 //
-//   PrincipalCurvatureBenchmark [--sizes 10000,100000,1000000] [--runs 5]
-//     [--threads 1,2] [--peer-points 20000] [--no-peer] [--csv FILE]
+// On analytic clouds with exact normals and curvatures (a torus by default),
+// for each fit mode (Previous, New01, New02), size and thread count:
+//  - the wall time of the whole filter's Update(), points per second,
+//    accuracy (MeasureErrors), peak memory (in a fresh child process:
+//    VmHWM over the resident size before the update) against the size of
+//    the input and output arrays;
+//  - phases measured in-process with the numeric core on the filter's own
+//    neighbourhoods (same radius, same grid lattice, same order): grid
+//    build, neighbour search, binning and sums, circle fits, sine fit;
+//  - the paper's timing claim: the three fits timed alone on identical
+//    per-direction CGA sums collected once;
+//  - the peer: CGAL's Monge_via_jet_fitting (degree 2, Monge degree 2) on
+//    the same neighbourhoods, one core, scored the same way.
+// Medians of several runs and ratios are printed as tables on stdout
+// (progress goes to stderr) and, with --csv FILE, as CSV (one measurement
+// a line) for plot_benchmark.py.
 #include "AnalyticClouds.h"
 #include "PointGrid.h"
 #include "PrincipalCurvatureCore.h"
 #include "vtkPrincipalCurvatureEstimation.h"
-
-#include "vtkDataArray.h"
-#include "vtkPointData.h"
-#include "vtkPolyData.h"
-
 #ifdef PCURV_WITH_CGAL
-#include <CGAL/Monge_via_jet_fitting.h>
-#include <CGAL/Simple_cartesian.h>
+#include "CgalJetPeer.h"
 #endif
 
+#include "vtkDataArray.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+
 #include <malloc.h>
+#include <sys/resource.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
+#include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <limits>
+#include <map>
 #include <sstream>
 #include <string>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 namespace
 {
 using Clock = std::chrono::steady_clock;
-const char* ModeNames[] = { "Previous", "New01", "New02" };
+const char* const ModeNames[3] = { "Previous", "New01", "New02" };
+constexpr double NaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double Pi = 3.14159265358979323846;
 
-double Seconds(Clock::time_point start)
+const char* const Usage =
+  "usage: PrincipalCurvatureBenchmark [options]\n"
+  "  --sizes 10000,100000,1000000  cloud sizes (points)\n"
+  "  --runs 5                      runs per measurement (medians are reported)\n"
+  "  --modes 0,1,2                 fit modes: 0 Previous, 1 New01, 2 New02 (or names)\n"
+  "  --threads 1,2                 thread counts of the whole-filter runs\n"
+  "  --surface torus               torus (R 3, r 1), sphere (r 1) or ellipsoid (3, 2, 1)\n"
+  "  --phase-points 200000         query points of the phase timing; larger clouds: that\n"
+  "                                many points in 16 spread blocks of the grid order,\n"
+  "                                times extrapolated per point\n"
+  "  --fit-points 20000            points whose direction sums are collected for the\n"
+  "                                fits-alone timing (the paper's claim)\n"
+  "  --peer-points 20000           query points of the CGAL peer (extrapolated per point)\n"
+  "  --no-peer                     skip CGAL's jet fitting\n"
+  "  --no-phases                   skip the phase, fits-alone and peer timings\n"
+  "  --no-memory                   skip the peak-memory child processes\n"
+  "  --csv FILE                    also write every measurement as CSV\n";
+
+double Seconds(Clock::time_point start, Clock::time_point end)
 {
-  return std::chrono::duration<double>(Clock::now() - start).count();
+  return std::chrono::duration<double>(end - start).count();
+}
+
+/// User + system CPU time of the whole process (all threads), seconds.
+double ProcessCpuSeconds()
+{
+  struct rusage usage
+  {
+  };
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_utime.tv_sec + usage.ru_stime.tv_sec +
+    1e-6 * (usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+}
+
+/// The first three fields of /proc/loadavg: how busy the shared machine was.
+std::string LoadAverage()
+{
+  std::ifstream file("/proc/loadavg");
+  std::string one, five, fifteen;
+  file >> one >> five >> fifteen;
+  return one + " " + five + " " + fifteen;
 }
 
 double Median(std::vector<double> values)
 {
+  if (values.empty())
+  {
+    return NaN;
+  }
   std::sort(values.begin(), values.end());
-  return values.empty() ? 0.0 : values[values.size() / 2];
+  const std::size_t n = values.size();
+  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
 }
 
-std::vector<long> ParseList(const char* text)
+double Smallest(const std::vector<double>& values)
 {
-  std::vector<long> values;
+  return values.empty() ? NaN : *std::min_element(values.begin(), values.end());
+}
+
+double Largest(const std::vector<double>& values)
+{
+  return values.empty() ? NaN : *std::max_element(values.begin(), values.end());
+}
+
+std::vector<std::string> Split(const std::string& text)
+{
+  std::vector<std::string> items;
   std::stringstream stream(text);
   std::string item;
   while (std::getline(stream, item, ','))
   {
-    values.push_back(std::atol(item.c_str()));
+    if (!item.empty())
+    {
+      items.push_back(item);
+    }
   }
-  return values;
+  return items;
 }
 
-/// A memory figure (kB) from /proc/self/status: "VmHWM" (peak resident
-/// since the last reset) or "VmRSS" (resident now).
+/// printf into a std::string.
+template<typename... Args>
+std::string Format(const char* format, Args... args)
+{
+  const int length = std::snprintf(nullptr, 0, format, args...);
+  std::string text(static_cast<std::size_t>(std::max(length, 0)) + 1, '\0');
+  std::snprintf(&text[0], text.size(), format, args...);
+  text.resize(text.size() - 1);
+  return text;
+}
+
+/// A duration or other positive value with about three significant digits.
+std::string Short(double value)
+{
+  if (!std::isfinite(value))
+  {
+    return "n/a";
+  }
+  const double magnitude = std::fabs(value);
+  if (magnitude >= 100.0)
+    return Format("%.0f", value);
+  if (magnitude >= 10.0)
+    return Format("%.1f", value);
+  if (magnitude >= 1.0)
+    return Format("%.2f", value);
+  if (magnitude >= 0.1)
+    return Format("%.3f", value);
+  return Format("%.4f", value);
+}
+
+std::string Ratio(double value)
+{
+  if (!std::isfinite(value))
+  {
+    return "n/a";
+  }
+  return value < 0.1 ? Format("%.3fx", value) : Format("%.2fx", value);
+}
+
+/// 1234567 -> "1,234,567".
+std::string Grouped(double value)
+{
+  if (!std::isfinite(value))
+  {
+    return "n/a";
+  }
+  std::string digits = Format("%.0f", value);
+  for (int at = static_cast<int>(digits.size()) - 3; at > 0 && digits[at - 1] != '-'; at -= 3)
+  {
+    digits.insert(static_cast<std::size_t>(at), ",");
+  }
+  return digits;
+}
+
+/// 1000000 -> "1M", 20000 -> "20k".
+std::string SizeName(long n)
+{
+  if (n >= 1000000 && n % 1000000 == 0)
+    return Format("%ldM", n / 1000000);
+  if (n >= 1000 && n % 1000 == 0)
+    return Format("%ldk", n / 1000);
+  return Format("%ld", n);
+}
+
+/// An aligned Markdown table: readable in a terminal, pasted as is.
+class Table
+{
+public:
+  explicit Table(std::vector<std::string> header)
+    : Header(std::move(header))
+  {
+  }
+
+  void Add(std::vector<std::string> row)
+  {
+    row.resize(this->Header.size());
+    this->Rows.push_back(std::move(row));
+  }
+
+  void Print(const std::string& title, const std::string& note = "") const
+  {
+    std::vector<std::size_t> widths;
+    for (const std::string& cell : this->Header)
+    {
+      widths.push_back(cell.size());
+    }
+    for (const auto& row : this->Rows)
+    {
+      for (std::size_t c = 0; c < row.size(); ++c)
+      {
+        widths[c] = std::max(widths[c], row[c].size());
+      }
+    }
+    auto line = [&](const std::vector<std::string>& cells)
+    {
+      std::string text = "|";
+      for (std::size_t c = 0; c < cells.size(); ++c)
+      {
+        text += " " + cells[c] + std::string(widths[c] - cells[c].size(), ' ') + " |";
+      }
+      std::printf("%s\n", text.c_str());
+    };
+    std::printf("\n### %s\n\n", title.c_str());
+    line(this->Header);
+    std::vector<std::string> rule;
+    for (const std::size_t width : widths)
+    {
+      rule.push_back(std::string(width, '-'));
+    }
+    line(rule);
+    for (const auto& row : this->Rows)
+    {
+      line(row);
+    }
+    if (!note.empty())
+    {
+      std::printf("\n%s\n", note.c_str());
+    }
+    std::fflush(stdout);
+  }
+
+private:
+  std::vector<std::string> Header;
+  std::vector<std::vector<std::string>> Rows;
+};
+
+/// One measurement a line: section,surface,points,mode,threads,metric,value,unit,note.
+class CsvFile
+{
+public:
+  bool Open(const std::string& path, const std::string& surface)
+  {
+    this->Surface = surface;
+    this->File = std::fopen(path.c_str(), "w");
+    if (this->File)
+    {
+      std::fprintf(this->File, "section,surface,points,mode,threads,metric,value,unit,note\n");
+    }
+    return this->File != nullptr;
+  }
+
+  ~CsvFile()
+  {
+    if (this->File)
+    {
+      std::fclose(this->File);
+    }
+  }
+
+  void Row(const char* section,
+    long points,
+    const std::string& mode,
+    long threads,
+    const char* metric,
+    double value,
+    const char* unit,
+    const std::string& note = "")
+  {
+    if (this->File)
+    {
+      std::fprintf(this->File,
+        "%s,%s,%ld,%s,%ld,%s,%.9g,%s,%s\n",
+        section,
+        this->Surface.c_str(),
+        points,
+        mode.c_str(),
+        threads,
+        metric,
+        value,
+        unit,
+        note.c_str());
+      std::fflush(this->File);
+    }
+  }
+
+private:
+  std::FILE* File = nullptr;
+  std::string Surface;
+};
+
+struct Options
+{
+  std::vector<long> Sizes{ 10000, 100000, 1000000 };
+  std::vector<long> Threads{ 1, 2 };
+  std::vector<int> Modes{ 0, 1, 2 };
+  int Runs = 5;
+  std::string Surface = "torus";
+  long PhasePoints = 200000;
+  long FitPoints = 20000;
+  long PeerPoints = 20000;
+  bool Peer = true;
+  bool Phases = true;
+  bool Memory = true;
+  bool MemoryProbe = false; // internal: this process is the memory child
+  std::string Csv;
+};
+
+[[noreturn]] void Fail(const std::string& message)
+{
+  std::fprintf(stderr, "%s\n%s", message.c_str(), Usage);
+  std::exit(2);
+}
+
+long ParsePositive(const std::string& text, const std::string& option)
+{
+  char* end = nullptr;
+  const long value = std::strtol(text.c_str(), &end, 10);
+  if (text.empty() || *end != '\0' || value <= 0)
+  {
+    Fail("bad value '" + text + "' for " + option);
+  }
+  return value;
+}
+
+Options Parse(int argc, char* argv[])
+{
+  Options o;
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string a = argv[i];
+    auto next = [&]() -> std::string
+    {
+      if (i + 1 >= argc)
+      {
+        Fail("missing value after " + a);
+      }
+      return argv[++i];
+    };
+    auto list = [&]()
+    {
+      std::vector<long> values;
+      for (const std::string& item : Split(next()))
+      {
+        values.push_back(ParsePositive(item, a));
+      }
+      if (values.empty())
+      {
+        Fail("empty list after " + a);
+      }
+      return values;
+    };
+    if (a == "--sizes")
+      o.Sizes = list();
+    else if (a == "--threads")
+      o.Threads = list();
+    else if (a == "--modes")
+    {
+      o.Modes.clear();
+      for (const std::string& item : Split(next()))
+      {
+        int mode = -1;
+        for (int m = 0; m < 3; ++m)
+        {
+          if (item == ModeNames[m] || item == std::to_string(m))
+          {
+            mode = m;
+          }
+        }
+        if (mode < 0)
+        {
+          Fail("unknown fit mode '" + item + "'");
+        }
+        if (std::find(o.Modes.begin(), o.Modes.end(), mode) == o.Modes.end())
+        {
+          o.Modes.push_back(mode);
+        }
+      }
+      if (o.Modes.empty())
+      {
+        Fail("no fit mode given");
+      }
+      std::sort(o.Modes.begin(), o.Modes.end());
+    }
+    else if (a == "--runs")
+      o.Runs = static_cast<int>(ParsePositive(next(), a));
+    else if (a == "--surface")
+      o.Surface = next();
+    else if (a == "--phase-points")
+      o.PhasePoints = ParsePositive(next(), a);
+    else if (a == "--fit-points")
+      o.FitPoints = ParsePositive(next(), a);
+    else if (a == "--peer-points")
+      o.PeerPoints = ParsePositive(next(), a);
+    else if (a == "--no-peer")
+      o.Peer = false;
+    else if (a == "--no-phases")
+      o.Phases = false;
+    else if (a == "--no-memory")
+      o.Memory = false;
+    else if (a == "--memory-probe")
+      o.MemoryProbe = true;
+    else if (a == "--csv")
+      o.Csv = next();
+    else if (a == "--help" || a == "-h")
+    {
+      std::printf("%s", Usage);
+      std::exit(0);
+    }
+    else
+      Fail("unknown option " + a);
+  }
+  if (o.Surface != "torus" && o.Surface != "sphere" && o.Surface != "ellipsoid")
+  {
+    Fail("unknown surface " + o.Surface);
+  }
+  std::sort(o.Sizes.begin(), o.Sizes.end());
+  std::sort(o.Threads.begin(), o.Threads.end());
+  return o;
+}
+
+pcurv::testing::Surface MakeSurface(const std::string& name)
+{
+  if (name == "sphere")
+    return pcurv::testing::Sphere(1.0);
+  if (name == "ellipsoid")
+    return pcurv::testing::Ellipsoid(3.0, 2.0, 1.0);
+  return pcurv::testing::Torus(3.0, 1.0);
+}
+
+std::string SurfaceDescription(const std::string& name)
+{
+  if (name == "sphere")
+    return "sphere r = 1";
+  if (name == "ellipsoid")
+    return "ellipsoid 3 x 2 x 1";
+  return "torus R = 3, r = 1";
+}
+
+vtkSmartPointer<vtkPolyData> MakeBenchmarkCloud(const std::string& surface, long n)
+{
+  return pcurv::testing::MakeCloud(
+    pcurv::testing::Sample(MakeSurface(surface), static_cast<int>(n), 1));
+}
+
+// ---------------------------------------------------------------------------
+// Memory
+
+/// A figure (kB) from /proc/self/status: VmHWM (peak resident since the
+/// last reset) or VmRSS (resident now); -1 when unavailable.
 long StatusKilobytes(const char* field)
 {
   std::ifstream status("/proc/self/status");
@@ -78,358 +492,1390 @@ long StatusKilobytes(const char* field)
   return -1;
 }
 
-void ResetPeak()
+double ArrayBytes(vtkDataArray* array)
 {
-  malloc_trim(0); // give freed memory back, so that the peak counts new allocations
-  std::ofstream("/proc/self/clear_refs") << "5"; // resets VmHWM to the current RSS
+  return array ? 1024.0 * static_cast<double>(array->GetActualMemorySize()) : 0.0;
 }
 
-long ArrayBytes(vtkPolyData* data)
+/// The child process: one cloud, one Update(), VmHWM against VmRSS just
+/// before it. A fresh process, because in a long-running one the allocator
+/// keeps freed memory resident and a later run reuses it unseen.
+int RunMemoryProbe(const Options& options)
 {
-  long bytes = data->GetPoints()->GetData()->GetActualMemorySize() * 1024L;
-  for (int i = 0; i < data->GetPointData()->GetNumberOfArrays(); ++i)
+  vtkSmartPointer<vtkPolyData> cloud = MakeBenchmarkCloud(options.Surface, options.Sizes[0]);
+  vtkNew<vtkPrincipalCurvatureEstimation> filter;
+  filter->SetInputData(cloud);
+  filter->SetFitMode(options.Modes[0]);
+  filter->SetNumberOfThreads(static_cast<int>(options.Threads[0]));
+  malloc_trim(0);
+  bool reset = false;
   {
-    bytes += data->GetPointData()->GetArray(i)->GetActualMemorySize() * 1024L;
+    std::ofstream clear("/proc/self/clear_refs");
+    clear << "5"; // resets VmHWM to the current resident size
+    clear.flush();
+    reset = clear.good();
   }
-  return bytes;
+  const long baseline = StatusKilobytes("VmRSS");
+  filter->Update();
+  const long peak = StatusKilobytes("VmHWM");
+  struct rusage usage
+  {
+  };
+  getrusage(RUSAGE_SELF, &usage);
+  // Input: what the filter reads (points, normals). Output: the arrays it
+  // creates (the input's arrays and points are passed through, shared).
+  vtkPolyData* output = filter->GetOutput();
+  const double input =
+    ArrayBytes(cloud->GetPoints()->GetData()) + ArrayBytes(cloud->GetPointData()->GetNormals());
+  double created = 0.0;
+  for (int a = 0; a < output->GetPointData()->GetNumberOfArrays(); ++a)
+  {
+    vtkDataArray* array = output->GetPointData()->GetArray(a);
+    bool passed = false;
+    for (int b = 0; b < cloud->GetPointData()->GetNumberOfArrays(); ++b)
+    {
+      passed = passed || cloud->GetPointData()->GetArray(b) == array;
+    }
+    created += passed ? 0.0 : ArrayBytes(array);
+  }
+  std::printf("PCURV_MEMORY %ld %ld %ld %.0f %.0f %d\n",
+    baseline,
+    peak,
+    static_cast<long>(usage.ru_maxrss),
+    input,
+    created,
+    reset ? 1 : 0);
+  return 0;
 }
 
-struct Options
+struct MemoryRecord
 {
-  std::vector<long> Sizes{ 10000, 100000, 1000000 };
-  std::vector<long> Threads{ 1, 2 };
-  int Runs = 5;
-  long PeerPoints = 20000;
-  bool Peer = true;
-  std::string Csv;
+  bool Valid = false;
+  double BaselineMB = NaN; // resident before the update (the input cloud, libraries)
+  double ExtraMB = NaN;    // peak resident during the update, over the baseline
+  double ProcessPeakMB = NaN;
+  double InputMB = NaN;  // points + normals
+  double OutputMB = NaN; // arrays created by the filter
+  double RatioToArrays() const { return this->ExtraMB / (this->InputMB + this->OutputMB); }
 };
 
-Options Parse(int argc, char* argv[])
+std::string ExecutablePath()
 {
-  Options o;
-  for (int i = 1; i < argc; ++i)
+  char path[4096];
+  const ssize_t length = readlink("/proc/self/exe", path, sizeof(path) - 1);
+  if (length <= 0)
   {
-    const std::string a = argv[i];
-    auto next = [&]() { return i + 1 < argc ? argv[++i] : ""; };
-    if (a == "--sizes")
-      o.Sizes = ParseList(next());
-    else if (a == "--threads")
-      o.Threads = ParseList(next());
-    else if (a == "--runs")
-      o.Runs = std::max(1, std::atoi(next()));
-    else if (a == "--peer-points")
-      o.PeerPoints = std::atol(next());
-    else if (a == "--no-peer")
-      o.Peer = false;
-    else if (a == "--csv")
-      o.Csv = next();
-    else
-    {
-      std::fprintf(stderr, "unknown option %s\n", a.c_str());
-      std::exit(2);
-    }
+    return "";
   }
-  return o;
+  path[length] = '\0';
+  return path;
 }
 
-/// Coordinates and normals of a cloud as flat arrays (for the core).
-struct Flat
+MemoryRecord ProbeMemory(const Options& options, long n, int mode, long threads)
 {
-  std::vector<double> Points, Normals;
-  explicit Flat(vtkPolyData* cloud)
+  MemoryRecord record;
+  const std::string executable = ExecutablePath();
+  if (executable.empty())
   {
-    const vtkIdType n = cloud->GetNumberOfPoints();
-    this->Points.resize(3 * n);
-    this->Normals.resize(3 * n);
+    return record;
+  }
+  const std::string command = "'" + executable + "' --memory-probe --surface " + options.Surface +
+    " --sizes " + std::to_string(n) + " --modes " + std::to_string(mode) + " --threads " +
+    std::to_string(threads) + " 2>/dev/null";
+  std::FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe)
+  {
+    return record;
+  }
+  char line[512];
+  while (std::fgets(line, sizeof(line), pipe))
+  {
+    long baseline = 0, peak = 0, maxrss = 0;
+    double input = 0.0, created = 0.0;
+    int reset = 0;
+    if (std::sscanf(line,
+          "PCURV_MEMORY %ld %ld %ld %lf %lf %d",
+          &baseline,
+          &peak,
+          &maxrss,
+          &input,
+          &created,
+          &reset) == 6 &&
+      reset == 1 && baseline > 0 && peak > 0)
+    {
+      record.Valid = true;
+      record.BaselineMB = baseline / 1024.0;
+      record.ExtraMB = (peak - baseline) / 1024.0;
+      record.ProcessPeakMB = maxrss / 1024.0;
+      record.InputMB = input / 1048576.0;
+      record.OutputMB = created / 1048576.0;
+    }
+  }
+  pclose(pipe);
+  return record;
+}
+
+// ---------------------------------------------------------------------------
+// The whole filter
+
+struct FilterRecord
+{
+  std::vector<double> Times;
+  std::vector<double> Utilisation; // CPU time / (wall time x threads)
+  pcurv::testing::CurvatureErrors Errors;
+  vtkIdType Unestimated = 0;
+  double MeanNeighbors = NaN;
+  double Median() const { return ::Median(this->Times); }
+};
+
+using FilterKey = std::tuple<long, int, long>; // points, mode, threads
+
+/// The filter's thresholds and its results, kept to check that the core
+/// measured below sees the same neighbourhoods.
+struct FilterReference
+{
+  double S = NaN;
+  double P = NaN;
+  std::vector<double> Minimum[3];
+  std::vector<double> Maximum[3];
+};
+
+double RunFilter(vtkPolyData* cloud,
+  int mode,
+  long threads,
+  FilterRecord& record,
+  FilterReference* reference)
+{
+  vtkNew<vtkPrincipalCurvatureEstimation> filter;
+  filter->SetInputData(cloud);
+  filter->SetFitMode(mode);
+  filter->SetNumberOfThreads(static_cast<int>(threads));
+  const double cpu = ProcessCpuSeconds();
+  const auto start = Clock::now();
+  filter->Update();
+  const double seconds = Seconds(start, Clock::now());
+  record.Utilisation.push_back((ProcessCpuSeconds() - cpu) / (seconds * threads));
+  if (reference) // the first run: accuracy and the reference values
+  {
+    vtkPolyData* output = filter->GetOutput();
+    record.Errors = pcurv::testing::MeasureErrors(output);
+    record.Unestimated = filter->GetNumberOfUnestimatedPoints();
+    vtkDataArray* counts = output->GetPointData()->GetArray("Neighbor_Count");
+    double sum = 0.0;
+    for (vtkIdType i = 0; counts && i < counts->GetNumberOfTuples(); ++i)
+    {
+      sum += counts->GetTuple1(i);
+    }
+    record.MeanNeighbors = counts ? sum / std::max<vtkIdType>(1, counts->GetNumberOfTuples()) : NaN;
+    reference->S = filter->GetUsedSurroundingsThreshold();
+    reference->P = filter->GetUsedPlaneDistanceThreshold();
+    vtkDataArray* kMin = output->GetPointData()->GetArray("Minimum_Curvature");
+    vtkDataArray* kMax = output->GetPointData()->GetArray("Maximum_Curvature");
+    const vtkIdType n = output->GetNumberOfPoints();
+    reference->Minimum[mode].resize(n);
+    reference->Maximum[mode].resize(n);
     for (vtkIdType i = 0; i < n; ++i)
     {
-      cloud->GetPoint(i, &this->Points[3 * i]);
-      cloud->GetPointData()->GetNormals()->GetTuple(i, &this->Normals[3 * i]);
+      reference->Minimum[mode][i] = kMin->GetTuple1(i);
+      reference->Maximum[mode][i] = kMax->GetTuple1(i);
     }
+  }
+  return seconds;
+}
+
+// ---------------------------------------------------------------------------
+// The numeric core on the filter's neighbourhoods
+
+/// Flat arrays and the grid as the filter builds them: the same lattice
+/// (bounds of the cloud, cells of half the radius), hence the same
+/// neighbours in the same order.
+struct CoreCloud
+{
+  long N = 0;
+  double S = NaN, P = NaN;
+  std::vector<double> Points, Normals, ExactMinimum, ExactMaximum, Boundary;
+  double LargestExact = 0.0;
+  pcurv::GridLattice Lattice;
+  pcurv::PointGrid Grid;
+
+  CoreCloud(vtkPolyData* cloud, double s, double p)
+    : N(cloud->GetNumberOfPoints())
+    , S(s)
+    , P(p)
+  {
+    this->Points.resize(3 * this->N);
+    this->Normals.resize(3 * this->N);
+    this->ExactMinimum.resize(this->N);
+    this->ExactMaximum.resize(this->N);
+    this->Boundary.resize(this->N);
+    vtkPointData* pd = cloud->GetPointData();
+    vtkDataArray* normals = pd->GetNormals();
+    vtkDataArray* kMin = pd->GetArray("Exact_Minimum_Curvature");
+    vtkDataArray* kMax = pd->GetArray("Exact_Maximum_Curvature");
+    vtkDataArray* boundary = pd->GetArray("Boundary_Distance");
+    for (vtkIdType i = 0; i < this->N; ++i)
+    {
+      cloud->GetPoint(i, &this->Points[3 * i]);
+      double* n = &this->Normals[3 * i];
+      normals->GetTuple(i, n);
+      // As the filter normalises (CloudPoints::Read): bit for bit.
+      const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+      const double inverse = length > 0.0 ? 1.0 / length : 0.0;
+      for (int k = 0; k < 3; ++k)
+      {
+        n[k] *= inverse;
+      }
+      this->ExactMinimum[i] = kMin->GetTuple1(i);
+      this->ExactMaximum[i] = kMax->GetTuple1(i);
+      this->Boundary[i] = boundary->GetTuple1(i);
+      this->LargestExact = std::max(
+        { this->LargestExact, std::fabs(this->ExactMinimum[i]), std::fabs(this->ExactMaximum[i]) });
+    }
+    double bounds[6];
+    cloud->GetBounds(bounds);
+    const double lower[3] = { bounds[0], bounds[2], bounds[4] };
+    const double upper[3] = { bounds[1], bounds[3], bounds[5] };
+    this->Lattice = pcurv::GridLattice::Make(lower, upper, this->N, 0.5 * s);
+  }
+
+  double BuildGrid()
+  {
+    const auto start = Clock::now();
+    this->Grid.Build(this->Points.data(), this->N, this->Lattice);
+    return Seconds(start, Clock::now());
+  }
+
+  pcurv::Vector3 Point(std::int64_t i) const
+  {
+    return { { this->Points[3 * i], this->Points[3 * i + 1], this->Points[3 * i + 2] } };
+  }
+  pcurv::Vector3 Normal(std::int64_t i) const
+  {
+    return { { this->Normals[3 * i], this->Normals[3 * i + 1], this->Normals[3 * i + 2] } };
   }
 };
 
-/// Phases on one thread with the core: neighbour search alone; search +
-/// binning + sums; + fits and sine fit per mode. Differences give phases.
-void MeasurePhases(vtkPolyData* cloud, double s, double p, int runs, std::FILE* csv, long n)
+/// Query points of the phase timing, in the filter's processing order (the
+/// grid's): all of them, or `count` in 16 blocks spread over the order.
+std::vector<std::int64_t> PhaseQueries(const CoreCloud& core, long count)
 {
-  Flat flat(cloud);
-  const vtkIdType count = cloud->GetNumberOfPoints();
-  const double lower[3] = { -4.1, -4.1, -1.1 }, upper[3] = { 4.1, 4.1, 1.1 };
-  pcurv::PointGrid grid;
-  grid.Build(flat.Points.data(), count, pcurv::GridLattice::Make(lower, upper, count, 0.5 * s));
+  std::vector<std::int64_t> ids;
+  if (core.N <= count)
+  {
+    for (std::int64_t j = 0; j < core.N; ++j)
+    {
+      ids.push_back(core.Grid.GetSortedId(j));
+    }
+    return ids;
+  }
+  constexpr int Blocks = 16;
+  const std::int64_t length = count / Blocks;
+  for (int b = 0; b < Blocks; ++b)
+  {
+    const std::int64_t first = static_cast<std::int64_t>(b) * core.N / Blocks;
+    for (std::int64_t j = first; j < first + length; ++j)
+    {
+      ids.push_back(core.Grid.GetSortedId(j));
+    }
+  }
+  return ids;
+}
+
+/// Query points spread at random over the surface (the samples are in
+/// random order): every stride-th input point.
+std::vector<std::int64_t> SpreadQueries(const CoreCloud& core, long count)
+{
+  std::vector<std::int64_t> ids;
+  const std::int64_t stride = std::max<std::int64_t>(1, core.N / std::max(1L, count));
+  for (std::int64_t i = 0; i < core.N && static_cast<long>(ids.size()) < count; i += stride)
+  {
+    ids.push_back(i);
+  }
+  return ids;
+}
+
+bool SameValue(double a, double b)
+{
+  return (std::isnan(a) && std::isnan(b)) || a == b;
+}
+
+struct PhaseRecord
+{
+  long Queries = 0;
+  double Neighbors = 0.0; // summed over the queries (one run)
+  std::vector<double> GridBuild, Search, Accumulate, Estimate[3];
+  double Scale = 1.0;      // N / Queries: extrapolation to the whole cloud
+  long Mismatches[3] = {}; // points where the core differs from the filter
+  double LargestDifference[3] = {};
+};
+
+/// Grid build, neighbour search, binning + sums, and Estimate() (circle fits
+/// and sine fit) per mode, one thread, each point timed piece by piece (the
+/// clock costs about 20 ns a read, under 0.5 % of a point). The modes'
+/// Estimate() calls share one accumulation: identical sums.
+PhaseRecord MeasurePhases(CoreCloud& core, const Options& options, const FilterReference& reference)
+{
+  PhaseRecord record;
+  const std::vector<std::int64_t> queries = PhaseQueries(core, options.PhasePoints);
+  record.Queries = static_cast<long>(queries.size());
+  record.Scale = static_cast<double>(core.N) / record.Queries;
+  pcurv::PointCurvatureEstimator estimator;
+  std::vector<double> neighbors;
+  pcurv::FitSettings settings[3];
+  for (int mode = 0; mode < 3; ++mode)
+  {
+    settings[mode].Mode = static_cast<pcurv::FitMode>(mode);
+  }
+  double checksum = 0.0;
+  for (int run = 0; run < options.Runs; ++run)
+  {
+    record.GridBuild.push_back(core.BuildGrid());
+    double search = 0.0, accumulate = 0.0, estimate[3] = { 0.0, 0.0, 0.0 }, count = 0.0;
+    for (const std::int64_t i : queries)
+    {
+      const pcurv::Vector3 x = core.Point(i);
+      const auto t0 = Clock::now();
+      core.Grid.GatherWithinRadius(x.data(), core.S, neighbors);
+      const auto t1 = Clock::now();
+      estimator.Begin(x, core.Normal(i), core.P, core.S);
+      estimator.AddNeighbors(neighbors.data(), neighbors.size() / 3);
+      auto t2 = Clock::now();
+      search += Seconds(t0, t1);
+      accumulate += Seconds(t1, t2);
+      count += estimator.GetNumberOfNeighbors();
+      for (const int mode : options.Modes)
+      {
+        const pcurv::PointCurvature result = estimator.Estimate(settings[mode]);
+        const auto t3 = Clock::now();
+        estimate[mode] += Seconds(t2, t3);
+        t2 = t3;
+        checksum += result.Valid ? result.MaximumCurvature : 0.0;
+        if (run == 0 && !reference.Minimum[mode].empty())
+        {
+          const double kMin = result.Valid ? result.MinimumCurvature : NaN;
+          const double kMax = result.Valid ? result.MaximumCurvature : NaN;
+          const double wantMin = reference.Minimum[mode][i], wantMax = reference.Maximum[mode][i];
+          if (!SameValue(kMin, wantMin) || !SameValue(kMax, wantMax))
+          {
+            ++record.Mismatches[mode];
+            record.LargestDifference[mode] = std::max({ record.LargestDifference[mode],
+              std::fabs(kMin - wantMin),
+              std::fabs(kMax - wantMax) });
+          }
+        }
+      }
+    }
+    record.Search.push_back(search);
+    record.Accumulate.push_back(accumulate);
+    for (const int mode : options.Modes)
+    {
+      record.Estimate[mode].push_back(estimate[mode]);
+    }
+    record.Neighbors = count;
+  }
+  std::fprintf(stderr, "    (phase checksum %.6g)\n", checksum);
+  return record;
+}
+
+/// The paper's claim on identical CGA matrices: the per-direction sums of
+/// many points, collected once as the core does (lengths over s, the same
+/// half planes, the same rule for a usable direction), then each fit timed
+/// alone over all of them; and the sine fit per point over New01's
+/// direction curvatures.
+struct FitsRecord
+{
+  std::size_t Points = 0;
+  std::size_t Directions = 0;
+  std::vector<double> Fit[3];     // seconds over all directions; New02: both closed forms
+  std::vector<double> Sine;       // seconds over all points: FitSine + principal values/directions
+  double LargestDifference = 0.0; // rebuilt New01 estimate against the core's Estimate()
+};
+
+FitsRecord MeasureFitsAlone(const CoreCloud& core, const Options& options)
+{
+  FitsRecord record;
+  const std::vector<std::int64_t> ids = SpreadQueries(core, options.FitPoints);
+  std::array<double, pcurv::NumberOfDirections> cosine, sine;
+  for (int d = 0; d < pcurv::NumberOfDirections; ++d)
+  {
+    cosine[d] = std::cos(d * Pi / 8.0);
+    sine[d] = std::sin(d * Pi / 8.0);
+  }
+  const pcurv::FitSettings settings; // the usable-direction rule of the defaults
+  std::vector<pcurv::CgaSums> sums;
+  struct PointDirections
+  {
+    pcurv::TangentFrame Frame;
+    std::array<double, pcurv::NumberOfDirections> Curvature;
+    std::array<bool, pcurv::NumberOfDirections> Valid;
+  };
+  std::vector<PointDirections> points;
   std::vector<double> neighbors;
   pcurv::PointCurvatureEstimator estimator;
+  pcurv::FitSettings new01;
+  new01.Mode = pcurv::FitMode::New01;
+  const double inverse = 1.0 / core.S, p = core.P / core.S;
+  for (const std::int64_t i : ids)
+  {
+    const pcurv::Vector3 x = core.Point(i);
+    core.Grid.GatherWithinRadius(x.data(), core.S, neighbors);
+    PointDirections point{};
+    point.Frame = pcurv::MakeTangentFrame(core.Normal(i));
+    const pcurv::TangentFrame& f = point.Frame;
+    std::array<pcurv::CgaSums, pcurv::NumberOfDirections> direction{};
+    for (std::size_t k = 0; k < neighbors.size(); k += 3)
+    {
+      const double d[3] = { (neighbors[k] - x[0]) * inverse,
+        (neighbors[k + 1] - x[1]) * inverse,
+        (neighbors[k + 2] - x[2]) * inverse };
+      const double squared = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+      if (squared == 0.0)
+      {
+        continue;
+      }
+      const double h = d[0] * f.Normal[0] + d[1] * f.Normal[1] + d[2] * f.Normal[2];
+      const double tx = d[0] * f.V0[0] + d[1] * f.V0[1] + d[2] * f.V0[2];
+      const double ty = d[0] * f.W0[0] + d[1] * f.W0[1] + d[2] * f.W0[2];
+      for (std::uint32_t mask = pcurv::PointCurvatureEstimator::DirectionMask(tx, ty, p); mask;
+           mask &= mask - 1)
+      {
+        const int b = __builtin_ctz(mask);
+        direction[b].Add(h, squared, tx * cosine[b] + ty * sine[b]);
+      }
+    }
+    for (int b = 0; b < pcurv::NumberOfDirections; ++b)
+    {
+      const bool usable = direction[b].Count >= settings.MinimumPointsPerDirection &&
+        direction[b].Extent >= settings.MinimumDirectionExtent;
+      const pcurv::CircleFit fit =
+        usable ? pcurv::FitEquations23(direction[b]) : pcurv::CircleFit{};
+      point.Valid[b] = fit.Valid;
+      point.Curvature[b] = fit.Valid ? fit.Curvature * inverse : 0.0;
+      if (usable)
+      {
+        sums.push_back(direction[b]);
+      }
+    }
+    // Check: the same New01 estimate as the core's.
+    pcurv::PointCurvature rebuilt;
+    pcurv::PrincipalCurvaturesFromSine(
+      pcurv::FitSine(point.Curvature, point.Valid), point.Frame, rebuilt);
+    estimator.Begin(x, core.Normal(i), core.P, core.S);
+    estimator.AddNeighbors(neighbors.data(), neighbors.size() / 3);
+    const pcurv::PointCurvature original = estimator.Estimate(new01);
+    if (rebuilt.Valid != original.Valid)
+    {
+      record.LargestDifference = HUGE_VAL;
+    }
+    else if (rebuilt.Valid)
+    {
+      record.LargestDifference = std::max({ record.LargestDifference,
+        std::fabs(rebuilt.MinimumCurvature - original.MinimumCurvature),
+        std::fabs(rebuilt.MaximumCurvature - original.MaximumCurvature) });
+    }
+    points.push_back(point);
+  }
+  record.Points = points.size();
+  record.Directions = sums.size();
   double checksum = 0.0;
-  std::vector<double> search, binning, full[3];
+  const int runs = std::max(options.Runs, 5); // cheap: a few tenths of a second
   for (int run = 0; run < runs; ++run)
   {
     auto start = Clock::now();
-    for (vtkIdType j = 0; j < count; ++j)
+    for (const pcurv::CgaSums& b : sums)
     {
-      const double* x = &flat.Points[3 * grid.GetSortedId(j)];
-      grid.GatherWithinRadius(x, s, neighbors);
-      checksum += neighbors.size();
+      checksum += pcurv::FitPrevious(b).Curvature;
     }
-    search.push_back(Seconds(start));
-    // Search, then binning and sums, of the j-th point in grid order.
-    auto accumulate = [&](vtkIdType j)
-    {
-      const vtkIdType i = grid.GetSortedId(j);
-      const double* x = &flat.Points[3 * i];
-      const double* nn = &flat.Normals[3 * i];
-      grid.GatherWithinRadius(x, s, neighbors);
-      estimator.Begin({ { x[0], x[1], x[2] } }, { { nn[0], nn[1], nn[2] } }, p, s);
-      estimator.AddNeighbors(neighbors.data(), neighbors.size() / 3);
-    };
+    auto end = Clock::now();
+    record.Fit[0].push_back(Seconds(start, end));
     start = Clock::now();
-    for (vtkIdType j = 0; j < count; ++j)
+    for (const pcurv::CgaSums& b : sums)
     {
-      accumulate(j);
+      checksum += pcurv::FitEquations23(b).Curvature;
     }
-    binning.push_back(Seconds(start));
-    for (int mode = 0; mode < 3; ++mode)
+    end = Clock::now();
+    record.Fit[1].push_back(Seconds(start, end));
+    start = Clock::now();
+    for (const pcurv::CgaSums& b : sums)
     {
-      pcurv::FitSettings settings;
-      settings.Mode = static_cast<pcurv::FitMode>(mode);
-      start = Clock::now();
-      for (vtkIdType j = 0; j < count; ++j)
-      {
-        accumulate(j);
-        checksum += estimator.Estimate(settings).MaximumCurvature;
-      }
-      full[mode].push_back(Seconds(start));
+      checksum += pcurv::FitEquations12(b).Curvature + pcurv::FitEquations23(b).Curvature;
     }
+    end = Clock::now();
+    record.Fit[2].push_back(Seconds(start, end));
+    start = Clock::now();
+    for (const PointDirections& point : points)
+    {
+      pcurv::PointCurvature result;
+      pcurv::PrincipalCurvaturesFromSine(
+        pcurv::FitSine(point.Curvature, point.Valid), point.Frame, result);
+      checksum += result.MaximumCurvature + result.MinimumDirection[0];
+    }
+    end = Clock::now();
+    record.Sine.push_back(Seconds(start, end));
   }
-  const double tSearch = Median(search), tBinning = Median(binning) - tSearch;
-  std::printf("  phases, 1 thread, %ld points (medians of %d): search %.3f s, binning+sums %.3f s",
-    n,
-    runs,
-    tSearch,
-    tBinning);
-  for (int mode = 0; mode < 3; ++mode)
-  {
-    const double fits = Median(full[mode]) - Median(binning);
-    std::printf(", %s fits+sine %.3f s", ModeNames[mode], fits);
-    if (csv)
-      std::fprintf(
-        csv, "phase,%ld,%s,1,%.6f,%.6f,%.6f\n", n, ModeNames[mode], tSearch, tBinning, fits);
-  }
-  std::printf("   (checksum %.3g)\n", checksum);
+  std::fprintf(stderr, "    (fits checksum %.6g)\n", checksum);
+  return record;
 }
 
-/// The paper's claim, on identical CGA sums: time of the fits alone.
-void MeasureFitsAlone(vtkPolyData* cloud, double s, double p)
+// ---------------------------------------------------------------------------
+// The peer
+
+struct PeerRecord
 {
-  Flat flat(cloud);
-  const vtkIdType count = std::min<vtkIdType>(cloud->GetNumberOfPoints(), 20000);
-  std::vector<pcurv::CgaSums> sums;
-  const double lower[3] = { -4.1, -4.1, -1.1 }, upper[3] = { 4.1, 4.1, 1.1 };
-  pcurv::PointGrid grid;
-  grid.Build(flat.Points.data(),
-    cloud->GetNumberOfPoints(),
-    pcurv::GridLattice::Make(lower, upper, cloud->GetNumberOfPoints(), 0.5 * s));
-  std::vector<double> neighbors;
-  for (vtkIdType i = 0; i < count; ++i)
-  {
-    const double* x = &flat.Points[3 * i];
-    grid.GatherWithinRadius(x, s, neighbors);
-    const pcurv::TangentFrame frame = pcurv::MakeTangentFrame(
-      { { flat.Normals[3 * i], flat.Normals[3 * i + 1], flat.Normals[3 * i + 2] } });
-    std::array<pcurv::CgaSums, 16> direction{};
-    for (std::size_t k = 0; k < neighbors.size(); k += 3)
-    {
-      double d[3];
-      for (int c = 0; c < 3; ++c)
-        d[c] = (neighbors[k + c] - x[c]) / s;
-      const double h = d[0] * frame.Normal[0] + d[1] * frame.Normal[1] + d[2] * frame.Normal[2];
-      const double tx = d[0] * frame.V0[0] + d[1] * frame.V0[1] + d[2] * frame.V0[2];
-      const double ty = d[0] * frame.W0[0] + d[1] * frame.W0[1] + d[2] * frame.W0[2];
-      std::uint32_t mask = pcurv::PointCurvatureEstimator::DirectionMask(tx, ty, p / s);
-      for (; mask; mask &= mask - 1)
-        direction[__builtin_ctz(mask)].Add(h, d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-    }
-    sums.insert(sums.end(), direction.begin(), direction.end());
-  }
-  double checksum = 0.0;
-  std::vector<double> times[3];
-  for (int run = 0; run < 7; ++run)
-  {
-    auto start = Clock::now();
-    for (const auto& b : sums)
-      checksum += pcurv::FitPrevious(b).Curvature;
-    times[0].push_back(Seconds(start));
-    start = Clock::now();
-    for (const auto& b : sums)
-      checksum += pcurv::FitEquations23(b).Curvature;
-    times[1].push_back(Seconds(start));
-    start = Clock::now();
-    for (const auto& b : sums) // both closed forms (New02's choice needs the points too)
-      checksum += pcurv::FitEquations12(b).Curvature + pcurv::FitEquations23(b).Curvature;
-    times[2].push_back(Seconds(start));
-  }
-  const double previous = Median(times[0]);
-  std::printf(
-    "fits alone on %zu identical CGA matrices (medians of 7): Previous %.1f ns, New01 %.1f ns "
-    "(%.3fx), New02's two closed forms %.1f ns (%.3fx)   (checksum %.3g)\n",
-    sums.size(),
-    1e9 * previous / sums.size(),
-    1e9 * Median(times[1]) / sums.size(),
-    Median(times[1]) / previous,
-    1e9 * Median(times[2]) / sums.size(),
-    Median(times[2]) / previous,
-    checksum);
-}
+  long Queries = 0;
+  std::vector<double> Search, Cgal, Ours[3]; // seconds over the queries
+  double CgalError[2] = { NaN, NaN };        // k_min, k_max
+  double OursError[3][2] = { { NaN, NaN }, { NaN, NaN }, { NaN, NaN } };
+  long CgalInvalid = 0;
+  long OursInvalid[3] = {};
+};
 
 #ifdef PCURV_WITH_CGAL
-/// CGAL jet fitting (degree 2, Monge degree 2) on the same neighbourhoods.
-void MeasurePeer(vtkPolyData* cloud, double s, long queries, std::FILE* csv, long n)
+/// CGAL's jet fitting and the core, one thread, on the same query points
+/// (spread over the surface) and the same neighbourhoods (the filter's
+/// radius, gathered once with the grid), scored the same way: mean
+/// |k - exact| over max |exact k| of the cloud, points whose neighbourhood
+/// reaches a boundary left out.
+PeerRecord MeasurePeer(const CoreCloud& core, const Options& options)
 {
-  using Kernel = CGAL::Simple_cartesian<double>;
-  using Fitting = CGAL::Monge_via_jet_fitting<Kernel>;
-  Flat flat(cloud);
-  const vtkIdType count = cloud->GetNumberOfPoints();
-  const double lower[3] = { -4.1, -4.1, -1.1 }, upper[3] = { 4.1, 4.1, 1.1 };
-  pcurv::PointGrid grid;
-  grid.Build(flat.Points.data(), count, pcurv::GridLattice::Make(lower, upper, count, 0.5 * s));
-  vtkDataArray* exactMin = cloud->GetPointData()->GetArray("Exact_Minimum_Curvature");
-  vtkDataArray* exactMax = cloud->GetPointData()->GetArray("Exact_Maximum_Curvature");
-  const vtkIdType stride = std::max<vtkIdType>(1, count / queries);
-  std::vector<double> neighbors;
-  std::vector<Kernel::Point_3> points;
-  double errorMin = 0.0, errorMax = 0.0, largest = 0.0;
-  long measured = 0;
-  auto start = Clock::now();
-  for (vtkIdType i = 0; i < count; i += stride)
+  PeerRecord record;
+  const std::vector<std::int64_t> ids = SpreadQueries(core, options.PeerPoints);
+  record.Queries = static_cast<long>(ids.size());
+  pcurv::benchmark::CgalJetFitter jet;
+  pcurv::PointCurvatureEstimator estimator;
+  pcurv::FitSettings settings[3];
+  for (int mode = 0; mode < 3; ++mode)
   {
-    const double* x = &flat.Points[3 * i];
-    grid.GatherWithinRadius(x, s, neighbors);
-    points.clear();
-    points.emplace_back(x[0], x[1], x[2]); // the origin of the fit: the query point
-    for (std::size_t k = 0; k < neighbors.size(); k += 3)
-    {
-      if (neighbors[k] != x[0] || neighbors[k + 1] != x[1] || neighbors[k + 2] != x[2])
-        points.emplace_back(neighbors[k], neighbors[k + 1], neighbors[k + 2]);
-    }
-    Fitting fitting;
-    Fitting::Monge_form form = fitting(points.begin(), points.end(), 2, 2);
-    const double* nn = &flat.Normals[3 * i];
-    form.comply_wrt_given_normal(Kernel::Vector_3(nn[0], nn[1], nn[2]));
-    // CGAL: z = (k1 x^2 + k2 y^2) / 2 along the normal, k1 >= k2: positive
-    // bends towards the normal. Ours is the opposite sign.
-    const double kMax = -form.principal_curvatures(1), kMin = -form.principal_curvatures(0);
-    if (measured < 5 && std::getenv("PCURV_DEBUG_PEER"))
-      std::printf("    peer point %lld: %zu points, k %g %g exact %g %g\n",
-        (long long)i,
-        points.size(),
-        kMin,
-        kMax,
-        exactMin->GetTuple1(i),
-        exactMax->GetTuple1(i));
-    errorMin += std::fabs(kMin - exactMin->GetTuple1(i));
-    errorMax += std::fabs(kMax - exactMax->GetTuple1(i));
-    largest =
-      std::max({ largest, std::fabs(exactMin->GetTuple1(i)), std::fabs(exactMax->GetTuple1(i)) });
-    ++measured;
+    settings[mode].Mode = static_cast<pcurv::FitMode>(mode);
   }
-  const double seconds = Seconds(start);
-  std::printf(
-    "  CGAL jet fitting, 1 thread, %ld query points: %.3f s = %.2f us/point (extrapolated to "
-    "%ld points: %.2f s); errors k_min %.5f k_max %.5f\n",
-    measured,
-    seconds,
-    1e6 * seconds / measured,
-    n,
-    seconds / measured * n,
-    errorMin / measured / largest,
-    errorMax / measured / largest);
-  if (csv)
-    std::fprintf(csv,
-      "peer,%ld,CGAL,1,%.6f,%.6f,%.6f\n",
-      n,
-      seconds / measured * n,
-      errorMin / measured / largest,
-      errorMax / measured / largest);
+  std::vector<double> neighbors;
+  double checksum = 0.0;
+  const double scale = core.LargestExact > 0.0 ? core.LargestExact : 1.0;
+  for (int run = 0; run < options.Runs; ++run)
+  {
+    double search = 0.0, cgal = 0.0, ours[3] = { 0.0, 0.0, 0.0 };
+    double cgalError[2] = { 0.0, 0.0 }, oursError[3][2] = {};
+    long cgalScored = 0, oursScored[3] = {};
+    for (const std::int64_t i : ids)
+    {
+      const pcurv::Vector3 x = core.Point(i);
+      const pcurv::Vector3 n = core.Normal(i);
+      const auto t0 = Clock::now();
+      core.Grid.GatherWithinRadius(x.data(), core.S, neighbors);
+      const auto t1 = Clock::now();
+      const pcurv::benchmark::JetCurvatures fit =
+        jet.Fit(x.data(), n.data(), neighbors.data(), neighbors.size() / 3);
+      auto t2 = Clock::now();
+      search += Seconds(t0, t1);
+      cgal += Seconds(t1, t2);
+      const bool scored = core.Boundary[i] > core.S;
+      if (run == 0 && scored)
+      {
+        if (fit.Valid)
+        {
+          cgalError[0] += std::fabs(fit.Minimum - core.ExactMinimum[i]);
+          cgalError[1] += std::fabs(fit.Maximum - core.ExactMaximum[i]);
+          ++cgalScored;
+        }
+        else
+        {
+          ++record.CgalInvalid;
+        }
+      }
+      checksum += fit.Valid ? fit.Maximum : 0.0;
+      for (const int mode : options.Modes)
+      {
+        estimator.Begin(x, n, core.P, core.S);
+        estimator.AddNeighbors(neighbors.data(), neighbors.size() / 3);
+        const pcurv::PointCurvature result = estimator.Estimate(settings[mode]);
+        const auto t3 = Clock::now();
+        ours[mode] += Seconds(t2, t3);
+        t2 = t3;
+        checksum += result.Valid ? result.MaximumCurvature : 0.0;
+        if (run == 0 && scored)
+        {
+          if (result.Valid)
+          {
+            oursError[mode][0] += std::fabs(result.MinimumCurvature - core.ExactMinimum[i]);
+            oursError[mode][1] += std::fabs(result.MaximumCurvature - core.ExactMaximum[i]);
+            ++oursScored[mode];
+          }
+          else
+          {
+            ++record.OursInvalid[mode];
+          }
+        }
+      }
+    }
+    record.Search.push_back(search);
+    record.Cgal.push_back(cgal);
+    for (const int mode : options.Modes)
+    {
+      record.Ours[mode].push_back(ours[mode]);
+    }
+    if (run == 0)
+    {
+      for (int k = 0; k < 2; ++k)
+      {
+        record.CgalError[k] = cgalScored ? cgalError[k] / cgalScored / scale : NaN;
+        for (const int mode : options.Modes)
+        {
+          record.OursError[mode][k] =
+            oursScored[mode] ? oursError[mode][k] / oursScored[mode] / scale : NaN;
+        }
+      }
+    }
+  }
+  std::fprintf(stderr, "    (peer checksum %.6g)\n", checksum);
+  return record;
 }
 #endif
+
+// ---------------------------------------------------------------------------
+// Everything measured, for the summary
+
+struct SizeRecord
+{
+  long N = 0;
+  double S = NaN, P = NaN;
+  bool HasPhases = false, HasFits = false, HasPeer = false;
+  PhaseRecord Phases;
+  FitsRecord Fits;
+  PeerRecord Peer;
+  std::map<std::pair<int, long>, MemoryRecord> Memory; // (mode, threads)
+};
+
+struct Results
+{
+  std::map<FilterKey, FilterRecord> Filter;
+  std::vector<SizeRecord> Sizes;
+
+  double FilterTime(long n, int mode, long threads) const
+  {
+    const auto found = this->Filter.find(FilterKey{ n, mode, threads });
+    return found == this->Filter.end() ? NaN : found->second.Median();
+  }
+};
+
+/// Least-squares slope of log(time) against log(N).
+double Exponent(const std::vector<std::pair<double, double>>& points)
+{
+  if (points.size() < 2)
+  {
+    return NaN;
+  }
+  double mx = 0.0, my = 0.0;
+  for (const auto& p : points)
+  {
+    mx += std::log(p.first);
+    my += std::log(p.second);
+  }
+  mx /= points.size();
+  my /= points.size();
+  double sxy = 0.0, sxx = 0.0;
+  for (const auto& p : points)
+  {
+    sxy += (std::log(p.first) - mx) * (std::log(p.second) - my);
+    sxx += (std::log(p.first) - mx) * (std::log(p.first) - mx);
+  }
+  return sxy / sxx;
+}
+
+void PrintSummary(const Options& options, const Results& results, CsvFile& csv)
+{
+  const long largest = options.Sizes.back();
+  const std::string description = SurfaceDescription(options.Surface);
+  std::printf("\n## Results: %s, exact normals, default settings (automatic radius for 375 "
+              "neighbours, p = 0.1 s), medians of %d runs\n",
+    description.c_str(),
+    options.Runs);
+
+  // Whole filter.
+  {
+    Table table({ "points",
+      "mode",
+      "threads",
+      "median s",
+      "min..max s",
+      "points/s",
+      "vs New01",
+      "speed-up vs 1 thread",
+      "CPU use",
+      "error k_min",
+      "error k_max",
+      "neighbours",
+      "unestimated" });
+    for (const long n : options.Sizes)
+    {
+      for (const long threads : options.Threads)
+      {
+        for (const int mode : options.Modes)
+        {
+          const auto found = results.Filter.find(FilterKey{ n, mode, threads });
+          if (found == results.Filter.end())
+          {
+            continue;
+          }
+          const FilterRecord& r = found->second;
+          const double t = r.Median();
+          const double single = results.FilterTime(n, mode, options.Threads.front());
+          table.Add({ SizeName(n),
+            ModeNames[mode],
+            std::to_string(threads),
+            Short(t),
+            Short(Smallest(r.Times)) + ".." + Short(Largest(r.Times)),
+            Grouped(n / t),
+            Ratio(t / results.FilterTime(n, 1, threads)),
+            threads == options.Threads.front() ? "" : Ratio(single / t),
+            Format("%.0f %%", 100.0 * Median(r.Utilisation)),
+            Format("%.4f", r.Errors.MeanMinimumError),
+            Format("%.4f", r.Errors.MeanMaximumError),
+            Format("%.0f", r.MeanNeighbors),
+            std::to_string(r.Unestimated) });
+        }
+      }
+    }
+    table.Print("Whole filter: vtkPrincipalCurvatureEstimation::Update(), wall time",
+      "errors: mean |k - k_true| / max |k_true| (MeasureErrors); \"vs New01\": time over New01's "
+      "at the same size and threads; speed-up: time on " +
+        std::to_string(options.Threads.front()) +
+        " thread(s) over this one; CPU use: process CPU time over wall time x threads (well "
+        "under 100 % means the threads waited, e.g. for other work on a shared machine).");
+  }
+
+  // Scaling with N.
+  if (options.Sizes.size() > 1)
+  {
+    std::vector<std::string> header{ "mode", "threads" };
+    for (const long n : options.Sizes)
+    {
+      header.push_back(SizeName(n) + " us/point");
+    }
+    for (std::size_t k = 1; k < options.Sizes.size(); ++k)
+    {
+      header.push_back(
+        "t(" + SizeName(options.Sizes[k]) + ")/t(" + SizeName(options.Sizes[k - 1]) + ")");
+    }
+    header.push_back("exponent (log-log fit)");
+    Table table(header);
+    for (const long threads : options.Threads)
+    {
+      for (const int mode : options.Modes)
+      {
+        std::vector<std::string> row{ ModeNames[mode], std::to_string(threads) };
+        std::vector<std::pair<double, double>> points;
+        for (const long n : options.Sizes)
+        {
+          const double t = results.FilterTime(n, mode, threads);
+          row.push_back(Short(1e6 * t / n));
+          if (std::isfinite(t))
+          {
+            points.emplace_back(n, t);
+          }
+        }
+        for (std::size_t k = 1; k < options.Sizes.size(); ++k)
+        {
+          row.push_back(Ratio(results.FilterTime(options.Sizes[k], mode, threads) /
+            results.FilterTime(options.Sizes[k - 1], mode, threads)));
+        }
+        const double exponent = Exponent(points);
+        row.push_back(Format("%.3f", exponent));
+        csv.Row("scaling", 0, ModeNames[mode], threads, "exponent", exponent, "1");
+        table.Add(row);
+      }
+    }
+    table.Print("Scaling: whole filter against N", "exponent 1 = linear in N.");
+  }
+
+  // Memory.
+  {
+    Table table({ "points",
+      "mode",
+      "threads",
+      "before update MB",
+      "peak over it MB",
+      "input MB (points, normals)",
+      "output MB (new arrays)",
+      "ratio to input+output",
+      "process peak MB" });
+    bool any = false;
+    for (const SizeRecord& size : results.Sizes)
+    {
+      for (const auto& entry : size.Memory)
+      {
+        const MemoryRecord& m = entry.second;
+        if (!m.Valid)
+        {
+          continue;
+        }
+        any = true;
+        table.Add({ SizeName(size.N),
+          ModeNames[entry.first.first],
+          std::to_string(entry.first.second),
+          Short(m.BaselineMB),
+          Short(m.ExtraMB),
+          Short(m.InputMB),
+          Short(m.OutputMB),
+          Ratio(m.RatioToArrays()),
+          Short(m.ProcessPeakMB) });
+      }
+    }
+    if (any)
+    {
+      table.Print("Peak memory of one Update() (a fresh child process per row)",
+        "peak over it: VmHWM during the update minus VmRSS just before (reset through "
+        "/proc/self/clear_refs); process peak: getrusage ru_maxrss, cloud generation included.");
+    }
+  }
+
+  // Phases.
+  for (const SizeRecord& size : results.Sizes)
+  {
+    if (!size.HasPhases)
+    {
+      continue;
+    }
+    const PhaseRecord& ph = size.Phases;
+    const double scale = ph.Scale;
+    const double grid = Median(ph.GridBuild);
+    const double search = Median(ph.Search) * scale;
+    const double accumulate = Median(ph.Accumulate) * scale;
+    const double neighbors = ph.Neighbors; // per run, over the queries
+    const double sinePerPoint =
+      size.HasFits && size.Fits.Points ? Median(size.Fits.Sine) / size.Fits.Points : NaN;
+    const double sine = sinePerPoint * size.N;
+    std::vector<std::string> header{ "phase (1 thread)" };
+    for (const int mode : options.Modes)
+    {
+      header.push_back(std::string(ModeNames[mode]) + " s");
+    }
+    header.push_back("per neighbour");
+    Table table(header);
+    auto same = [&](const char* name, double value, const std::string& perNeighbor)
+    {
+      std::vector<std::string> row{ name };
+      for (std::size_t m = 0; m < options.Modes.size(); ++m)
+      {
+        row.push_back(Short(value));
+      }
+      row.push_back(perNeighbor);
+      table.Add(row);
+    };
+    same("grid build (counting sort, whole cloud)", grid, "");
+    same("neighbour search (GatherWithinRadius)",
+      search,
+      Format("%.1f ns", 1e9 * Median(ph.Search) / neighbors));
+    same("half planes + six sums (Begin, AddNeighbors)",
+      accumulate,
+      Format("%.1f ns", 1e9 * Median(ph.Accumulate) / neighbors));
+    std::vector<std::string> fits{ "circle fits (Estimate minus sine fit)" };
+    std::vector<std::string> sineRow{ "sine fit + directions (measured alone)" };
+    std::vector<std::string> estimateRow{ "Estimate(): fits + sine fit" };
+    std::vector<std::string> total{ "sum of the phases" };
+    std::vector<std::string> whole{ "whole filter, 1 thread" };
+    std::vector<std::string> rest{ "rest (arrays in/out, radius estimate, threads)" };
+    std::vector<std::string> fitShare{ "fit phase vs Previous's" };
+    const double previousEstimate =
+      Median(ph.Estimate[0]) * scale; // NaN when Previous was not measured
+    for (const int mode : options.Modes)
+    {
+      const double estimate = Median(ph.Estimate[mode]) * scale;
+      const double sum = grid + search + accumulate + estimate;
+      const double filter = results.FilterTime(size.N, mode, 1);
+      fits.push_back(Short(estimate - sine));
+      sineRow.push_back(Short(sine));
+      estimateRow.push_back(Short(estimate));
+      total.push_back(Short(sum));
+      whole.push_back(Short(filter));
+      rest.push_back(Short(filter - sum));
+      fitShare.push_back(Ratio(estimate / previousEstimate));
+      const std::string mode_ = ModeNames[mode];
+      const std::string note = ph.Scale > 1.0
+        ? Format("extrapolated from %ld query points", ph.Queries)
+        : std::string("all points");
+      csv.Row("phase", size.N, mode_, 1, "grid_build_seconds", grid, "s");
+      csv.Row("phase", size.N, mode_, 1, "search_seconds", search, "s", note);
+      csv.Row("phase", size.N, mode_, 1, "binning_sums_seconds", accumulate, "s", note);
+      csv.Row("phase", size.N, mode_, 1, "fits_seconds", estimate - sine, "s", note);
+      csv.Row("phase", size.N, mode_, 1, "sine_seconds", sine, "s", note);
+      csv.Row("phase", size.N, mode_, 1, "rest_seconds", filter - sum, "s");
+    }
+    table.Add(fits);
+    table.Add(sineRow);
+    table.Add(estimateRow);
+    table.Add(total);
+    table.Add(whole);
+    table.Add(rest);
+    if (std::find(options.Modes.begin(), options.Modes.end(), 0) != options.Modes.end())
+    {
+      table.Add(fitShare);
+    }
+    std::string note = Format("%ld query points (%s), %.0f neighbours each on average; ",
+      ph.Queries,
+      ph.Scale > 1.0 ? "16 blocks of the grid order, times scaled to the whole cloud"
+                     : "the whole cloud in the filter's order",
+      neighbors / ph.Queries);
+    note += "same radius, lattice and order as the filter: the core's results equal the "
+            "filter's at ";
+    for (const int mode : options.Modes)
+    {
+      note += Format("%s %ld/%ld ", ModeNames[mode], ph.Queries - ph.Mismatches[mode], ph.Queries);
+      if (ph.Mismatches[mode])
+      {
+        note += Format("(largest difference %.2g) ", ph.LargestDifference[mode]);
+      }
+    }
+    note += "points. The sine fit is timed alone per point (FitSine + principal values and "
+            "directions) and subtracted from Estimate(); Estimate() also merges the four "
+            "banks of sums.";
+    table.Print(
+      Format("Phases, %s points, seconds for the whole cloud", SizeName(size.N).c_str()), note);
+  }
+
+  // The paper's claim: fits alone.
+  for (const SizeRecord& size : results.Sizes)
+  {
+    if (!size.HasFits || size.N != options.Sizes.front())
+    {
+      continue;
+    }
+    const FitsRecord& f = size.Fits;
+    const double directions = static_cast<double>(f.Directions);
+    const double previous = Median(f.Fit[0]);
+    const double perPoint = directions / static_cast<double>(f.Points);
+    Table table(
+      { "fit", "ns per direction", "ns per point", "vs Previous", "paper (Getto & Hildenbrand)" });
+    const char* paper[3] = { "1", "about 0.5", "about 0.75" };
+    const char* names[3] = { "Previous (3x3 symmetric eigen solve)",
+      "New01 (kappa_23)",
+      "New02's two closed forms (kappa_12 + kappa_23)" };
+    for (int mode = 0; mode < 3; ++mode)
+    {
+      const double t = Median(f.Fit[mode]);
+      table.Add({ names[mode],
+        Format("%.1f", 1e9 * t / directions),
+        Format("%.0f", 1e9 * t / directions * perPoint),
+        Ratio(t / previous),
+        paper[mode] });
+      csv.Row("fits_alone",
+        size.N,
+        ModeNames[mode],
+        1,
+        "ns_per_direction",
+        1e9 * t / directions,
+        "ns",
+        Format("%zu directions of %zu points", f.Directions, f.Points));
+    }
+    table.Add({ "sine fit + principal values and directions",
+      "",
+      Format("%.0f", 1e9 * Median(f.Sine) / f.Points),
+      "",
+      "" });
+    // In the pipeline, for comparison: Estimate() per point (fits, New02's
+    // pass over the points, sine fit).
+    if (size.HasPhases)
+    {
+      for (const int mode : options.Modes)
+      {
+        const double t = Median(size.Phases.Estimate[mode]) / size.Phases.Queries;
+        table.Add({ std::string("in the pipeline: Estimate(), ") + ModeNames[mode],
+          "",
+          Format("%.0f", 1e9 * t),
+          Ratio(Median(size.Phases.Estimate[mode]) / Median(size.Phases.Estimate[0])),
+          "" });
+      }
+    }
+    table.Print(Format("The paper's timing claim: fits alone on identical CGA sums (%zu "
+                       "directions of %zu points of the %s cloud)",
+                  f.Directions,
+                  f.Points,
+                  SizeName(size.N).c_str()),
+      Format("Each fit over the same collected sums, medians of %zu runs. New02's choice between "
+             "its two candidates also needs a pass over the direction's points (the summed "
+             "distance to each circle), included in the Estimate() rows (which add the sine "
+             "fit). Rebuilt from these sums, New01's estimate equals the core's to %.1g.",
+        f.Fit[0].size(),
+        f.LargestDifference));
+  }
+
+  // The peer.
+  bool anyPeer = false;
+  for (const SizeRecord& size : results.Sizes)
+  {
+    anyPeer = anyPeer || size.HasPeer;
+  }
+  if (anyPeer)
+  {
+    Table table({ "points",
+      "query points",
+      "CGAL us/point (search + jet fit)",
+      "ours us/point (search + core, New01)",
+      "CGAL / ours",
+      "ours whole filter us/point (1 thread)",
+      "CGAL / whole filter",
+      "CGAL whole cloud s (extrapolated)",
+      "CGAL errors k_min / k_max",
+      "ours errors k_min / k_max (same points)" });
+    for (const SizeRecord& size : results.Sizes)
+    {
+      if (!size.HasPeer)
+      {
+        continue;
+      }
+      const PeerRecord& p = size.Peer;
+      const int ourMode =
+        std::find(options.Modes.begin(), options.Modes.end(), 1) != options.Modes.end()
+        ? 1
+        : options.Modes.front();
+      const double search = Median(p.Search) / p.Queries;
+      const double cgal = search + Median(p.Cgal) / p.Queries;
+      const double ours = search + Median(p.Ours[ourMode]) / p.Queries;
+      const double whole = results.FilterTime(size.N, ourMode, 1) / size.N;
+      table.Add({ SizeName(size.N),
+        Grouped(p.Queries),
+        Short(1e6 * cgal),
+        Short(1e6 * ours),
+        Ratio(cgal / ours),
+        Short(1e6 * whole),
+        Ratio(cgal / whole),
+        Short(cgal * size.N),
+        Format("%.4f / %.4f", p.CgalError[0], p.CgalError[1]),
+        Format("%.4f / %.4f", p.OursError[ourMode][0], p.OursError[ourMode][1]) });
+      const std::string note = Format("%ld query points, extrapolated per point", p.Queries);
+      csv.Row("peer", size.N, "CGAL", 1, "seconds", cgal * size.N, "s", note);
+      csv.Row("peer", size.N, "CGAL", 1, "error_min", p.CgalError[0], "1", note);
+      csv.Row("peer", size.N, "CGAL", 1, "error_max", p.CgalError[1], "1", note);
+      for (const int mode : options.Modes)
+      {
+        csv.Row("peer",
+          size.N,
+          std::string("core ") + ModeNames[mode],
+          1,
+          "seconds",
+          (search + Median(p.Ours[mode]) / p.Queries) * size.N,
+          "s",
+          note);
+        csv.Row("peer",
+          size.N,
+          std::string("core ") + ModeNames[mode],
+          1,
+          "error_min",
+          p.OursError[mode][0],
+          "1",
+          note);
+        csv.Row("peer",
+          size.N,
+          std::string("core ") + ModeNames[mode],
+          1,
+          "error_max",
+          p.OursError[mode][1],
+          "1",
+          note);
+      }
+    }
+    table.Print("Peer: CGAL Monge_via_jet_fitting (degree 2, Monge degree 2), one core, same "
+                "neighbourhoods",
+      "CGAL is timed on the query points only (spread over the surface) and extrapolated per "
+      "point to the whole cloud. Its curvatures are turned to the exact (outward) normal "
+      "(comply_wrt_given_normal) and to the filter's sign. Same radius neighbours as the "
+      "filter, gathered with the same grid; errors on the same query points, over max "
+      "|k_true| of the cloud.");
+  }
+
+  // Targets.
+  {
+    Table table({ "target", "measured", "met?" });
+    auto verdict = [](bool known, bool met) { return known ? (met ? "yes" : "**no**") : "n/a"; };
+    const long two = options.Threads.back();
+    const bool hasTwo = two >= 2;
+    const double at = 1e6 / largest; // extrapolation to 1M points
+    const std::string where =
+      largest == 1000000 ? "" : Format(" (from %s, scaled to 1M)", SizeName(largest).c_str());
+    {
+      const double t = results.FilterTime(largest, 1, two) * at;
+      table.Add({ "whole filter, 1M points, New01, 2 threads <= 1.5 s",
+        Format("%s s on %ld thread(s)%s", Short(t).c_str(), two, where.c_str()),
+        verdict(std::isfinite(t) && hasTwo, t <= 1.5) });
+    }
+    {
+      std::string measured;
+      bool known = hasTwo, met = true;
+      for (const int mode : options.Modes)
+      {
+        const double t = results.FilterTime(largest, mode, two) * at;
+        measured += Format("%s %s s; ", ModeNames[mode], Short(t).c_str());
+        known = known && std::isfinite(t);
+        met = met && t <= 3.0;
+      }
+      table.Add({ "every mode <= 2x that (3 s)", measured + where, verdict(known, met) });
+    }
+    {
+      double ratio = NaN;
+      for (const SizeRecord& size : results.Sizes)
+      {
+        if (size.HasPeer && size.N == largest)
+        {
+          const PeerRecord& p = size.Peer;
+          const double cgal = (Median(p.Search) + Median(p.Cgal)) / p.Queries;
+          ratio = cgal / (results.FilterTime(size.N, 1, 1) / size.N);
+        }
+      }
+      table.Add({ ">= 30x faster than CGAL jet fitting per core",
+        Format("%s (CGAL per point over the whole filter's per point, 1 thread, %s)",
+          Ratio(ratio).c_str(),
+          SizeName(largest).c_str()),
+        verdict(std::isfinite(ratio), ratio >= 30.0) });
+    }
+    {
+      std::string measured;
+      bool known = options.Sizes.size() > 1, met = true;
+      for (const long threads : options.Threads)
+      {
+        for (const int mode : options.Modes)
+        {
+          std::vector<std::pair<double, double>> points;
+          for (const long n : options.Sizes)
+          {
+            const double t = results.FilterTime(n, mode, threads);
+            if (std::isfinite(t))
+              points.emplace_back(n, t);
+          }
+          const double exponent = Exponent(points);
+          known = known && std::isfinite(exponent);
+          met = met && std::fabs(exponent - 1.0) <= 0.1;
+          if (mode == 1 || options.Modes.size() == 1)
+          {
+            measured += Format("New01 %ld thread(s): exponent %.3f; ", threads, exponent);
+          }
+        }
+      }
+      table.Add({ "time linear in N (log-log exponent within 1 +- 0.1, every mode)",
+        measured,
+        verdict(known, met) });
+    }
+    {
+      double worst = HUGE_VAL;
+      std::string measured;
+      for (const int mode : options.Modes)
+      {
+        const double s = results.FilterTime(largest, mode, options.Threads.front()) /
+          results.FilterTime(largest, mode, two);
+        worst = std::min(worst, s);
+        measured += Format("%s %s; ", ModeNames[mode], Ratio(s).c_str());
+      }
+      table.Add({ "2 threads >= 1.8x faster than 1",
+        measured + "at " + SizeName(largest),
+        verdict(hasTwo && options.Threads.front() == 1 && std::isfinite(worst), worst >= 1.8) });
+    }
+    {
+      double worst = NaN;
+      for (const SizeRecord& size : results.Sizes)
+      {
+        for (const auto& entry : size.Memory)
+        {
+          if (entry.second.Valid)
+          {
+            const double r = entry.second.RatioToArrays();
+            worst = std::isfinite(worst) ? std::max(worst, r) : r;
+          }
+        }
+      }
+      table.Add({ "peak memory <= 3x input + output arrays",
+        Format("at most %s", Ratio(worst).c_str()),
+        verdict(std::isfinite(worst), worst <= 3.0) });
+    }
+    {
+      double pipeline = NaN, alone = NaN;
+      std::string which;
+      for (const SizeRecord& size : results.Sizes)
+      {
+        if (size.HasPhases)
+        {
+          pipeline = Median(size.Phases.Estimate[1]) / Median(size.Phases.Estimate[0]);
+          which = SizeName(size.N);
+        }
+        if (size.HasFits && size.N == options.Sizes.front())
+        {
+          alone = Median(size.Fits.Fit[1]) / Median(size.Fits.Fit[0]);
+        }
+      }
+      table.Add({ "New01 fit phase <= 0.5x Previous's",
+        Format("%s in the pipeline (fits + sine fit, %s); %s fits alone",
+          Ratio(pipeline).c_str(),
+          which.c_str(),
+          Ratio(alone).c_str()),
+        verdict(std::isfinite(pipeline), pipeline <= 0.5) });
+    }
+    {
+      std::string measured;
+      bool known = true, met = true;
+      for (const long threads : options.Threads)
+      {
+        const double r =
+          results.FilterTime(largest, 0, threads) / results.FilterTime(largest, 1, threads);
+        known = known && std::isfinite(r);
+        met = met && r <= 1.5;
+        measured += Format("%s on %ld thread(s); ", Ratio(r).c_str(), threads);
+      }
+      table.Add({ "Previous whole pipeline <= 1.5x New01's",
+        measured + "at " + SizeName(largest),
+        verdict(known, met) });
+    }
+    table.Print("Against the targets");
+  }
+}
+
 } // namespace
 
 int main(int argc, char* argv[])
 {
   const Options options = Parse(argc, argv);
-  std::FILE* csv = options.Csv.empty() ? nullptr : std::fopen(options.Csv.c_str(), "w");
-  if (csv)
-    std::fprintf(csv, "kind,points,mode,threads,seconds,error_min,error_max\n");
+  if (options.MemoryProbe)
+  {
+    return RunMemoryProbe(options);
+  }
+  CsvFile csv;
+  if (!options.Csv.empty() && !csv.Open(options.Csv, options.Surface))
+  {
+    std::fprintf(stderr, "cannot write %s\n", options.Csv.c_str());
+    return 1;
+  }
+  std::printf("# PrincipalCurvatureBenchmark\n\n");
+  std::printf("command:");
+  for (int i = 0; i < argc; ++i)
+  {
+    std::printf(" %s", argv[i]);
+  }
+  std::printf("\nmachine: %ld online cores, load average %s at the start; clouds: %s with exact "
+              "normals and curvatures\n",
+    sysconf(_SC_NPROCESSORS_ONLN),
+    LoadAverage().c_str(),
+    SurfaceDescription(options.Surface).c_str());
+#ifdef PCURV_WITH_CGAL
+  const bool peer = options.Peer && options.Phases;
+  std::printf("peer: %s\n",
+    peer ? "CGAL Monge_via_jet_fitting" : "CGAL found, skipped (--no-peer or --no-phases)");
+#else
+  const bool peer = false;
+  std::printf("peer: skipped (built without CGAL; install libcgal-dev and reconfigure)\n");
+#endif
+  std::fflush(stdout);
+
+  Results results;
   for (const long n : options.Sizes)
   {
-    std::printf("torus R=3 r=1, %ld points, exact normals\n", n);
-    auto cloud =
-      pcurv::testing::MakeCloud(pcurv::testing::Sample(pcurv::testing::Torus(3.0, 1.0), n, 1));
-    double s = 0.0, p = 0.0, singleNew01 = 0.0;
-    for (const long threads : options.Threads)
+    SizeRecord size;
+    size.N = n;
+    std::fprintf(stderr, "%s, %ld points: generating\n", options.Surface.c_str(), n);
+    vtkSmartPointer<vtkPolyData> cloud = MakeBenchmarkCloud(options.Surface, n);
+
+    // Whole filter: runs interleaved over modes and thread counts, so that
+    // a slow phase of a shared machine does not fall on one of them.
+    FilterReference reference;
+    for (int run = 0; run < options.Runs; ++run)
     {
-      for (int mode = 0; mode < 3; ++mode)
+      for (const long threads : options.Threads)
       {
-        std::vector<double> times;
-        pcurv::testing::CurvatureErrors errors;
-        long peak = 0, before = 0, bytes = 0;
-        for (int run = 0; run < options.Runs; ++run)
+        for (const int mode : options.Modes)
         {
-          vtkNew<vtkPrincipalCurvatureEstimation> filter;
-          filter->SetInputData(cloud);
-          filter->SetFitMode(mode);
-          filter->SetNumberOfThreads(static_cast<int>(threads));
-          before = StatusKilobytes("VmRSS");
-          ResetPeak();
-          const auto start = Clock::now();
-          filter->Update();
-          times.push_back(Seconds(start));
-          peak = StatusKilobytes("VmHWM") - before;
-          errors = pcurv::testing::MeasureErrors(filter->GetOutput());
-          bytes = ArrayBytes(filter->GetOutput()) + 2 * 24L * n; // + the input's points and normals
-          s = filter->GetUsedSurroundingsThreshold();
-          p = filter->GetUsedPlaneDistanceThreshold();
-        }
-        const double t = Median(times);
-        if (threads == 1 && mode == 1)
-          singleNew01 = t;
-        std::printf(
-          "  %-8s %ld thread(s): %.3f s (median of %d), %.0f points/s, peak +%.0f MB = %.2fx "
-          "input+output arrays (%.0f MB), errors k_min %.5f k_max %.5f, angle %.2f deg\n",
-          ModeNames[mode],
-          threads,
-          t,
-          options.Runs,
-          n / t,
-          peak / 1024.0,
-          peak * 1024.0 / bytes,
-          bytes / 1048576.0,
-          errors.MeanMinimumError,
-          errors.MeanMaximumError,
-          errors.MedianAngleDegrees);
-        if (csv)
-          std::fprintf(csv,
-            "filter,%ld,%s,%ld,%.6f,%.6f,%.6f\n",
-            n,
+          FilterRecord& record = results.Filter[FilterKey{ n, mode, threads }];
+          const bool first = run == 0 && threads == options.Threads.front();
+          const double t = RunFilter(cloud, mode, threads, record, first ? &reference : nullptr);
+          record.Times.push_back(t);
+          std::fprintf(stderr,
+            "  run %d/%d %-8s %ld thread(s): %.3f s\n",
+            run + 1,
+            options.Runs,
             ModeNames[mode],
             threads,
-            t,
-            errors.MeanMinimumError,
-            errors.MeanMaximumError);
-        if (threads > 1 && mode == 1 && singleNew01 > 0.0)
-          std::printf("  New01 speed-up 1 -> %ld threads: %.2fx\n", threads, singleNew01 / t);
+            t);
+        }
       }
     }
-    if (n <= 200000) // phases are proportions: measured where they are quick
-      MeasurePhases(cloud, s, p, options.Runs, csv, n);
-    if (n == options.Sizes.front())
-      MeasureFitsAlone(cloud, s, p);
+    for (const long threads : options.Threads)
+    {
+      for (const int mode : options.Modes)
+      {
+        const FilterRecord& r = results.Filter[FilterKey{ n, mode, threads }];
+        const std::string m = ModeNames[mode];
+        csv.Row("filter", n, m, threads, "seconds", r.Median(), "s", "median");
+        csv.Row("filter", n, m, threads, "seconds_min", Smallest(r.Times), "s");
+        csv.Row("filter", n, m, threads, "seconds_max", Largest(r.Times), "s");
+        csv.Row("filter", n, m, threads, "points_per_second", n / r.Median(), "1/s");
+        // The errors do not depend on the thread count (bit-identical).
+        const FilterRecord& first = results.Filter[FilterKey{ n, mode, options.Threads.front() }];
+        csv.Row("filter", n, m, threads, "error_min", first.Errors.MeanMinimumError, "1");
+        csv.Row("filter", n, m, threads, "error_max", first.Errors.MeanMaximumError, "1");
+      }
+    }
+    for (const long threads : options.Threads)
+    {
+      for (const int mode : options.Modes)
+      {
+        if (threads != options.Threads.front())
+        {
+          results.Filter[FilterKey{ n, mode, threads }].Errors =
+            results.Filter[FilterKey{ n, mode, options.Threads.front() }].Errors;
+          results.Filter[FilterKey{ n, mode, threads }].MeanNeighbors =
+            results.Filter[FilterKey{ n, mode, options.Threads.front() }].MeanNeighbors;
+          results.Filter[FilterKey{ n, mode, threads }].Unestimated =
+            results.Filter[FilterKey{ n, mode, options.Threads.front() }].Unestimated;
+        }
+      }
+    }
+    size.S = reference.S;
+    size.P = reference.P;
+    std::fprintf(stderr, "  radius s = %.6g, plane distance p = %.6g\n", size.S, size.P);
+
+    if (options.Memory)
+    {
+      for (const int mode : options.Modes)
+      {
+        const long threads = options.Threads.back();
+        std::fprintf(stderr, "  memory: %s, %ld thread(s)\n", ModeNames[mode], threads);
+        const MemoryRecord m = ProbeMemory(options, n, mode, threads);
+        size.Memory[{ mode, threads }] = m;
+        if (m.Valid)
+        {
+          const std::string name = ModeNames[mode];
+          csv.Row("memory", n, name, threads, "baseline_mb", m.BaselineMB, "MB");
+          csv.Row("memory", n, name, threads, "peak_extra_mb", m.ExtraMB, "MB");
+          csv.Row("memory",
+            n,
+            name,
+            threads,
+            "arrays_mb",
+            m.InputMB + m.OutputMB,
+            "MB",
+            "input points and normals + output arrays created");
+          csv.Row("memory", n, name, threads, "ratio_to_arrays", m.RatioToArrays(), "1");
+        }
+      }
+    }
+
+    if (options.Phases)
+    {
+      CoreCloud core(cloud, size.S, size.P);
+      core.BuildGrid();
+      std::fprintf(stderr, "  phases\n");
+      size.Phases = MeasurePhases(core, options, reference);
+      size.HasPhases = true;
+      std::fprintf(stderr, "  fits alone\n");
+      size.Fits = MeasureFitsAlone(core, options);
+      size.HasFits = true;
 #ifdef PCURV_WITH_CGAL
-    if (options.Peer)
-      MeasurePeer(cloud, s, std::min(options.PeerPoints, n), csv, n);
+      if (peer)
+      {
+        std::fprintf(stderr, "  peer: CGAL jet fitting\n");
+        size.Peer = MeasurePeer(core, options);
+        size.HasPeer = true;
+      }
 #endif
+    }
+    results.Sizes.push_back(std::move(size));
   }
-  if (csv)
-    std::fclose(csv);
+  (void)peer;
+  PrintSummary(options, results, csv);
+  std::printf("\nload average at the end: %s\n", LoadAverage().c_str());
   return 0;
 }
