@@ -36,6 +36,27 @@ std::uint64_t Mix(std::uint64_t z)
   z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
   return z ^ (z >> 31);
 }
+/// n scaled to unit length, or zero when it has no direction (zero, NaN or
+/// Inf components). Divided by its largest component first, so that the
+/// squares neither overflow (length 1e170) nor underflow (length 1e-170).
+void UnitNormal(double n[3])
+{
+  const double largest = std::max({ std::fabs(n[0]), std::fabs(n[1]), std::fabs(n[2]) });
+  if (!(largest > 0.0 && std::isfinite(largest + n[0] + n[1] + n[2])))
+  {
+    n[0] = n[1] = n[2] = 0.0;
+    return;
+  }
+  for (int k = 0; k < 3; ++k)
+  {
+    n[k] /= largest;
+  }
+  const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  for (int k = 0; k < 3; ++k)
+  {
+    n[k] /= length;
+  }
+}
 } // namespace
 
 void CloudPoints::Read(vtkPointSet* input, vtkDataArray* normals)
@@ -58,14 +79,10 @@ void CloudPoints::Read(vtkPointSet* input, vtkDataArray* normals)
       continue;
     }
     normals->GetTuple(i, n);
-    const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-    const double scale = std::isfinite(length) && length > 0.0 ? 1.0 / length : 0.0;
+    UnitNormal(n);
     this->FiniteInput[i] = 1;
     this->Coordinates.insert(this->Coordinates.end(), x, x + 3);
-    for (int k = 0; k < 3; ++k)
-    {
-      this->Normals.push_back(n[k] * scale);
-    }
+    this->Normals.insert(this->Normals.end(), n, n + 3);
     this->InputIds.push_back(i);
   }
   this->NumberOfOwnPoints = static_cast<vtkIdType>(this->InputIds.size());
@@ -85,6 +102,14 @@ void CloudPoints::OwnBounds(double lower[3], double upper[3]) const
       lower[k] = std::min(lower[k], this->Coordinates[3 * i + k]);
       upper[k] = std::max(upper[k], this->Coordinates[3 * i + k]);
     }
+  }
+}
+
+void CloudPoints::ScaleCoordinates(double factor)
+{
+  for (double& coordinate : this->Coordinates)
+  {
+    coordinate *= factor;
   }
 }
 
@@ -111,6 +136,18 @@ std::int64_t ProcessGroup::Sum(std::int64_t value) const
   vtkTypeInt64 local = value, global = 0;
   this->Controller->AllReduce(&local, &global, 1, vtkCommunicator::SUM_OP);
   return global;
+}
+
+void ProcessGroup::Sum(std::vector<std::int64_t>& values) const
+{
+  if (!this->Controller || values.empty())
+  {
+    return;
+  }
+  std::vector<vtkTypeInt64> local(values.begin(), values.end()), global(values.size());
+  this->Controller->AllReduce(
+    local.data(), global.data(), static_cast<vtkIdType>(local.size()), vtkCommunicator::SUM_OP);
+  std::copy(global.begin(), global.end(), values.begin());
 }
 
 double ProcessGroup::Max(double value) const
@@ -237,6 +274,80 @@ void ProcessGroup::ExchangeHalo(CloudPoints& cloud, double reach) const
   }
 }
 
+double WorkingLengthScale(const CloudPoints& cloud, const ProcessGroup& processes)
+{
+  double largest = 0.0;
+  for (vtkIdType i = 0; i < 3 * cloud.NumberOfOwnPoints; ++i)
+  {
+    largest = std::max(largest, std::fabs(cloud.Coordinates[i]));
+  }
+  largest = processes.Max(largest);
+  if (!(largest > 0.0) || (largest >= std::ldexp(1.0, -400) && largest <= std::ldexp(1.0, 400)))
+  {
+    return 1.0;
+  }
+  int exponent = 0;
+  std::frexp(largest, &exponent); // largest = m 2^exponent, m in [0.5, 1)
+  return std::ldexp(1.0, 1 - exponent);
+}
+
+void SamplingBox(const CloudPoints& cloud,
+  const ProcessGroup& processes,
+  double lower[3],
+  double upper[3])
+{
+  cloud.OwnBounds(lower, upper);
+  processes.Bounds(lower, upper);
+  const std::int64_t total = processes.Sum(cloud.NumberOfOwnPoints);
+  // 0-based ranks, in coordinate order, of the points at 1 % and 99 %.
+  const std::int64_t firstRank = total / 100;
+  const std::int64_t lastRank = total - 1 - total / 100;
+  constexpr int Bins = 1024;
+  constexpr int EnoughBins = 64; // the central points span 64 of 1024 bins: no zoom
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    std::int64_t below = 0; // points below lower[axis]
+    for (int level = 0; level < 8 && upper[axis] > lower[axis]; ++level)
+    {
+      const double low = lower[axis];
+      const double width = (upper[axis] - low) / Bins;
+      std::vector<std::int64_t> counts(Bins, 0);
+      for (vtkIdType i = 0; i < cloud.NumberOfOwnPoints; ++i)
+      {
+        const double x = cloud.Coordinates[3 * i + axis];
+        if (x >= low && x <= upper[axis])
+        {
+          const double bin = std::floor((x - low) / width);
+          ++counts[static_cast<int>(std::min(std::max(bin, 0.0), Bins - 1.0))];
+        }
+      }
+      processes.Sum(counts);
+      int firstBin = -1, lastBin = -1;
+      std::int64_t cumulative = below;
+      for (int b = 0; b < Bins && lastBin < 0; ++b)
+      {
+        if (firstBin < 0 && cumulative + counts[b] > firstRank)
+        {
+          firstBin = b;
+          below = cumulative;
+        }
+        if (cumulative + counts[b] > lastRank)
+        {
+          lastBin = b;
+        }
+        cumulative += counts[b];
+      }
+      if (firstBin < 0 || lastBin < 0 || lastBin - firstBin >= EnoughBins)
+      {
+        break;
+      }
+      const double newUpper = lastBin + 1 < Bins ? low + (lastBin + 1) * width : upper[axis];
+      lower[axis] = low + firstBin * width;
+      upper[axis] = newUpper;
+    }
+  }
+}
+
 bool InSpacingSample(const double x[3],
   const double lower[3],
   const double upper[3],
@@ -246,8 +357,11 @@ bool InSpacingSample(const double x[3],
   for (int k = 0; k < 3; ++k)
   {
     const double extent = upper[k] - lower[k];
-    const double step = extent > 0.0 ? std::floor((x[k] - lower[k]) / extent * 1048576.0) : 0.0;
-    hash = Mix(hash ^ static_cast<std::uint64_t>(step));
+    // Points outside the box (far outliers) share the steps -1 and 2^20.
+    const double step = extent > 0.0
+      ? std::min(std::max(std::floor((x[k] - lower[k]) / extent * 1048576.0), -1.0), 1048576.0)
+      : 0.0;
+    hash = Mix(hash ^ static_cast<std::uint64_t>(static_cast<std::int64_t>(step)));
   }
   return hash % static_cast<std::uint64_t>(std::max<std::int64_t>(stride, 1)) == 0;
 }
@@ -277,19 +391,20 @@ double TypicalRadius(CloudPoints& cloud, const ProcessGroup& processes, int k)
   }
   // About 512 sample points whatever the size of the cloud.
   const std::int64_t stride = std::max<std::int64_t>(1, globalCount / 512);
-  double lower[3], upper[3];
+  double lower[3], upper[3], sampleLower[3], sampleUpper[3];
   cloud.OwnBounds(lower, upper);
   processes.Bounds(lower, upper);
-  const double diagonal = std::sqrt(vtkMath::Distance2BetweenPoints(lower, upper));
+  SamplingBox(cloud, processes, sampleLower, sampleUpper);
+  const double diagonal = std::sqrt(vtkMath::Distance2BetweenPoints(sampleLower, sampleUpper));
   // Cells for a first guess: the points spread over a square as wide as
-  // the bounding box's diagonal.
+  // the (sampling) box's diagonal.
   const double guess = diagonal * std::sqrt(k / (vtkMath::Pi() * globalCount));
   const GridLattice lattice = GridLattice::Make(lower, upper, globalCount, 0.5 * guess);
 
   std::vector<vtkIdType> sample;
   for (vtkIdType i = 0; i < cloud.NumberOfOwnPoints; ++i)
   {
-    if (InSpacingSample(&cloud.Coordinates[3 * i], lower, upper, stride))
+    if (InSpacingSample(&cloud.Coordinates[3 * i], sampleLower, sampleUpper, stride))
     {
       sample.push_back(i);
     }

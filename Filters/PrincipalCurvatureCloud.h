@@ -51,6 +51,9 @@ struct CloudPoints
 
   /// Bounding box of the own points (lower, upper); empty: lower > upper.
   void OwnBounds(double lower[3], double upper[3]) const;
+
+  /// Multiplies every coordinate by `factor` (a power of two: exact).
+  void ScaleCoordinates(double factor);
 };
 
 /// Collective operations over the processes of a parallel run; with no
@@ -63,6 +66,8 @@ public:
   int GetNumberOfProcesses() const;
 
   std::int64_t Sum(std::int64_t value) const;
+  /// Element-wise global sums, in place.
+  void Sum(std::vector<std::int64_t>& values) const;
   double Max(double value) const;
   int Min(int value) const;
   /// Global bounds from local ones (empty local boxes ignored).
@@ -80,9 +85,27 @@ private:
   vtkMultiProcessController* Controller = nullptr;
 };
 
+/// The power of two the filter multiplies all lengths by before it works,
+/// so that no coordinate, extent or squared distance can overflow or
+/// underflow: 1 (no change at all) for clouds whose largest coordinate
+/// magnitude lies within [2^-400, 2^400]; otherwise the factor that brings
+/// it to [1, 2). Powers of two scale exactly, so results are unchanged up to
+/// the unit.
+double WorkingLengthScale(const CloudPoints& cloud, const ProcessGroup& processes);
+
+/// The box the spacing sample is drawn in: the global bounding box, unless
+/// a few far points would squeeze the rest into a handful of quantisation
+/// steps; then, per axis, the range of the central 98 % of the points, found
+/// by zooming in with global histograms (integer counts: the same for any
+/// split among processes).
+void SamplingBox(const CloudPoints& cloud,
+  const ProcessGroup& processes,
+  double lower[3],
+  double upper[3]);
+
 /// True for the points of the sample that measures the cloud's spacing:
-/// chosen by a hash of the coordinates quantised to 2^20 steps of the global
-/// bounding box, so that the sample is the same whatever the order of the
+/// chosen by a hash of the coordinates quantised to 2^20 steps of the
+/// sampling box, so that the sample is the same whatever the order of the
 /// points, how they are split among processes, or the cloud's unit and
 /// position (up to points within 1e-16 of a quantisation step).
 bool InSpacingSample(const double x[3],

@@ -314,7 +314,11 @@ void PointCurvatureEstimator::Begin(const Vector3& point,
 {
   this->Point = point;
   this->Frame = MakeTangentFrame(unitNormal);
-  this->InverseScale = scale > 0.0 && std::isfinite(scale) ? 1.0 / scale : 0.0;
+  // 0 (nothing is estimated) unless both the scale and its inverse are
+  // finite: a subnormal scale would make the inverse infinite.
+  const double inverse = 1.0 / scale;
+  this->InverseScale =
+    scale > 0.0 && std::isfinite(scale) && std::isfinite(inverse) ? inverse : 0.0;
   this->ScaledPlaneDistance = planeDistance * this->InverseScale;
   this->Neighbors.clear();
   for (auto& bank : this->BankSums)

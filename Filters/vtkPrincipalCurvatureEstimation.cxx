@@ -102,6 +102,29 @@ struct CurvatureArrays
     this->ValidDirections->SetValue(i, r.ValidDirections);
   }
 
+  /// Back from the filter's working length unit (lengths multiplied by
+  /// `lengthScale`) to the input's: curvatures scale like 1 / length.
+  void ToInputUnit(double lengthScale)
+  {
+    if (lengthScale == 1.0)
+    {
+      return;
+    }
+    for (vtkIdType i = 0; i < this->Minimum->GetNumberOfTuples(); ++i)
+    {
+      for (vtkDoubleArray* curvature :
+        { this->Minimum.Get(), this->Maximum.Get(), this->Mean.Get(), this->SineFitRms.Get() })
+      {
+        curvature->SetValue(i, curvature->GetValue(i) * lengthScale);
+      }
+      this->Gauss->SetValue(i, this->Gauss->GetValue(i) * lengthScale * lengthScale);
+      for (vtkDoubleArray* length : { this->Surroundings.Get(), this->PlaneDistance.Get() })
+      {
+        length->SetValue(i, length->GetValue(i) / lengthScale);
+      }
+    }
+  }
+
   void AddTo(vtkPointData* pd) const
   {
     for (vtkDataArray* array : { static_cast<vtkDataArray*>(this->Minimum),
@@ -127,8 +150,9 @@ struct NeighborhoodRule
 {
   bool KNearest = false;
   int K = 0;
-  double Radius = 0.0;        // RADIUS mode
-  double PlaneDistance = 0.0; // fixed p, or 0 to use Ratio times the neighbourhood size
+  double Radius = 0.0;             // RADIUS mode
+  bool FixedPlaneDistance = false; // p = PlaneDistance, else Ratio times the radius
+  double PlaneDistance = 0.0;
   double Ratio = 0.0;
   bool Adjusted = false; // dynamic variable adjustment instead of the above
   pcurv::AdjustmentSettings Adjustment;
@@ -296,8 +320,10 @@ private:
       s = std::nextafter(s, HUGE_VAL); // the query keeps distances < s
     }
     this->Grid.GatherWithinRadius(x, s, scratch.Neighbors);
+    // A fixed p of 0 stays 0: every point is then flagged, never silently
+    // estimated with some other p.
     const double p =
-      this->Rule.PlaneDistance > 0.0 ? this->Rule.PlaneDistance : this->Rule.Ratio * s;
+      this->Rule.FixedPlaneDistance ? this->Rule.PlaneDistance : this->Rule.Ratio * s;
     this->EstimateGathered(point, s, p, scratch);
   }
 
@@ -447,12 +473,20 @@ void CopyGeometry(vtkPointSet* input, vtkPolyData* output)
   }
   output->GetPointData()->PassData(input->GetPointData());
 }
+/// A length the user gave, in the filter's working unit (finite: a huge
+/// radius stays the largest double).
+double ToWorkingUnit(double length, double lengthScale)
+{
+  return std::min(length * lengthScale, std::numeric_limits<double>::max());
+}
+
 /// The thresholds for every point from the settings and, where automatic,
 /// from the cloud (global in a parallel run); the radius the grid's cells
 /// are made for; and how far beyond its own points a process must see.
 void ChooseThresholds(vtkPrincipalCurvatureEstimation* self,
   pcurv::CloudPoints& cloud,
   const pcurv::ProcessGroup& processes,
+  double lengthScale,
   NeighborhoodRule& rule,
   double& cellRadius,
   double& reach)
@@ -481,7 +515,7 @@ void ChooseThresholds(vtkPrincipalCurvatureEstimation* self,
     // Scale free: the initial s holds about the first target count.
     adjustment.LengthUnit = self->GetAutomaticLengthUnit()
       ? typicalRadius / self->GetInitialSurroundingsThreshold()
-      : self->GetLengthUnit();
+      : ToWorkingUnit(self->GetLengthUnit(), lengthScale);
     cellRadius = adjustment.LengthUnit * self->GetInitialSurroundingsThreshold();
     rule.BlockLength = self->GetAdjustmentBlockLength() * adjustment.LengthUnit;
     // A block's points, and every query they make.
@@ -491,8 +525,9 @@ void ChooseThresholds(vtkPrincipalCurvatureEstimation* self,
   }
   if (!self->GetAutomaticThresholds())
   {
-    rule.PlaneDistance = self->GetPlaneDistanceThreshold();
-    rule.Radius = self->GetSurroundingsThreshold();
+    rule.FixedPlaneDistance = true;
+    rule.PlaneDistance = ToWorkingUnit(self->GetPlaneDistanceThreshold(), lengthScale);
+    rule.Radius = ToWorkingUnit(self->GetSurroundingsThreshold(), lengthScale);
   }
   else if (!rule.KNearest)
   {
@@ -561,18 +596,20 @@ int vtkPrincipalCurvatureEstimation::RequestData(vtkInformation*,
   {
     cloud.Read(input, normals);
   }
+  const double lengthScale = pcurv::WorkingLengthScale(cloud, processes);
+  cloud.ScaleCoordinates(lengthScale);
   NeighborhoodRule rule;
   double cellRadius = 0.0;
   double reach = 0.0;
-  ChooseThresholds(this, cloud, processes, rule, cellRadius, reach);
+  ChooseThresholds(this, cloud, processes, lengthScale, rule, cellRadius, reach);
   if (rule.Adjusted)
   {
-    this->UsedLengthUnit = rule.Adjustment.LengthUnit;
+    this->UsedLengthUnit = rule.Adjustment.LengthUnit / lengthScale;
   }
   else if (!rule.KNearest)
   {
-    this->UsedSurroundingsThreshold = rule.Radius;
-    this->UsedPlaneDistanceThreshold = rule.PlaneDistance;
+    this->UsedSurroundingsThreshold = rule.Radius / lengthScale;
+    this->UsedPlaneDistanceThreshold = rule.PlaneDistance / lengthScale;
   }
 
   const pcurv::GridLattice lattice = pcurv::GlobalLattice(cloud, processes, cellRadius);
@@ -629,6 +666,7 @@ int vtkPrincipalCurvatureEstimation::RequestData(vtkInformation*,
                        "or a bad coordinate or normal); they have Curvature_Valid = 0 and NaN "
                        "curvatures.");
   }
+  arrays.ToInputUnit(lengthScale);
   CopyGeometry(input, output);
   arrays.AddTo(output->GetPointData());
   return 1;

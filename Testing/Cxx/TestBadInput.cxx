@@ -267,10 +267,12 @@ void CheckContract(Checks& checks, const std::string& row, const Outcome& o, vtk
       const double size = std::max(std::fabs(kMin), std::fabs(kMax));
       ok = o.Valid(i) == 1 && std::isfinite(kMin) && std::isfinite(kMax) && kMax >= kMin &&
         std::fabs(mean - 0.5 * (kMin + kMax)) <= 1e-12 * size &&
-        std::fabs(gauss - kMin * kMax) <= 1e-12 * size * size && std::fabs(dot(a, a) - 1) < 1e-9 &&
-        std::fabs(dot(b, b) - 1) < 1e-9 && std::fabs(dot(a, b)) < 1e-9 &&
-        o.Value("Valid_Direction_Count", i) >= 3 && o.Value("Valid_Direction_Count", i) <= 16 &&
-        o.Value("Neighbor_Count", i) >= 3 && std::isfinite(o.Value("Sine_Fit_RMS", i));
+        // Gauss is +-Inf where kMin kMax overflows (|k| beyond 1e154).
+        (gauss == kMin * kMax || std::fabs(gauss - kMin * kMax) <= 1e-12 * size * size) &&
+        std::fabs(dot(a, a) - 1) < 1e-9 && std::fabs(dot(b, b) - 1) < 1e-9 &&
+        std::fabs(dot(a, b)) < 1e-9 && o.Value("Valid_Direction_Count", i) >= 3 &&
+        o.Value("Valid_Direction_Count", i) <= 16 && o.Value("Neighbor_Count", i) >= 3 &&
+        std::isfinite(o.Value("Sine_Fit_RMS", i));
       if (ok && normals)
       {
         double n[3];
@@ -1118,8 +1120,15 @@ void TestFarOutlier(Checks& checks)
 /// (TestBadInput --extreme NAME) so that a hang shows as that test's
 /// timeout: flagging the points is acceptable, a hang, a crash or a wrong
 /// number is not.
-///  - Tiny: a torus scaled by 1e-200 (squared distances underflow);
-///  - Huge: a torus scaled by 1e160 (squared distances overflow);
+///  - Tiny: a torus scaled by 2^-665 (about 1.6e-200: squared distances
+///    underflow);
+///  - Huge: a torus scaled by 2^531 (about 5.5e159: squared distances
+///    overflow).
+/// Powers of two, so that the scaled clouds are exact copies: the filter
+/// works in a power-of-two unit of its own and must then give the clean
+/// run's numbers; with another factor, rounding moves the automatic
+/// radius by an ulp and with it neighbours that lie exactly on it.
+///  Also:
 ///  - FarApart: a torus and one point 1e300 away;
 ///  - FullRange: a torus and two points at -1e308 and +1e308 (the box's
 ///    extent overflows).
@@ -1129,11 +1138,11 @@ bool TestExtremeMagnitudes(Checks& checks, const std::string& name)
   std::vector<std::array<double, 6>> extra;
   if (name == "Tiny")
   {
-    scale = 1e-200;
+    scale = std::ldexp(1.0, -665);
   }
   else if (name == "Huge")
   {
-    scale = 1e160;
+    scale = std::ldexp(1.0, 531);
   }
   else if (name == "FarApart")
   {
