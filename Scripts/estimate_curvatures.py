@@ -2,13 +2,33 @@
 
 Run with ParaView's Python:
 
-    pvpython Scripts/estimate_curvatures.py INPUT OUTPUT.vtp [options]
+    pvpython Scripts/estimate_curvatures.py INPUT OUTPUT.vtp
+        [--fit-mode Previous|New01|New02] [--neighbors N] [--k-nearest]
+        [--radius S [--plane-distance P]] [--dynamic-adjustment]
+        [--normals NAME] [--threads T] [--plugin PATH]
 
-INPUT may be .vtp, .vtu, .ply, an .off triangle mesh (its vertices, with
-normals from the triangles, oriented outwards), or text with one point per
-line (``x y z nx ny nz``, whitespace or comma separated: .xyz, .pwn, .txt,
-.csv).
-Writes OUTPUT (.vtp) with the curvature arrays and prints a summary table.
+INPUT may be:
+
+  .vtp .vtu       VTK XML point sets with a 3-component point-data normals
+                  array (or scalar arrays nx ny nz, combined into one);
+  .ply            PLY, normals as the vertex properties nx ny nz (or
+                  normal_x normal_y normal_z);
+  .xyz .pwn .txt .csv
+                  text, one point per line: x y z nx ny nz, separated by
+                  white space or commas; '#' starts a comment; an optional
+                  first line of column names (x, y, z, nx, ny, nz or
+                  normal_x, ...) picks the columns;
+  .off            a triangle mesh: its vertices, with normals computed from
+                  the triangles and turned outwards.
+
+Writes OUTPUT (.vtp, VTK XML inline binary) with the curvature arrays and
+prints a summary: point counts, the thresholds used, percentiles of the
+curvatures over the estimated points, and the time the filter took.
+
+The plugin is loaded from --plugin, else $PRINCIPAL_CURVATURES_PLUGIN, else
+the build tree next to this script; not at all if it is already loaded
+(PV_PLUGIN_CONFIG_FILE pointing at the build's plugins XML autoloads it).
+Exit code 0 on success, 2 with a message on bad input.
 """
 
 import argparse
@@ -16,68 +36,229 @@ import os
 import sys
 import time
 
-from paraview import simple
-from paraview import servermanager
+from paraview import servermanager, simple
 
 REPOSITORY = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 DEFAULT_PLUGIN = os.path.join(
     REPOSITORY, "build", "lib", "paraview-plugins", "PrincipalCurvatures", "PrincipalCurvatures.so")
 TEXT_EXTENSIONS = (".xyz", ".pwn", ".txt", ".csv")
+INPUT_EXTENSIONS = (".vtp", ".vtu", ".ply", ".off") + TEXT_EXTENSIONS
+FIT_MODES = ("Previous", "New01", "New02")
+
+# Names of normal components stored as separate scalars (matched ignoring case).
+NORMAL_COMPONENT_NAMES = (("nx", "ny", "nz"), ("normal_x", "normal_y", "normal_z"),
+                          ("normalx", "normaly", "normalz"), ("n_x", "n_y", "n_z"))
+CURVATURE_ARRAYS = ("Minimum_Curvature", "Maximum_Curvature", "Mean_Curvature", "Gauss_Curvature")
 
 
 def fail(message):
-    sys.stderr.write("estimate_curvatures: %s\n" % message)
+    """Prints message to stderr and exits with status 2."""
+    sys.stderr.write("estimate_curvatures: error: %s\n" % message)
     sys.exit(2)
 
 
+# ---------------------------------------------------------------------------
+# Command line
+
+
 def parse_arguments(argv):
-    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("input", help="point cloud with normals (.vtp .vtu .ply .xyz .pwn .txt .csv)")
+    """The command line, checked for contradictions."""
+    parser = argparse.ArgumentParser(
+        prog="pvpython estimate_curvatures.py", description=__doc__.split("\n\n")[0],
+        epilog="\n\n".join(__doc__.split("\n\n")[3:]), formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("input", help="point cloud with normals (%s)" % " ".join(INPUT_EXTENSIONS))
     parser.add_argument("output", help="result (.vtp)")
-    parser.add_argument("--fit-mode", choices=["Previous", "New01", "New02"], default="New01")
-    parser.add_argument("--neighbors", type=int, help="target neighbour count (automatic radius) or k")
-    parser.add_argument("--k-nearest", action="store_true", help="use the k nearest neighbours")
-    parser.add_argument("--radius", type=float, help="fixed surroundings-threshold s (turns automatic off)")
-    parser.add_argument("--plane-distance", type=float, help="fixed plane-distance-threshold p (with --radius)")
-    parser.add_argument("--dynamic-adjustment", action="store_true", help="the paper's dynamic variable adjustment")
-    parser.add_argument("--normals", default=None, help="name of the point-data normals array")
-    parser.add_argument("--threads", type=int, default=0, help="0 = all cores")
-    parser.add_argument("--plugin", default=os.environ.get("PRINCIPAL_CURVATURES_PLUGIN", DEFAULT_PLUGIN))
-    return parser.parse_args(argv)
+    parser.add_argument("--fit-mode", choices=FIT_MODES, default="New01",
+                        help="circle fit per direction (default: New01)")
+    parser.add_argument("--neighbors", type=int, metavar="N",
+                        help="target neighbour count of the automatic radius, or k with --k-nearest (default: 375)")
+    parser.add_argument("--k-nearest", action="store_true", help="use the N nearest neighbours instead of a radius")
+    parser.add_argument("--radius", type=float, metavar="S",
+                        help="fixed surroundings-threshold s (turns the automatic thresholds off)")
+    parser.add_argument("--plane-distance", type=float, metavar="P",
+                        help="fixed plane-distance-threshold p, with --radius (default: S / 10)")
+    parser.add_argument("--dynamic-adjustment", action="store_true",
+                        help="the paper's dynamic variable adjustment (replaces the neighbourhood options)")
+    parser.add_argument("--normals", metavar="NAME",
+                        help="point-data normals array (default: the normals attribute, or an array named like normals)")
+    parser.add_argument("--threads", type=int, default=0, metavar="T", help="at most T threads (default 0: all cores)")
+    parser.add_argument("--plugin", metavar="PATH",
+                        default=os.environ.get("PRINCIPAL_CURVATURES_PLUGIN") or DEFAULT_PLUGIN,
+                        help="PrincipalCurvatures.so (default: $PRINCIPAL_CURVATURES_PLUGIN or %(default)s)")
+    arguments = parser.parse_args(argv)
+
+    if arguments.neighbors is not None and arguments.neighbors < 3:
+        parser.error("--neighbors must be at least 3")
+    if arguments.radius is not None and not arguments.radius > 0:
+        parser.error("--radius must be positive")
+    if arguments.plane_distance is not None:
+        if arguments.radius is None:
+            parser.error("--plane-distance needs --radius (automatic thresholds derive it from the radius)")
+        if not arguments.plane_distance > 0:
+            parser.error("--plane-distance must be positive")
+    if arguments.dynamic_adjustment and (arguments.radius or arguments.k_nearest or arguments.neighbors):
+        parser.error("--dynamic-adjustment replaces --neighbors, --k-nearest and --radius")
+    if arguments.threads < 0:
+        parser.error("--threads must be 0 (all cores) or positive")
+    if os.path.splitext(arguments.output)[1].lower() != ".vtp":
+        parser.error("OUTPUT must be a .vtp file (got %s)" % arguments.output)
+    return arguments
+
+
+# ---------------------------------------------------------------------------
+# The plugin
 
 
 def load_plugin(path):
-    """Loads the plugin unless it was autoloaded (PV_PLUGIN_CONFIG_FILE)."""
+    """Makes simple.PrincipalCurvatures available: loads the plugin at path
+    unless it is already loaded (autoloaded through PV_PLUGIN_CONFIG_FILE)."""
     if hasattr(simple, "PrincipalCurvatures"):
         return
-    if not os.path.exists(path):
-        fail("plugin not found at %s (build it with Scripts/setup.sh, or pass --plugin)" % path)
-    simple.LoadPlugin(path, remote=False)
+    if not os.path.isfile(path):
+        fail("plugin not found: %s (build it with Scripts/setup.sh, or pass --plugin or set "
+             "PRINCIPAL_CURVATURES_PLUGIN)" % path)
+    try:
+        # Without ns, LoadPlugin adds the new functions to paraview.simple.
+        simple.LoadPlugin(path, remote=False)
+    except RuntimeError as error:
+        fail("cannot load the plugin: %s" % error)
     if not hasattr(simple, "PrincipalCurvatures"):
         fail("loading %s did not provide the PrincipalCurvatures filter" % path)
 
 
-def read_text_cloud(path):
-    """A trivial producer holding the x y z nx ny nz points of a text file."""
+# ---------------------------------------------------------------------------
+# Reading clouds
+
+
+def producer_of(cloud):
+    """A pipeline source (TrivialProducer) holding an in-memory data set."""
+    producer = simple.TrivialProducer()
+    producer.GetClientSideObject().SetOutput(cloud)
+    return producer
+
+
+def polydata_cloud(points, normals):
+    """A vtkPolyData without cells: the points and a 'Normals' point array."""
     import numpy
-    from vtkmodules.numpy_interface import dataset_adapter
+    from vtkmodules.util.numpy_support import numpy_to_vtk
+    from vtkmodules.vtkCommonCore import vtkPoints
     from vtkmodules.vtkCommonDataModel import vtkPolyData
 
-    with open(path) as handle:
-        rows = [line.replace(",", " ").split() for line in handle if line.strip() and not line.startswith("#")]
+    cloud = vtkPolyData()
+    vtk_points = vtkPoints()
+    vtk_points.SetData(numpy_to_vtk(numpy.ascontiguousarray(points, dtype=numpy.float64), deep=True))
+    cloud.SetPoints(vtk_points)
+    vtk_normals = numpy_to_vtk(numpy.ascontiguousarray(normals, dtype=numpy.float64), deep=True)
+    vtk_normals.SetName("Normals")
+    cloud.GetPointData().SetNormals(vtk_normals)
+    return cloud
+
+
+def normal_columns(names):
+    """Indices of the x y z and normal components among column or property
+    names (ignoring case), or None where missing."""
+    lower = [name.lower() for name in names]
+    position = [lower.index(c) if c in lower else None for c in ("x", "y", "z")]
+    for triple in NORMAL_COMPONENT_NAMES:
+        if all(c in lower for c in triple):
+            return position, [lower.index(c) for c in triple]
+    return position, None
+
+
+def is_number(word):
     try:
-        values = numpy.array([[float(v) for v in row[:6]] for row in rows if len(row) >= 6])
+        float(word)
+        return True
+    except ValueError:
+        return False
+
+
+def read_text_cloud(path):
+    """A source holding the points of a text file: x y z nx ny nz per line,
+    white space or comma separated, with an optional header line of names."""
+    import numpy
+
+    with open(path) as handle:
+        lines = [line.split("#")[0].replace(",", " ").replace(";", " ") for line in handle]
+    first = next((i for i, line in enumerate(lines) if line.strip()), None)
+    if first is None:
+        fail("%s: no points (expected 'x y z nx ny nz' per line)" % path)
+    columns = [0, 1, 2], [3, 4, 5]
+    words = lines[first].split()
+    if not is_number(words[0]):  # a header line
+        columns = normal_columns(words)
+        if None in columns[0] or columns[1] is None:
+            fail("%s: the header names no x, y, z, nx, ny, nz columns (%s)" % (path, " ".join(words)))
+        lines = lines[first + 1:]
+    if not any(line.strip() for line in lines):
+        fail("%s: no points (expected 'x y z nx ny nz' per line)" % path)
+    try:
+        values = numpy.loadtxt(lines, dtype=numpy.float64, ndmin=2)
     except ValueError as error:
-        fail("%s: not 'x y z nx ny nz' per line (%s)" % (path, error))
-    if values.size == 0:
-        fail("%s: no line with 6 numbers (x y z nx ny nz)" % path)
-    cloud = dataset_adapter.WrapDataObject(vtkPolyData())
-    cloud.Points = numpy.ascontiguousarray(values[:, :3])
-    cloud.PointData.append(numpy.ascontiguousarray(values[:, 3:6]), "Normals")
-    cloud.VTKObject.GetPointData().SetActiveNormals("Normals")
-    producer = simple.TrivialProducer()
-    producer.GetClientSideObject().SetOutput(cloud.VTKObject)
-    return producer
+        fail("%s: not 'x y z nx ny nz' per line: %s" % (path, str(error).split(";")[0]))
+    if values.shape[1] <= max(columns[0] + columns[1]):
+        fail("%s: no normals: %d columns, expected x y z nx ny nz" % (path, values.shape[1]))
+    return producer_of(polydata_cloud(values[:, columns[0]], values[:, columns[1]]))
+
+
+PLY_TYPES = {"char": "i1", "int8": "i1", "uchar": "u1", "uint8": "u1", "short": "i2", "int16": "i2",
+             "ushort": "u2", "uint16": "u2", "int": "i4", "int32": "i4", "uint": "u4", "uint32": "u4",
+             "float": "f4", "float32": "f4", "double": "f8", "float64": "f8"}
+
+
+def read_ply_header(handle):
+    """Format and elements ([name, count, [(type, property name)]]) of a PLY
+    file; leaves handle at the start of the data."""
+    if handle.readline().strip() != b"ply":
+        return None, []
+    file_format, elements = None, []
+    for line in handle:
+        words = line.decode("ascii", "replace").split()
+        if not words or words[0] in ("comment", "obj_info"):
+            continue
+        if words[0] == "end_header":
+            break
+        if words[0] == "format":
+            file_format = words[1]
+        elif words[0] == "element":
+            elements.append([words[1], int(words[2]), []])
+        elif words[0] == "property" and elements:
+            elements[-1][2].append((" ".join(words[1:-1]), words[-1]))
+    return file_format, elements
+
+
+def read_ply_with_named_normals(path):
+    """The vertices of a PLY file whose normals VTK's reader ignores (it
+    knows only nx ny nz): normal_x normal_y normal_z and the like. Needs the
+    vertices as the first element, with scalar properties. None if the file
+    declares no normals at all."""
+    import numpy
+
+    with open(path, "rb") as handle:
+        file_format, elements = read_ply_header(handle)
+        vertex = next((e for e in elements if e[0] == "vertex"), None)
+        if vertex is None:
+            return None
+        names = [name for _, name in vertex[2]]
+        position, normal = normal_columns(names)
+        if normal is None or None in position:
+            return None
+        if elements[0] is not vertex or any(t not in PLY_TYPES for t, _ in vertex[2]):
+            fail("%s: normals as %s, but not in a layout this script reads (the vertex element "
+                 "first, scalar properties): rename them nx ny nz" % (path, " ".join(names[i] for i in normal)))
+        count = vertex[1]
+        print("normals from the PLY vertex properties %s" % " ".join(names[i] for i in normal))
+        if file_format == "ascii":
+            lines = [handle.readline() for _ in range(count)]
+            values = numpy.loadtxt(lines, dtype=numpy.float64, ndmin=2)
+        elif file_format in ("binary_little_endian", "binary_big_endian"):
+            order = "<" if file_format == "binary_little_endian" else ">"
+            dtype = numpy.dtype([(name, order + PLY_TYPES[t]) for t, name in vertex[2]])
+            records = numpy.frombuffer(handle.read(count * dtype.itemsize), dtype=dtype, count=count)
+            values = numpy.column_stack([records[name].astype(numpy.float64) for name in names])
+        else:
+            fail("%s: unknown PLY format %s" % (path, file_format))
+    return producer_of(polydata_cloud(values[:, position], values[:, normal]))
 
 
 def read_off_mesh(path):
@@ -86,7 +267,7 @@ def read_off_mesh(path):
     roughly star-shaped scan such as the Stanford bunny)."""
     import numpy
     from vtkmodules.numpy_interface import dataset_adapter
-    from vtkmodules.vtkCommonCore import vtkIdTypeArray
+    from vtkmodules.util.numpy_support import numpy_to_vtkIdTypeArray
     from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
     from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
 
@@ -99,16 +280,14 @@ def read_off_mesh(path):
     first = 2 if len(words[0]) == 1 else 1
     vertices, faces = int(header[0]), int(header[1])
     points = numpy.array([[float(v) for v in row[:3]] for row in words[first:first + vertices]])
-    polygons = [[int(v) for v in row[1:1 + int(row[0])]] for row in words[first + vertices:first + vertices + faces]]
+    polygons = [[int(v) for v in row[:1 + int(row[0])]] for row in words[first + vertices:first + vertices + faces]]
+    if not polygons:
+        fail("%s: an OFF mesh without faces has no normals" % path)
     mesh = dataset_adapter.WrapDataObject(vtkPolyData())
     mesh.Points = points
-    connectivity = numpy.concatenate([[len(p)] + p for p in polygons]).astype(numpy.int64)
     cells = vtkCellArray()
-    ids = vtkIdTypeArray()
-    ids.SetNumberOfValues(len(connectivity))
-    for i, v in enumerate(connectivity):
-        ids.SetValue(i, int(v))
-    cells.ImportLegacyFormat(ids)
+    legacy = numpy.concatenate(polygons).astype(numpy.int64)  # count, ids, count, ids, ...
+    cells.ImportLegacyFormat(numpy_to_vtkIdTypeArray(legacy, deep=True))
     mesh.VTKObject.SetPolys(cells)
     normals = vtkPolyDataNormals()
     normals.SetInputData(mesh.VTKObject)
@@ -121,93 +300,110 @@ def read_off_mesh(path):
     outward = ((cloud.Points - cloud.Points.mean(axis=0)) * cloud.PointData["Normals"]).sum(axis=1)
     if numpy.median(outward) < 0:
         cloud.PointData["Normals"][:] *= -1
-    producer = simple.TrivialProducer()
-    producer.GetClientSideObject().SetOutput(cloud.VTKObject)
-    return producer
+    return producer_of(cloud.VTKObject)
+
+
+def point_arrays(source):
+    """{name: number of components} of the source's point data."""
+    arrays = source.PointData
+    return {name: arrays[name].GetNumberOfComponents() for name in arrays.keys()}
+
+
+def normals_attribute(source):
+    """The name of the array flagged as the point normals, or None."""
+    from vtkmodules.vtkCommonDataModel import vtkDataSetAttributes
+
+    information = source.GetDataInformation().DataInformation.GetPointDataInformation()
+    array = information.GetAttributeInformation(vtkDataSetAttributes.NORMALS)
+    return array.GetName() if array is not None and array.GetNumberOfComponents() == 3 else None
+
+
+def named_normals(source):
+    """3-component point arrays whose name contains 'normal', 'Normals' first."""
+    names = [name for name, components in point_arrays(source).items()
+             if components == 3 and "normal" in name.lower()]
+    return sorted(names, key=lambda name: name != "Normals")
+
+
+def has_normals(source):
+    """Whether the source has a 3-component normals array to choose by default."""
+    return normals_attribute(source) is not None or bool(named_normals(source))
+
+
+def combine_normal_components(source):
+    """A Calculator adding a 3-component 'Normals' array made of scalar
+    arrays nx ny nz (or normal_x ...), or None if the source has none."""
+    scalars = [name for name, components in point_arrays(source).items() if components == 1]
+    _, normal = normal_columns(scalars)
+    if normal is None:
+        return None
+    x, y, z = (scalars[i] for i in normal)
+    print("normals from the point arrays %s %s %s" % (x, y, z))
+    combined = simple.Calculator(Input=source, AttributeType="Point Data", ResultArrayName="Normals",
+                                 ResultNormals=1, Function="%s*iHat + %s*jHat + %s*kHat" % (x, y, z))
+    combined.UpdatePipeline()
+    return combined
 
 
 def open_cloud(path):
-    if not os.path.exists(path):
+    """A pipeline source for the cloud in path, updated, and with a
+    3-component normals array where the file stores normals differently."""
+    if not os.path.isfile(path):
         fail("input not found: %s" % path)
     extension = os.path.splitext(path)[1].lower()
     if extension == ".vtp":
-        return simple.XMLPolyDataReader(FileName=[path])
-    if extension == ".vtu":
-        return simple.XMLUnstructuredGridReader(FileName=[path])
-    if extension == ".ply":
-        return simple.PLYReader(FileNames=[path])
-    if extension in TEXT_EXTENSIONS:
-        return read_text_cloud(path)
-    if extension == ".off":
-        return read_off_mesh(path)
-    fail("unknown input type '%s' (use .vtp .vtu .ply .off .xyz .pwn .txt .csv)" % extension)
+        source = simple.XMLPolyDataReader(FileName=[path])
+    elif extension == ".vtu":
+        source = simple.XMLUnstructuredGridReader(FileName=[path])
+    elif extension == ".ply":
+        source = simple.PLYReader(FileNames=[path])
+    elif extension in TEXT_EXTENSIONS:
+        source = read_text_cloud(path)
+    elif extension == ".off":
+        source = read_off_mesh(path)
+    else:
+        fail("unknown input type '%s' of %s (use %s)" % (extension, path, " ".join(INPUT_EXTENSIONS)))
+    source.UpdatePipeline()  # fills the array lists the filter's Normals domain reads
+    if source.GetDataInformation().GetNumberOfPoints() == 0:
+        fail("%s: no points (unreadable or empty file)" % path)
+    if extension == ".ply" and not has_normals(source):
+        source = read_ply_with_named_normals(path) or source
+        source.UpdatePipeline()
+    if not has_normals(source):
+        source = combine_normal_components(source) or source
+    return source
 
 
 def choose_normals(source, requested):
-    """The normals array: the requested one, else 'Normals', else the first 3-component array."""
-    arrays = source.PointData
-    names = [arrays[i].GetName() for i in range(len(arrays))]
+    """The normals array to use: the requested one; else the array flagged
+    as the normals attribute; else a 3-component array named like normals.
+    Exits with a message if there is none."""
+    arrays = point_arrays(source)
+    listing = ", ".join("%s (%d)" % item for item in sorted(arrays.items())) or "none"
     if requested:
-        if requested not in names:
-            fail("no point-data array named '%s' (have: %s)" % (requested, ", ".join(names) or "none"))
+        if requested not in arrays:
+            fail("no point-data array named '%s' (have: %s)" % (requested, listing))
+        if arrays[requested] != 3:
+            fail("the array '%s' has %d components, normals need 3" % (requested, arrays[requested]))
         return requested
-    for name in ["Normals", "normals", "Normal"] + names:
-        if name in names and arrays[name].GetNumberOfComponents() == 3:
-            return name
-    fail("the input has no 3-component point-data normals array (have: %s)" % (", ".join(names) or "none"))
+    found = normals_attribute(source) or next(iter(named_normals(source)), None)
+    if found is None:
+        fail("no normals: no 3-component point-data normals array and no nx ny nz "
+             "(point arrays: %s); name one with --normals" % listing)
+    return found
 
 
-def percentiles_row(name, values):
-    import numpy
-    finite = values[numpy.isfinite(values)]
-    if finite.size == 0:
-        return "%-20s %s" % (name, "no estimate")
-    p = numpy.percentile(finite, [0, 5, 50, 95, 100])
-    return "%-20s %12.5g %12.5g %12.5g %12.5g %12.5g" % ((name,) + tuple(p))
+# ---------------------------------------------------------------------------
+# Running and reporting
 
 
-def summarize(output, seconds, fit_mode):
-    import numpy
-    from vtkmodules.util.numpy_support import vtk_to_numpy
-
-    data = output.GetPointData()
-    array = lambda name: vtk_to_numpy(data.GetArray(name))
-    valid = array("Curvature_Valid")
-    n = output.GetNumberOfPoints()
-    print("points               %d" % n)
-    print("estimated            %d (%.2f %%)" % (valid.sum(), 100.0 * valid.sum() / max(n, 1)))
-    print("not estimated        %d" % (n - valid.sum()))
-    print("fit mode             %s" % fit_mode)
-    print("filter time          %.3f s" % seconds)
-    print("neighbours (median)  %g" % numpy.median(array("Neighbor_Count")))
-    print("s used (median)      %.6g" % numpy.nanmedian(array("Surroundings_Threshold")))
-    print("p used (median)      %.6g" % numpy.nanmedian(array("Plane_Distance_Threshold")))
-    print()
-    print("%-20s %12s %12s %12s %12s %12s" % ("array", "min", "5 %", "median", "95 %", "max"))
-    for name in ("Minimum_Curvature", "Maximum_Curvature", "Mean_Curvature", "Gauss_Curvature"):
-        print(percentiles_row(name, array(name)))
-    if data.GetArray("Exact_Minimum_Curvature") is not None:
-        exact_min, exact_max = array("Exact_Minimum_Curvature"), array("Exact_Maximum_Curvature")
-        scale = max(numpy.abs(exact_min).max(), numpy.abs(exact_max).max(), 1e-300)
-        ok = valid.astype(bool)
-        print()
-        print("against the exact curvatures in the input (mean |k - exact| / max |exact|):")
-        print("  k_min %.5f   k_max %.5f" % (
-            numpy.abs(array("Minimum_Curvature")[ok] - exact_min[ok]).mean() / scale,
-            numpy.abs(array("Maximum_Curvature")[ok] - exact_max[ok]).mean() / scale))
-
-
-def main(argv):
-    arguments = parse_arguments(argv)
-    load_plugin(arguments.plugin)
-    source = open_cloud(arguments.input)
-    source.UpdatePipeline()  # fills the array lists the filter's domains need
-    normals = choose_normals(source, arguments.normals)
-
-    curvatures = simple.PrincipalCurvatures(Input=source)
-    curvatures.Normals = ["POINTS", normals]
+def configure(curvatures, arguments):
+    """Sets the filter's properties from the command line."""
     curvatures.FitMode = arguments.fit_mode
     curvatures.NumberOfThreads = arguments.threads
+    if arguments.dynamic_adjustment:
+        curvatures.DynamicAdjustment = 1
+        return
     if arguments.neighbors:
         curvatures.NumberOfNeighbors = arguments.neighbors
     if arguments.k_nearest:
@@ -216,22 +412,116 @@ def main(argv):
         curvatures.AutomaticThresholds = 0
         curvatures.SurroundingsThreshold = arguments.radius
         curvatures.PlaneDistanceThreshold = arguments.plane_distance or 0.1 * arguments.radius
-    if arguments.dynamic_adjustment:
-        curvatures.DynamicAdjustment = 1
 
+
+def neighbourhood_description(curvatures):
+    """One line on the neighbourhood settings in use."""
+    if curvatures.DynamicAdjustment:
+        return "dynamic adjustment"
+    k, automatic = curvatures.NumberOfNeighbors, curvatures.AutomaticThresholds
+    if curvatures.NeighborhoodMode == "K Nearest":
+        neighbours = "the %d nearest points" % k
+        plane = "p = %g x median distance to the %d-th neighbour" % (curvatures.PlaneDistanceRatio, k) \
+            if automatic else "p = %g" % curvatures.PlaneDistanceThreshold
+    elif automatic:
+        neighbours = "radius s = median distance to the %d-th neighbour" % k
+        plane = "p = %g s" % curvatures.PlaneDistanceRatio
+    else:
+        neighbours = "radius s = %g" % curvatures.SurroundingsThreshold
+        plane = "p = %g" % curvatures.PlaneDistanceThreshold
+    return "%s, %s" % (neighbours, plane)
+
+
+def percentiles_row(name, values):
+    """name, then min, 5 %, median, 95 %, max of values."""
+    import numpy
+
+    if values.size == 0:
+        return "%-26s %s" % (name, "no estimate")
+    row = numpy.percentile(values, [0, 5, 50, 95, 100])
+    return "%-26s" % name + "".join(" %12.5g" % v for v in row)
+
+
+def summarize(output, seconds, description):
+    """Prints the summary table of the filter's output."""
+    import numpy
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+
+    data = output.GetPointData()
+
+    def array(name):
+        return vtk_to_numpy(data.GetArray(name))
+
+    n = output.GetNumberOfPoints()
+    valid = array("Curvature_Valid").astype(bool)
+    estimated = int(valid.sum())
+    share = 100.0 / max(n, 1)
+    for label, value in description:
+        print("%-26s %s" % (label, value))
+    print("%-26s %d" % ("points", n))
+    print("%-26s %d (%.2f %%)" % ("estimated", estimated, estimated * share))
+    print("%-26s %d (%.2f %%)" % ("not estimated", n - estimated, (n - estimated) * share))
+    if estimated:
+        for name in ("Neighbor_Count", "Surroundings_Threshold", "Plane_Distance_Threshold"):
+            print("%-26s %.6g (median)" % (name, numpy.median(array(name)[valid])))
+    print("%-26s %.3f s" % ("filter time", seconds))
+    if not estimated:
+        sys.stderr.write("estimate_curvatures: warning: no point was estimated (too few neighbours? "
+                         "try a larger --radius or --neighbors)\n")
+    print()
+    print("%-26s %12s %12s %12s %12s %12s" % ("at estimated points", "min", "5 %", "median", "95 %", "max"))
+    for name in CURVATURE_ARRAYS:
+        print(percentiles_row(name, array(name)[valid]))
+
+    if estimated and all(data.GetArray(name) is not None
+                         for name in ("Exact_Minimum_Curvature", "Exact_Maximum_Curvature")):
+        exact_min, exact_max = array("Exact_Minimum_Curvature"), array("Exact_Maximum_Curvature")
+        scale = max(numpy.abs(exact_min).max(), numpy.abs(exact_max).max(), 1e-300)
+        print()
+        print("against the exact curvatures in the input (mean |k - exact| / max |exact|):")
+        print("  k_min %.5f   k_max %.5f" % (
+            numpy.abs(array("Minimum_Curvature")[valid] - exact_min[valid]).mean() / scale,
+            numpy.abs(array("Maximum_Curvature")[valid] - exact_max[valid]).mean() / scale))
+
+
+def main(argv):
+    arguments = parse_arguments(argv)
+    output_folder = os.path.dirname(os.path.abspath(arguments.output))
+    if not os.path.isdir(output_folder):
+        fail("the output's folder does not exist: %s" % output_folder)
+    load_plugin(arguments.plugin)
+    source = open_cloud(arguments.input)
+    normals = choose_normals(source, arguments.normals)
+
+    curvatures = simple.PrincipalCurvatures(Input=source)
+    curvatures.Normals = ["POINTS", normals]
+    configure(curvatures, arguments)
     start = time.perf_counter()
     curvatures.UpdatePipeline()
     seconds = time.perf_counter() - start
 
+    result = servermanager.Fetch(curvatures)
+    if result is None or result.GetPointData().GetArray("Curvature_Valid") is None:
+        fail("the filter produced no curvatures (see the messages above)")
     # Inline binary, not the default appended data: ParaView 5.11 with a
     # current Debian 12 libexpat (2.5.0-1+deb12u2 and later) cannot read
     # appended data (VTK issue 19258).
+    written = time.time()
     writer = simple.XMLPolyDataWriter(Input=curvatures, FileName=arguments.output, DataMode="Binary")
-    writer.UpdatePipeline()
-    summarize(servermanager.Fetch(curvatures), seconds, arguments.fit_mode)
+    writer.UpdatePipeline()  # the writer reports failures only as VTK errors: check the file
+    if not os.path.isfile(arguments.output) or os.path.getmtime(arguments.output) < written - 1.0:
+        fail("could not write %s (see the messages above)" % arguments.output)
+
+    summarize(result, seconds, [
+        ("input", arguments.input),
+        ("normals", normals),
+        ("fit mode", arguments.fit_mode),
+        ("neighbourhood", neighbourhood_description(curvatures)),
+    ])
     print()
     print("wrote %s" % arguments.output)
+    return 0
 
 
 if __name__ == "__main__":
-    main(sys.argv[1:])
+    sys.exit(main(sys.argv[1:]))
