@@ -320,27 +320,66 @@ void PointCurvatureEstimator::Begin(const Vector3& point,
   this->InverseScale =
     scale > 0.0 && std::isfinite(scale) && std::isfinite(inverse) ? inverse : 0.0;
   this->ScaledPlaneDistance = planeDistance * this->InverseScale;
-  this->Neighbors.clear();
-  for (auto& bank : this->BankSums)
+  this->NumberOfLocals = 0;
+  this->ListCount.fill(0);
+}
+
+void PointCurvatureEstimator::ReserveDirectionLists(std::size_t neighbors)
+{
+  if (neighbors <= this->ListCapacity)
   {
-    bank.fill(CgaSums{});
+    return;
   }
+  const std::size_t capacity = std::max(neighbors, 2 * this->ListCapacity);
+  for (std::vector<double>* list : { &this->ListH, &this->ListD, &this->ListAlong })
+  {
+    std::vector<double> grown(NumberOfDirections * capacity);
+    for (int i = 0; i < NumberOfDirections; ++i)
+    {
+      std::copy_n(
+        list->data() + i * this->ListCapacity, this->ListCount[i], grown.data() + i * capacity);
+    }
+    list->swap(grown);
+  }
+  this->ListCapacity = capacity;
 }
 
 void PointCurvatureEstimator::AddNeighbors(const double* coordinates, std::size_t count)
 {
   const DirectionTable& table = Directions();
-  // Locals, not members: the stores into the sums below could alias
-  // members and would make the compiler reload them every iteration.
+  std::size_t stored = this->NumberOfLocals;
+  // Every list can take every neighbour: the appends below write one entry
+  // past a list's end whether or not they keep it.
+  this->ReserveDirectionLists(stored + count);
+  if (this->Neighbors.size() < stored + count)
+  {
+    // Grown, never shrunk: resizing per query cleared the entries each time.
+    this->Neighbors.resize(std::max(stored + count, 2 * this->Neighbors.size()));
+  }
+  // Locals, not members: the stores below could alias members and would
+  // make the compiler reload them every iteration.
   const double inverseScale = this->InverseScale;
   const double p = this->ScaledPlaneDistance;
   const Vector3 x = this->Point;
   const Vector3 n = this->Frame.Normal;
   const Vector3 v = this->Frame.V0;
   const Vector3 w = this->Frame.W0;
-  std::size_t stored = this->Neighbors.size();
-  this->Neighbors.resize(stored + count);
+  const std::size_t capacity = this->ListCapacity;
+  double* listH = this->ListH.data();
+  double* listD = this->ListD.data();
+  double* listAlong = this->ListAlong.data();
+  std::array<std::size_t, NumberOfDirections> listCount = this->ListCount;
   Local* out = this->Neighbors.data();
+  // Writes the entry at the end of direction i's list, and keeps it when
+  // `keep` is 1: no branch depends on the neighbour.
+  auto append = [&](int i, std::uint32_t keep, double h, double squaredDistance, double along)
+  {
+    const std::size_t at = i * capacity + listCount[i];
+    listH[at] = h;
+    listD[at] = squaredDistance;
+    listAlong[at] = along;
+    listCount[i] += keep;
+  };
   for (std::size_t k = 0; k < count; ++k)
   {
     const double* q = coordinates + 3 * k;
@@ -355,7 +394,6 @@ void PointCurvatureEstimator::AddNeighbors(const double* coordinates, std::size_
     {
       continue; // the query point itself, or a duplicate of it
     }
-    std::array<CgaSums, NumberOfDirections>& sums = this->BankSums[stored % Banks];
     std::uint32_t mask;
     if (NearNormalLine(tx, ty, p)) // rare: a few percent of the neighbours
     {
@@ -363,30 +401,71 @@ void PointCurvatureEstimator::AddNeighbors(const double* coordinates, std::size_
       for (std::uint32_t rest = mask; rest; rest &= rest - 1)
       {
         const int direction = __builtin_ctz(rest);
-        sums[direction].Add(
-          h, squaredDistance, tx * table.Cos[direction] + ty * table.Sin[direction]);
+        append(
+          direction, 1, h, squaredDistance, tx * table.Cos[direction] + ty * table.Sin[direction]);
       }
     }
     else
     {
       // The common case: at most the two directions bounding the sector.
-      // Both are always updated, with weight 0 or 1, so that no branch
-      // depends on the neighbour.
       const int sector = SectorOf(tx, ty);
       const int next = (sector + 1) % NumberOfDirections;
       const std::uint32_t inSector = InHalfPlane(table, sector, tx, ty, p);
       const std::uint32_t inNext = InHalfPlane(table, next, tx, ty, p);
       mask = (inSector << sector) | (inNext << next);
-      sums[sector].AddWeighted(static_cast<int>(inSector),
-        h,
-        squaredDistance,
-        tx * table.Cos[sector] + ty * table.Sin[sector]);
-      sums[next].AddWeighted(
-        static_cast<int>(inNext), h, squaredDistance, tx * table.Cos[next] + ty * table.Sin[next]);
+      append(sector, inSector, h, squaredDistance, tx * table.Cos[sector] + ty * table.Sin[sector]);
+      append(next, inNext, h, squaredDistance, tx * table.Cos[next] + ty * table.Sin[next]);
     }
     out[stored++] = Local{ h, squaredDistance, mask };
   }
-  this->Neighbors.resize(stored);
+  this->ListCount = listCount;
+  this->NumberOfLocals = stored;
+}
+
+void PointCurvatureEstimator::SumDirectionLists()
+{
+  for (int i = 0; i < NumberOfDirections; ++i)
+  {
+    const double* h = this->ListH.data() + i * this->ListCapacity;
+    const double* d = this->ListD.data() + i * this->ListCapacity;
+    const double* along = this->ListAlong.data() + i * this->ListCapacity;
+    const std::size_t count = this->ListCount[i];
+    // Two interleaved partial sums: independent chains of adds, combined
+    // in a fixed order (results do not depend on anything but the list).
+    double h2[2] = { 0.0, 0.0 }, hs[2] = { 0.0, 0.0 }, hd[2] = { 0.0, 0.0 };
+    double ds[2] = { 0.0, 0.0 }, d2[2] = { 0.0, 0.0 }, extent[2] = { 0.0, 0.0 };
+    std::size_t j = 0;
+    for (; j + 1 < count; j += 2)
+    {
+      for (int lane = 0; lane < 2; ++lane)
+      {
+        const double hj = h[j + lane], dj = d[j + lane];
+        h2[lane] += hj * hj;
+        hs[lane] += hj;
+        hd[lane] += hj * dj;
+        ds[lane] += dj;
+        d2[lane] += dj * dj;
+        extent[lane] = std::max(extent[lane], along[j + lane]);
+      }
+    }
+    if (j < count)
+    {
+      h2[0] += h[j] * h[j];
+      hs[0] += h[j];
+      hd[0] += h[j] * d[j];
+      ds[0] += d[j];
+      d2[0] += d[j] * d[j];
+      extent[0] = std::max(extent[0], along[j]);
+    }
+    CgaSums& sums = this->Sums[i];
+    sums.SumH2 = h2[0] + h2[1];
+    sums.SumH = hs[0] + hs[1];
+    sums.SumHD = hd[0] + hd[1];
+    sums.SumD = ds[0] + ds[1];
+    sums.SumD2 = d2[0] + d2[1];
+    sums.Count = static_cast<int>(count);
+    sums.Extent = std::max(extent[0], extent[1]);
+  }
 }
 
 void PointCurvatureEstimator::FitDirections(const FitSettings& settings)
@@ -424,8 +503,9 @@ void PointCurvatureEstimator::FitDirections(const FitSettings& settings)
     // candidate circle; keep the candidate with the smaller Q.
     std::array<double, NumberOfDirections> quality12{};
     std::array<double, NumberOfDirections> quality23{};
-    for (const Local& local : this->Neighbors)
+    for (std::size_t k = 0; k < this->NumberOfLocals; ++k)
     {
+      const Local& local = this->Neighbors[k];
       for (std::uint32_t rest = local.Mask; rest; rest &= rest - 1)
       {
         const int direction = __builtin_ctz(rest);
@@ -455,22 +535,15 @@ void PointCurvatureEstimator::FitDirections(const FitSettings& settings)
 PointCurvature PointCurvatureEstimator::Estimate(const FitSettings& settings)
 {
   PointCurvature result;
-  result.NeighborCount = static_cast<int>(this->Neighbors.size());
+  result.NeighborCount = static_cast<int>(this->NumberOfLocals);
   this->DirectionValid.fill(false);
   this->DirectionCurvature.fill(0.0);
-  if (this->Neighbors.empty() || !(this->InverseScale > 0.0) || !(this->ScaledPlaneDistance > 0.0))
+  if (this->NumberOfLocals == 0 || !(this->InverseScale > 0.0) ||
+    !(this->ScaledPlaneDistance > 0.0))
   {
     return result;
   }
-  for (int i = 0; i < NumberOfDirections; ++i)
-  {
-    CgaSums total = this->BankSums[0][i];
-    for (int bank = 1; bank < Banks; ++bank)
-    {
-      total.Merge(this->BankSums[bank][i]);
-    }
-    this->Sums[i] = total;
-  }
+  this->SumDirectionLists();
   this->FitDirections(settings);
   const SineFit sine = FitSine(this->DirectionCurvature, this->DirectionValid);
   PrincipalCurvaturesFromSine(sine, this->Frame, result);

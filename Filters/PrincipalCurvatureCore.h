@@ -74,33 +74,6 @@ struct CgaSums
     this->SumD2 += squaredDistance * squaredDistance;
     ++this->Count;
   }
-
-  void Merge(const CgaSums& other)
-  {
-    this->SumH2 += other.SumH2;
-    this->SumH += other.SumH;
-    this->SumHD += other.SumHD;
-    this->SumD += other.SumD;
-    this->SumD2 += other.SumD2;
-    this->Count += other.Count;
-    this->Extent = std::max(this->Extent, other.Extent);
-  }
-
-  /// Add(h, D) when weight is 1, nothing when it is 0, without a branch;
-  /// `along` is the point's reach along the direction.
-  void AddWeighted(int weight, double h, double squaredDistance, double along)
-  {
-    this->Extent = std::max(this->Extent, weight * along);
-    const double w = weight;
-    const double wh = w * h;
-    const double whD = wh * squaredDistance;
-    this->SumH2 += wh * h;
-    this->SumH += wh;
-    this->SumHD += whD;
-    this->SumD += w * squaredDistance;
-    this->SumD2 += w * squaredDistance * squaredDistance;
-    this->Count += weight;
-  }
 };
 
 /// Result of one circle fit, paper sign.
@@ -207,7 +180,7 @@ public:
   void AddNeighbor(const double q[3]) { this->AddNeighbors(q, 1); }
 
   /// Number of neighbours added so far (coincident points excluded).
-  int GetNumberOfNeighbors() const { return static_cast<int>(this->Neighbors.size()); }
+  int GetNumberOfNeighbors() const { return static_cast<int>(this->NumberOfLocals); }
 
   /// Bins the neighbours into the 16 half planes, fits a circle per
   /// direction and a sine over the directions.
@@ -228,20 +201,27 @@ private:
     std::uint32_t Mask;     ///< the directions it belongs to
   };
 
-  /// Consecutive neighbours (read cell by cell) often fall into the same
-  /// direction: adding them into one set of sums chains every add to the
-  /// previous store. Rotating over a few banks of sums breaks the chains;
-  /// the banks are added up in a fixed order (deterministic).
-  static constexpr int Banks = 4;
-
+  /// Makes room in every direction's list for `neighbors` entries in all.
+  void ReserveDirectionLists(std::size_t neighbors);
+  /// The six sums of each direction from its list, in list order.
+  void SumDirectionLists();
   void FitDirections(const FitSettings& settings);
 
   Vector3 Point{ { 0.0, 0.0, 0.0 } };
   TangentFrame Frame{};
   double InverseScale = 0.0;
   double ScaledPlaneDistance = 0.0;
-  std::vector<Local> Neighbors;
-  std::array<std::array<CgaSums, NumberOfDirections>, Banks> BankSums{};
+  std::vector<Local> Neighbors; // the first NumberOfLocals are this query's
+  std::size_t NumberOfLocals = 0;
+  /// Each direction's points as they were added: height, squared distance
+  /// and reach along the direction (units of the scale), direction i at
+  /// [i * ListCapacity, i * ListCapacity + ListCount[i]). The sums are formed
+  /// direction by direction afterwards, with the running sums in registers:
+  /// adding each neighbour straight into sums picked at run time chained the
+  /// adds through memory and cost about three times as much.
+  std::vector<double> ListH, ListD, ListAlong;
+  std::size_t ListCapacity = 0;
+  std::array<std::size_t, NumberOfDirections> ListCount{};
   std::array<CgaSums, NumberOfDirections> Sums{};
   std::array<double, NumberOfDirections> DirectionCurvature{};
   std::array<bool, NumberOfDirections> DirectionValid{};
