@@ -23,10 +23,13 @@ GridLattice GridLattice::Make(const double lower[3],
   const double maximumCells = 4.0 * static_cast<double>(count) + 4096.0;
   for (;;)
   {
+    // Each axis's count capped, so that the product cannot overflow to
+    // Inf (an extent of 1e110 in cells of 1 would, and Inf would make the
+    // cell size Inf).
     double cells = 1.0;
     for (int k = 0; k < 3; ++k)
     {
-      cells *= std::floor((upper[k] - lower[k]) / size) + 1.0;
+      cells *= std::min(std::floor((upper[k] - lower[k]) / size) + 1.0, maximumCells + 1.0);
     }
     if (cells <= maximumCells)
     {

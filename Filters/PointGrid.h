@@ -121,8 +121,10 @@ private:
     const double cell =
       std::floor((coordinate - this->Lattice.Origin[axis]) / this->Lattice.CellSize) -
       static_cast<double>(this->Low[axis]);
-    return static_cast<std::int64_t>(
-      std::min(std::max(cell, 0.0), static_cast<double>(this->Dimensions[axis] - 1)));
+    // Comparisons that send NaN to cell 0: a NaN cast to an integer is
+    // undefined behaviour.
+    const double last = static_cast<double>(this->Dimensions[axis] - 1);
+    return static_cast<std::int64_t>(cell > 0.0 ? (cell < last ? cell : last) : 0.0);
   }
 
   GridLattice Lattice;
