@@ -1,5 +1,7 @@
 #include "PointGrid.h"
 
+#include <limits>
+
 namespace pcurv
 {
 
@@ -15,27 +17,31 @@ GridLattice GridLattice::Make(const double lower[3],
     lattice.Origin[k] = lower[k];
     diagonalSquared += (upper[k] - lower[k]) * (upper[k] - lower[k]);
   }
+  // Finite whatever the box: a cell size of Inf would turn cell
+  // coordinates into NaN.
+  const double largest = std::numeric_limits<double>::max();
   double size = cellSize > 0.0 && std::isfinite(cellSize) ? cellSize : std::sqrt(diagonalSquared);
   if (!(size > 0.0))
   {
     size = 1.0; // all points coincide
   }
+  size = std::min(size, largest);
   const double maximumCells = 4.0 * static_cast<double>(count) + 4096.0;
   for (;;)
   {
-    // Each axis's count capped, so that the product cannot overflow to
-    // Inf (an extent of 1e110 in cells of 1 would, and Inf would make the
-    // cell size Inf).
+    // In halves, so that an extent beyond the largest double stays finite;
+    // each axis's count capped, so that the product cannot overflow.
     double cells = 1.0;
     for (int k = 0; k < 3; ++k)
     {
-      cells *= std::min(std::floor((upper[k] - lower[k]) / size) + 1.0, maximumCells + 1.0);
+      const double halfExtent = 0.5 * upper[k] - 0.5 * lower[k];
+      cells *= std::min(std::floor(halfExtent / (0.5 * size)) + 1.0, maximumCells + 1.0);
     }
-    if (cells <= maximumCells)
+    if (cells <= maximumCells || size == largest)
     {
       break;
     }
-    size *= std::max(1.01, std::cbrt(cells / maximumCells));
+    size = std::min(size * std::max(1.01, std::cbrt(cells / maximumCells)), largest);
   }
   lattice.CellSize = size;
   return lattice;
@@ -185,29 +191,34 @@ double PointGrid::SquaredDistanceToKth(const double x[3], int k, std::vector<dou
   {
     return 0.0;
   }
+  auto squaredDistance = [x](const double* q)
+  {
+    const double dx = q[0] - x[0], dy = q[1] - x[1], dz = q[2] - x[2];
+    return dx * dx + dy * dy + dz * dz;
+  };
   double radius = this->Lattice.CellSize;
   for (;;)
   {
     scratch.clear();
-    // Beyond the whole box every point is found: the loop ends.
-    const bool everything = radius > 2.0 * this->Diagonal + this->Lattice.CellSize;
-    const double queryRadius = everything ? std::nextafter(radius, HUGE_VAL) : radius;
-    this->ForEachWithinRadius(x,
-      queryRadius,
-      [&](const double* q, std::int64_t)
+    // Beyond the whole box, or where radius^2 overflows (and with it maybe
+    // the distances, which no radius query would then find), every point
+    // is taken: the loop ends.
+    if (radius > 2.0 * this->Diagonal + this->Lattice.CellSize || !std::isfinite(radius * radius))
+    {
+      for (std::int64_t j = 0; j < this->GetNumberOfPoints(); ++j)
       {
-        const double dx = q[0] - x[0], dy = q[1] - x[1], dz = q[2] - x[2];
-        scratch.push_back(dx * dx + dy * dy + dz * dz);
-      });
+        scratch.push_back(squaredDistance(&this->Sorted[3 * j]));
+      }
+      std::nth_element(scratch.begin(), scratch.begin() + (wanted - 1), scratch.end());
+      return scratch[wanted - 1];
+    }
+    this->ForEachWithinRadius(
+      x, radius, [&](const double* q, std::int64_t) { scratch.push_back(squaredDistance(q)); });
     const std::int64_t found = static_cast<std::int64_t>(scratch.size());
     if (found >= wanted)
     {
       std::nth_element(scratch.begin(), scratch.begin() + (wanted - 1), scratch.end());
       return scratch[wanted - 1];
-    }
-    if (everything)
-    {
-      return found > 0 ? *std::max_element(scratch.begin(), scratch.end()) : 0.0;
     }
     // Points on a surface: the count grows with the area, radius^2.
     const double factor =

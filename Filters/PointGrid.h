@@ -45,10 +45,16 @@ struct GridLattice
     std::int64_t count,
     double cellSize);
 
+  /// (coordinate - origin) / cell size, computed in halves: the difference
+  /// of two finite coordinates can overflow, half of it cannot.
+  double CellCoordinate(double coordinate, int axis) const
+  {
+    return (0.5 * coordinate - 0.5 * this->Origin[axis]) / (0.5 * this->CellSize);
+  }
+
   std::int64_t Cell(double coordinate, int axis) const
   {
-    return static_cast<std::int64_t>(
-      std::floor((coordinate - this->Origin[axis]) / this->CellSize));
+    return static_cast<std::int64_t>(std::floor(this->CellCoordinate(coordinate, axis)));
   }
 };
 
@@ -118,8 +124,7 @@ private:
   /// Local cell index along an axis, clamped to the stored cells.
   std::int64_t CellIndex(double coordinate, int axis) const
   {
-    const double cell =
-      std::floor((coordinate - this->Lattice.Origin[axis]) / this->Lattice.CellSize) -
+    const double cell = std::floor(this->Lattice.CellCoordinate(coordinate, axis)) -
       static_cast<double>(this->Low[axis]);
     // Comparisons that send NaN to cell 0: a NaN cast to an integer is
     // undefined behaviour.

@@ -9,8 +9,8 @@
 # Fails when either step finds a crash, a hang, undefined behaviour or a
 # broken invariant.
 #   Scripts/fuzz.sh [seconds=60]
-# PCURV_FUZZ_SKIP_KNOWN_BUGS=1 keeps the fuzzer away from the open PointGrid
-# bugs listed in the target's source, to fuzz the rest meanwhile.
+# PCURV_FUZZ_SKIP_KNOWN_BUGS=1 keeps the fuzzer away from overflowing grid
+# coordinates (where the fixed PointGrid bugs of the target's source were).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-60}

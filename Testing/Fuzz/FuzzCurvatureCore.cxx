@@ -41,11 +41,11 @@ constexpr double Pi = 3.14159265358979323846;
 const double NaN = std::numeric_limits<double>::quiet_NaN();
 const double Inf = std::numeric_limits<double>::infinity();
 #ifdef PCURV_FUZZ_SKIP_KNOWN_BUGS
-// Known PointGrid bugs (see Testing/Fuzz/regressions and the
-// BadInputExtreme tests): an infinite loop when the box's extent or squared
-// distances overflow, an infinite cell size (then a NaN cell index) when
-// the number of cells overflows. With this defined, grid coordinates stay
-// below 1e90, to fuzz everything else while those bugs are open.
+// Grid coordinates below 1e90, away from the PointGrid bugs this target
+// once found (Testing/Fuzz/regressions, now fixed: an infinite loop when
+// the box's extent or squared distances overflow, an infinite cell size
+// and then a NaN cell index when the number of cells overflows), should
+// such a bug come back while something else is being fuzzed.
 constexpr double LargestGridCoordinate = 1e90;
 #else
 constexpr double LargestGridCoordinate = std::numeric_limits<double>::max();
