@@ -201,6 +201,15 @@ SineFit FitSine(const std::array<double, NumberOfDirections>& curvature,
   fit.Offset = coefficients[0];
   fit.CosineAmplitude = coefficients[1];
   fit.SineAmplitude = coefficients[2];
+  // Residuals relative to the largest curvature, so that their squares
+  // cannot overflow where the curvatures are huge (a degenerate
+  // neighbourhood can give 1e283).
+  double largest = 0.0;
+  for (int i = 0; i < NumberOfDirections; ++i)
+  {
+    largest = valid[i] ? std::max(largest, std::fabs(curvature[i])) : largest;
+  }
+  const double unit = largest > 0.0 ? largest : 1.0;
   double squaredResidual = 0.0;
   for (int i = 0; i < NumberOfDirections; ++i)
   {
@@ -209,12 +218,13 @@ SineFit FitSine(const std::array<double, NumberOfDirections>& curvature,
       const int doubled = (2 * i) % NumberOfDirections;
       const double model = fit.Offset + fit.CosineAmplitude * table.Cos[doubled] +
         fit.SineAmplitude * table.Sin[doubled];
-      squaredResidual += (curvature[i] - model) * (curvature[i] - model);
+      const double residual = curvature[i] / unit - model / unit;
+      squaredResidual += residual * residual;
     }
   }
-  fit.RmsResidual = std::sqrt(squaredResidual / fit.ValidDirections);
+  fit.RmsResidual = unit * std::sqrt(squaredResidual / fit.ValidDirections);
   fit.Valid = std::isfinite(fit.Offset) && std::isfinite(fit.CosineAmplitude) &&
-    std::isfinite(fit.SineAmplitude);
+    std::isfinite(fit.SineAmplitude) && std::isfinite(fit.RmsResidual);
   return fit;
 }
 
@@ -231,6 +241,12 @@ void PrincipalCurvaturesFromSine(const SineFit& fit, const TangentFrame& frame, 
   // Paper sign: extremes offset -/+ amplitude; output sign flips them.
   out.MaximumCurvature = -(fit.Offset - amplitude);
   out.MinimumCurvature = -(fit.Offset + amplitude);
+  if (!std::isfinite(out.MaximumCurvature) || !std::isfinite(out.MinimumCurvature))
+  {
+    out.Valid = false; // beyond the double range: no estimate
+    out.MaximumCurvature = out.MinimumCurvature = 0.0;
+    return;
+  }
   // The paper-sign maximum (output minimum) lies at 2 theta = atan2(As, Ac).
   const double theta = 0.5 * std::atan2(fit.SineAmplitude, fit.CosineAmplitude);
   const double c = std::cos(theta);
@@ -320,42 +336,43 @@ void PointCurvatureEstimator::Begin(const Vector3& point,
   this->InverseScale =
     scale > 0.0 && std::isfinite(scale) && std::isfinite(inverse) ? inverse : 0.0;
   this->ScaledPlaneDistance = planeDistance * this->InverseScale;
-  this->NumberOfLocals = 0;
+  this->NumberOfAdded = 0;
   this->ListCount.fill(0);
 }
 
-void PointCurvatureEstimator::ReserveDirectionLists(std::size_t neighbors)
+void PointCurvatureEstimator::Reserve(std::size_t neighbors)
 {
-  if (neighbors <= this->ListCapacity)
+  if (neighbors <= this->Capacity)
   {
     return;
   }
-  const std::size_t capacity = std::max(neighbors, 2 * this->ListCapacity);
-  for (std::vector<double>* list : { &this->ListH, &this->ListD, &this->ListAlong })
+  const std::size_t capacity = std::max(neighbors, 2 * this->Capacity);
+  // The neighbours added so far keep their places...
+  for (std::vector<double>* added :
+    { &this->AddedH, &this->AddedD, &this->AddedTx, &this->AddedTy })
   {
-    std::vector<double> grown(NumberOfDirections * capacity);
-    for (int i = 0; i < NumberOfDirections; ++i)
-    {
-      std::copy_n(
-        list->data() + i * this->ListCapacity, this->ListCount[i], grown.data() + i * capacity);
-    }
-    list->swap(grown);
+    added->resize(capacity);
   }
-  this->ListCapacity = capacity;
+  this->AddedMask.resize(capacity);
+  // ... and every list its entries, at the list's new start.
+  std::vector<std::uint32_t> grown(NumberOfLists * capacity);
+  for (int list = 0; list < NumberOfLists; ++list)
+  {
+    std::copy_n(this->ListIndices.data() + list * this->Capacity,
+      this->ListCount[list],
+      grown.data() + list * capacity);
+  }
+  this->ListIndices.swap(grown);
+  this->Capacity = capacity;
 }
 
 void PointCurvatureEstimator::AddNeighbors(const double* coordinates, std::size_t count)
 {
   const DirectionTable& table = Directions();
-  std::size_t stored = this->NumberOfLocals;
+  std::size_t added = this->NumberOfAdded;
   // Every list can take every neighbour: the appends below write one entry
   // past a list's end whether or not they keep it.
-  this->ReserveDirectionLists(stored + count);
-  if (this->Neighbors.size() < stored + count)
-  {
-    // Grown, never shrunk: resizing per query cleared the entries each time.
-    this->Neighbors.resize(std::max(stored + count, 2 * this->Neighbors.size()));
-  }
+  this->Reserve(added + count);
   // Locals, not members: the stores below could alias members and would
   // make the compiler reload them every iteration.
   const double inverseScale = this->InverseScale;
@@ -364,25 +381,24 @@ void PointCurvatureEstimator::AddNeighbors(const double* coordinates, std::size_
   const Vector3 n = this->Frame.Normal;
   const Vector3 v = this->Frame.V0;
   const Vector3 w = this->Frame.W0;
-  const std::size_t capacity = this->ListCapacity;
-  double* listH = this->ListH.data();
-  double* listD = this->ListD.data();
-  double* listAlong = this->ListAlong.data();
-  std::array<std::size_t, NumberOfDirections> listCount = this->ListCount;
-  Local* out = this->Neighbors.data();
-  // Writes the entry at the end of direction i's list, and keeps it when
+  const std::size_t capacity = this->Capacity;
+  double* addedH = this->AddedH.data();
+  double* addedD = this->AddedD.data();
+  double* addedTx = this->AddedTx.data();
+  double* addedTy = this->AddedTy.data();
+  std::uint32_t* addedMask = this->AddedMask.data();
+  std::uint32_t* indices = this->ListIndices.data();
+  std::array<std::uint32_t, NumberOfLists> listCount = this->ListCount;
+  // Writes neighbour `k` at the end of list `list`, and keeps it when
   // `keep` is 1: no branch depends on the neighbour.
-  auto append = [&](int i, std::uint32_t keep, double h, double squaredDistance, double along)
+  auto append = [&](int list, std::uint32_t keep, std::size_t k)
   {
-    const std::size_t at = i * capacity + listCount[i];
-    listH[at] = h;
-    listD[at] = squaredDistance;
-    listAlong[at] = along;
-    listCount[i] += keep;
+    indices[list * capacity + listCount[list]] = static_cast<std::uint32_t>(k);
+    listCount[list] += keep;
   };
-  for (std::size_t k = 0; k < count; ++k)
+  for (std::size_t j = 0; j < count; ++j)
   {
-    const double* q = coordinates + 3 * k;
+    const double* q = coordinates + 3 * j;
     const double dx = (q[0] - x[0]) * inverseScale;
     const double dy = (q[1] - x[1]) * inverseScale;
     const double dz = (q[2] - x[2]) * inverseScale;
@@ -394,15 +410,17 @@ void PointCurvatureEstimator::AddNeighbors(const double* coordinates, std::size_
     {
       continue; // the query point itself, or a duplicate of it
     }
+    addedH[added] = h;
+    addedD[added] = squaredDistance;
+    addedTx[added] = tx;
+    addedTy[added] = ty;
     std::uint32_t mask;
     if (NearNormalLine(tx, ty, p)) // rare: a few percent of the neighbours
     {
       mask = AllHalfPlanesMask(table, tx, ty, p);
       for (std::uint32_t rest = mask; rest; rest &= rest - 1)
       {
-        const int direction = __builtin_ctz(rest);
-        append(
-          direction, 1, h, squaredDistance, tx * table.Cos[direction] + ty * table.Sin[direction]);
+        append(__builtin_ctz(rest), 1, added);
       }
     }
     else
@@ -413,49 +431,56 @@ void PointCurvatureEstimator::AddNeighbors(const double* coordinates, std::size_
       const std::uint32_t inSector = InHalfPlane(table, sector, tx, ty, p);
       const std::uint32_t inNext = InHalfPlane(table, next, tx, ty, p);
       mask = (inSector << sector) | (inNext << next);
-      append(sector, inSector, h, squaredDistance, tx * table.Cos[sector] + ty * table.Sin[sector]);
-      append(next, inNext, h, squaredDistance, tx * table.Cos[next] + ty * table.Sin[next]);
+      append(sector, inSector, added);
+      append(NumberOfDirections + next, inNext, added);
     }
-    out[stored++] = Local{ h, squaredDistance, mask };
+    addedMask[added] = mask;
+    ++added;
   }
   this->ListCount = listCount;
-  this->NumberOfLocals = stored;
+  this->NumberOfAdded = added;
 }
 
 void PointCurvatureEstimator::SumDirectionLists()
 {
+  const DirectionTable& table = Directions();
+  const double* addedH = this->AddedH.data();
+  const double* addedD = this->AddedD.data();
+  const double* addedTx = this->AddedTx.data();
+  const double* addedTy = this->AddedTy.data();
   for (int i = 0; i < NumberOfDirections; ++i)
   {
-    const double* h = this->ListH.data() + i * this->ListCapacity;
-    const double* d = this->ListD.data() + i * this->ListCapacity;
-    const double* along = this->ListAlong.data() + i * this->ListCapacity;
-    const std::size_t count = this->ListCount[i];
-    // Two interleaved partial sums: independent chains of adds, combined
-    // in a fixed order (results do not depend on anything but the list).
+    const double c = table.Cos[i], s = table.Sin[i];
+    // Two interleaved partial sums per list: independent chains of adds,
+    // combined in a fixed order (results depend on nothing but the lists).
     double h2[2] = { 0.0, 0.0 }, hs[2] = { 0.0, 0.0 }, hd[2] = { 0.0, 0.0 };
     double ds[2] = { 0.0, 0.0 }, d2[2] = { 0.0, 0.0 }, extent[2] = { 0.0, 0.0 };
-    std::size_t j = 0;
-    for (; j + 1 < count; j += 2)
+    auto add = [&](int lane, std::uint32_t k)
     {
-      for (int lane = 0; lane < 2; ++lane)
+      const double h = addedH[k], d = addedD[k];
+      h2[lane] += h * h;
+      hs[lane] += h;
+      hd[lane] += h * d;
+      ds[lane] += d;
+      d2[lane] += d * d;
+      extent[lane] = std::max(extent[lane], addedTx[k] * c + addedTy[k] * s);
+    };
+    std::uint32_t total = 0;
+    for (const int list : { i, NumberOfDirections + i })
+    {
+      const std::uint32_t* index = this->ListIndices.data() + list * this->Capacity;
+      const std::uint32_t count = this->ListCount[list];
+      std::uint32_t j = 0;
+      for (; j + 1 < count; j += 2)
       {
-        const double hj = h[j + lane], dj = d[j + lane];
-        h2[lane] += hj * hj;
-        hs[lane] += hj;
-        hd[lane] += hj * dj;
-        ds[lane] += dj;
-        d2[lane] += dj * dj;
-        extent[lane] = std::max(extent[lane], along[j + lane]);
+        add(0, index[j]);
+        add(1, index[j + 1]);
       }
-    }
-    if (j < count)
-    {
-      h2[0] += h[j] * h[j];
-      hs[0] += h[j];
-      hd[0] += h[j] * d[j];
-      ds[0] += d[j];
-      d2[0] += d[j] * d[j];
-      extent[0] = std::max(extent[0], along[j]);
+      if (j < count)
+      {
+        add(0, index[j]);
+      }
+      total += count;
     }
     CgaSums& sums = this->Sums[i];
     sums.SumH2 = h2[0] + h2[1];
@@ -463,7 +488,7 @@ void PointCurvatureEstimator::SumDirectionLists()
     sums.SumHD = hd[0] + hd[1];
     sums.SumD = ds[0] + ds[1];
     sums.SumD2 = d2[0] + d2[1];
-    sums.Count = static_cast<int>(count);
+    sums.Count = static_cast<int>(total);
     sums.Extent = std::max(extent[0], extent[1]);
   }
 }
@@ -503,16 +528,16 @@ void PointCurvatureEstimator::FitDirections(const FitSettings& settings)
     // candidate circle; keep the candidate with the smaller Q.
     std::array<double, NumberOfDirections> quality12{};
     std::array<double, NumberOfDirections> quality23{};
-    for (std::size_t k = 0; k < this->NumberOfLocals; ++k)
+    for (std::size_t k = 0; k < this->NumberOfAdded; ++k)
     {
-      const Local& local = this->Neighbors[k];
-      for (std::uint32_t rest = local.Mask; rest; rest &= rest - 1)
+      const double h = this->AddedH[k], squaredDistance = this->AddedD[k];
+      for (std::uint32_t rest = this->AddedMask[k]; rest; rest &= rest - 1)
       {
         const int direction = __builtin_ctz(rest);
         quality12[direction] +=
-          DistanceToCircle(candidate12[direction].Curvature, local.H, local.SquaredDistance);
+          DistanceToCircle(candidate12[direction].Curvature, h, squaredDistance);
         quality23[direction] +=
-          DistanceToCircle(candidate23[direction].Curvature, local.H, local.SquaredDistance);
+          DistanceToCircle(candidate23[direction].Curvature, h, squaredDistance);
       }
     }
     for (int i = 0; i < NumberOfDirections; ++i)
@@ -535,11 +560,10 @@ void PointCurvatureEstimator::FitDirections(const FitSettings& settings)
 PointCurvature PointCurvatureEstimator::Estimate(const FitSettings& settings)
 {
   PointCurvature result;
-  result.NeighborCount = static_cast<int>(this->NumberOfLocals);
+  result.NeighborCount = static_cast<int>(this->NumberOfAdded);
   this->DirectionValid.fill(false);
   this->DirectionCurvature.fill(0.0);
-  if (this->NumberOfLocals == 0 || !(this->InverseScale > 0.0) ||
-    !(this->ScaledPlaneDistance > 0.0))
+  if (this->NumberOfAdded == 0 || !(this->InverseScale > 0.0) || !(this->ScaledPlaneDistance > 0.0))
   {
     return result;
   }

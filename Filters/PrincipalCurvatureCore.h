@@ -180,7 +180,7 @@ public:
   void AddNeighbor(const double q[3]) { this->AddNeighbors(q, 1); }
 
   /// Number of neighbours added so far (coincident points excluded).
-  int GetNumberOfNeighbors() const { return static_cast<int>(this->NumberOfLocals); }
+  int GetNumberOfNeighbors() const { return static_cast<int>(this->NumberOfAdded); }
 
   /// Bins the neighbours into the 16 half planes, fits a circle per
   /// direction and a sine over the directions.
@@ -193,17 +193,9 @@ public:
   static std::uint32_t DirectionMask(double tx, double ty, double p);
 
 private:
-  /// What the fits' second pass (New02's quality) needs of a neighbour.
-  struct Local
-  {
-    double H;               ///< height above the tangent plane, in units of the scale
-    double SquaredDistance; ///< |q - x|^2, in units of the scale
-    std::uint32_t Mask;     ///< the directions it belongs to
-  };
-
-  /// Makes room in every direction's list for `neighbors` entries in all.
-  void ReserveDirectionLists(std::size_t neighbors);
-  /// The six sums of each direction from its list, in list order.
+  /// Makes room for `neighbors` neighbours in all, keeping those added.
+  void Reserve(std::size_t neighbors);
+  /// The six sums of each direction from its lists, in list order.
   void SumDirectionLists();
   void FitDirections(const FitSettings& settings);
 
@@ -211,17 +203,27 @@ private:
   TangentFrame Frame{};
   double InverseScale = 0.0;
   double ScaledPlaneDistance = 0.0;
-  std::vector<Local> Neighbors; // the first NumberOfLocals are this query's
-  std::size_t NumberOfLocals = 0;
-  /// Each direction's points as they were added: height, squared distance
-  /// and reach along the direction (units of the scale), direction i at
-  /// [i * ListCapacity, i * ListCapacity + ListCount[i]). The sums are formed
-  /// direction by direction afterwards, with the running sums in registers:
-  /// adding each neighbour straight into sums picked at run time chained the
-  /// adds through memory and cost about three times as much.
-  std::vector<double> ListH, ListD, ListAlong;
-  std::size_t ListCapacity = 0;
-  std::array<std::size_t, NumberOfDirections> ListCount{};
+
+  /// The neighbours added so far, in the order added (units of the scale):
+  /// height above the tangent plane, squared distance, tangent coordinates,
+  /// and the directions each belongs to (New02's second pass reads them).
+  std::size_t NumberOfAdded = 0;
+  std::size_t Capacity = 0;
+  std::vector<double> AddedH, AddedD, AddedTx, AddedTy;
+  std::vector<std::uint32_t> AddedMask;
+
+  /// Per direction, two lists of indices into the above: the neighbours of
+  /// the sector the direction opens (role 0) and of the sector it closes
+  /// (role 1); list r * 16 + i at [(r * 16 + i) * Capacity, + ListCount).
+  /// Appending each neighbour to lists and summing them afterwards, list
+  /// by list with the running sums in registers, costs half as much as
+  /// adding it straight into sums picked at run time (each add then waits
+  /// for the previous store); two roles make two independent chains of
+  /// list appends instead of one.
+  static constexpr int NumberOfLists = 2 * NumberOfDirections;
+  std::vector<std::uint32_t> ListIndices;
+  std::array<std::uint32_t, NumberOfLists> ListCount{};
+
   std::array<CgaSums, NumberOfDirections> Sums{};
   std::array<double, NumberOfDirections> DirectionCurvature{};
   std::array<bool, NumberOfDirections> DirectionValid{};
