@@ -140,10 +140,16 @@ void PointGrid::Build(const double* coordinates, std::int64_t count, const GridL
 
 void PointGrid::GatherWithinRadius(const double x[3], double radius, std::vector<double>& out) const
 {
-  out.clear();
+  out.resize(3 * this->GatherWithinRadiusInto(x, radius, out));
+}
+
+std::size_t PointGrid::GatherWithinRadiusInto(const double x[3],
+  double radius,
+  std::vector<double>& out) const
+{
   if (this->Ids.empty() || !(radius > 0.0))
   {
-    return;
+    return 0;
   }
   std::array<std::int64_t, 3> low, high;
   for (int k = 0; k < 3; ++k)
@@ -160,7 +166,12 @@ void PointGrid::GatherWithinRadius(const double x[3], double radius, std::vector
       candidates += this->CellStart[row + high[0] + 1] - this->CellStart[row + low[0]];
     }
   }
-  out.resize(3 * candidates + 3); // one spare slot for the last, maybe rejected, write
+  // One spare slot for the last, maybe rejected, write.
+  const std::size_t needed = static_cast<std::size_t>(3 * candidates + 3);
+  if (out.size() < needed)
+  {
+    out.resize(needed);
+  }
   double* write = out.data();
   std::int64_t kept = 0;
   const double radiusSquared = radius * radius;
@@ -181,7 +192,7 @@ void PointGrid::GatherWithinRadius(const double x[3], double radius, std::vector
       }
     }
   }
-  out.resize(3 * kept);
+  return static_cast<std::size_t>(kept);
 }
 
 double PointGrid::SquaredDistanceToKth(const double x[3], int k, std::vector<double>& scratch) const

@@ -115,6 +115,13 @@ public:
   /// branch prediction.
   void GatherWithinRadius(const double x[3], double radius, std::vector<double>& out) const;
 
+  /// The same points into the first 3 n values of `buffer`, returning n;
+  /// `buffer` only grows, so that a buffer reused from query to query is
+  /// not cleared each time (resizing it cost 3 % of the filter's time).
+  std::size_t GatherWithinRadiusInto(const double x[3],
+    double radius,
+    std::vector<double>& buffer) const;
+
   /// Squared distance from x to its k-th nearest point (x itself counts
   /// when it is one of the points), found with growing radius queries.
   /// Returns the largest squared distance when there are fewer points.
