@@ -94,21 +94,80 @@ TangentFrame MakeTangentFrame(const Vector3& unitNormal)
   return frame;
 }
 
+namespace
+{
+/// The eigenvector of B's smallest eigenvalue by inverse iteration with a
+/// shift: start from the solution of B's last two rows with s_n = 1 (what
+/// the closed forms solve, close to the eigenvector when the points are
+/// near a circle), shift by its Rayleigh quotient (within the square of the
+/// start's error of lambda_min), and solve with the LDLT factors of
+/// B - shift I: each solve shrinks the other components by
+/// |lambda_min - shift| / |lambda - shift|, so one or two suffice. False
+/// when the iterates do not settle (two close small eigenvalues, an exactly
+/// singular shifted matrix): the caller then asks Eigen's iterative
+/// eigensolver. About 4x faster than that solver alone, which made
+/// Previous's pipeline 1.6x New01's.
+bool SmallestEigenvectorByInverseIteration(const Eigen::Matrix3d& B, Eigen::Vector3d& S)
+{
+  const double determinant = B(1, 1) * B(2, 2) - B(1, 2) * B(1, 2);
+  Eigen::Vector3d x(1.0,
+    (B(0, 2) * B(1, 2) - B(0, 1) * B(2, 2)) / determinant,
+    (B(0, 1) * B(1, 2) - B(0, 2) * B(1, 1)) / determinant);
+  if (!std::isfinite(x.squaredNorm()))
+  {
+    return false;
+  }
+  x.normalize();
+  const double shift = x.dot(B * x);
+  const Eigen::LDLT<Eigen::Matrix3d> factors(B - shift * Eigen::Matrix3d::Identity());
+  if (factors.info() != Eigen::Success)
+  {
+    return false;
+  }
+  for (int iteration = 0; iteration < 4; ++iteration)
+  {
+    Eigen::Vector3d next = factors.solve(x);
+    const double length = next.norm();
+    if (!(length > 0.0) || !std::isfinite(length))
+    {
+      return false;
+    }
+    next /= length;
+    if (next.dot(x) < 0.0)
+    {
+      next = -next; // the sign is free: keep the iterates comparable
+    }
+    const double change = (next - x).norm();
+    x = next;
+    if (change < 1e-13)
+    {
+      S = x;
+      return true;
+    }
+  }
+  return false;
+}
+} // namespace
+
 CircleFit FitPrevious(const CgaSums& sums)
 {
   const CgaMatrix m(sums);
   Eigen::Matrix3d B;
   B << m.a, m.b, m.c, m.b, m.d, m.e, m.c, m.e, m.f;
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
-  // The iterative solver: computeDirect loses the smallest eigenvector's
-  // accuracy when the eigenvalues spread over many orders of magnitude,
-  // which is the normal case here (a ~ sum h^2 is tiny next to d = N).
-  solver.compute(B);
-  if (solver.info() != Eigen::Success)
+  Eigen::Vector3d S;
+  if (!SmallestEigenvectorByInverseIteration(B, S))
   {
-    return CircleFit{};
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
+    // The iterative solver: computeDirect loses the smallest eigenvector's
+    // accuracy when the eigenvalues spread over many orders of magnitude,
+    // which is the normal case here (a ~ sum h^2 is tiny next to d = N).
+    solver.compute(B);
+    if (solver.info() != Eigen::Success)
+    {
+      return CircleFit{};
+    }
+    S = solver.eigenvectors().col(0);
   }
-  const Eigen::Vector3d S = solver.eigenvectors().col(0);
   const double sN = S[0];
   const double sInf = S[1];
   const double s0 = S[2];
