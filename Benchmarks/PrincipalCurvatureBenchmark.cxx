@@ -1426,8 +1426,8 @@ void PrintSummary(const Options& options, const Results& results, CsvFile& csv)
       }
     }
     note += "points. The sine fit is timed alone per point (FitSine + principal values and "
-            "directions) and subtracted from Estimate(); Estimate() also merges the four "
-            "banks of sums.";
+            "directions) and subtracted from Estimate(); Estimate() also forms each "
+            "direction's six sums from the lists AddNeighbors filled.";
     table.Print(
       Format("Phases, %s points, seconds for the whole cloud", SizeName(size.N).c_str()), note);
   }
