@@ -182,8 +182,8 @@ public:
   /// Number of neighbours added so far (coincident points excluded).
   int GetNumberOfNeighbors() const { return static_cast<int>(this->NumberOfAdded); }
 
-  /// Bins the neighbours into the 16 half planes, fits a circle per
-  /// direction and a sine over the directions.
+  /// Forms each direction's sums from the neighbours binned into its half
+  /// plane, fits a circle per direction and a sine over the directions.
   PointCurvature Estimate(const FitSettings& settings);
 
   /// Bit i is set when a neighbour at tangent coordinates (tx, ty) belongs
@@ -213,8 +213,9 @@ private:
   std::vector<std::uint32_t> AddedMask;
 
   /// Per direction, two lists of indices into the above: the neighbours of
-  /// the sector the direction opens (role 0) and of the sector it closes
-  /// (role 1); list r * 16 + i at [(r * 16 + i) * Capacity, + ListCount).
+  /// the sector the direction opens and those near the normal line (role
+  /// 0), and the neighbours of the sector it closes (role 1); list
+  /// r * 16 + i at [(r * 16 + i) * Capacity, + ListCount).
   /// Appending each neighbour to lists and summing them afterwards, list
   /// by list with the running sums in registers, costs half as much as
   /// adding it straight into sums picked at run time (each add then waits
