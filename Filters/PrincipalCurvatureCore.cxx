@@ -96,6 +96,26 @@ TangentFrame MakeTangentFrame(const Vector3& unitNormal)
 
 namespace
 {
+/// True when the unit eigenvector x of the symmetric B belongs to its
+/// smallest eigenvalue lambda = x' B x, well apart from the others: a shift
+/// from a poor start can make inverse iteration converge to the middle
+/// eigenvalue instead (found with three points nearly on a line). The other
+/// two eigenvalues are the roots of mu^2 - (c1 - lambda) mu + c2 -
+/// lambda (c1 - lambda) = 0, with c1 the trace and c2 the sum of the
+/// principal 2x2 minors; the smaller root in the stable form.
+bool IsSmallestEigenpair(const Eigen::Matrix3d& B, const Eigen::Vector3d& x)
+{
+  const double lambda = x.dot(B * x);
+  const double c1 = B.trace();
+  const double c2 = B(0, 0) * B(1, 1) - B(0, 1) * B(0, 1) + B(0, 0) * B(2, 2) - B(0, 2) * B(0, 2) +
+    B(1, 1) * B(2, 2) - B(1, 2) * B(1, 2);
+  const double sum = c1 - lambda;
+  const double product = c2 - lambda * sum;
+  const double discriminant = std::max(sum * sum - 4.0 * product, 0.0);
+  const double smallerOther = 2.0 * product / (sum + std::sqrt(discriminant));
+  return lambda < 0.5 * smallerOther;
+}
+
 /// The eigenvector of B's smallest eigenvalue by inverse iteration with a
 /// shift: start from the solution of B's last two rows with s_n = 1 (what
 /// the closed forms solve, close to the eigenvector when the points are
@@ -141,33 +161,43 @@ bool SmallestEigenvectorByInverseIteration(const Eigen::Matrix3d& B, Eigen::Vect
     x = next;
     if (change < 1e-13)
     {
-      S = x;
-      return true;
+      return IsSmallestEigenpair(B, x) ? (S = x, true) : false;
     }
   }
   return false;
 }
 } // namespace
 
-CircleFit FitPrevious(const CgaSums& sums)
+namespace
+{
+/// B of the sums, as an Eigen matrix.
+Eigen::Matrix3d CgaMatrixOf(const CgaSums& sums)
 {
   const CgaMatrix m(sums);
   Eigen::Matrix3d B;
   B << m.a, m.b, m.c, m.b, m.d, m.e, m.c, m.e, m.f;
-  Eigen::Vector3d S;
-  if (!SmallestEigenvectorByInverseIteration(B, S))
+  return B;
+}
+
+/// The eigenvector of the smallest eigenvalue from Eigen's iterative
+/// solver: computeDirect loses its accuracy when the eigenvalues spread
+/// over many orders of magnitude, which is the normal case here
+/// (a ~ sum h^2 is tiny next to d = N).
+bool SmallestEigenvectorByEigenSolver(const Eigen::Matrix3d& B, Eigen::Vector3d& S)
+{
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
+  solver.compute(B);
+  if (solver.info() != Eigen::Success)
   {
-    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
-    // The iterative solver: computeDirect loses the smallest eigenvector's
-    // accuracy when the eigenvalues spread over many orders of magnitude,
-    // which is the normal case here (a ~ sum h^2 is tiny next to d = N).
-    solver.compute(B);
-    if (solver.info() != Eigen::Success)
-    {
-      return CircleFit{};
-    }
-    S = solver.eigenvectors().col(0);
+    return false;
   }
+  S = solver.eigenvectors().col(0);
+  return true;
+}
+
+/// kappa = sign(s_n) s_0 / sqrt(s_n^2 - 2 s_inf s_0) of the sphere S.
+CircleFit CircleOfSphere(const Eigen::Vector3d& S)
+{
   const double sN = S[0];
   const double sInf = S[1];
   const double s0 = S[2];
@@ -177,6 +207,24 @@ CircleFit FitPrevious(const CgaSums& sums)
     return CircleFit{}; // imaginary or degenerate sphere
   }
   return MakeFit(std::copysign(1.0, sN) * s0 / std::sqrt(radicand));
+}
+} // namespace
+
+CircleFit FitPrevious(const CgaSums& sums)
+{
+  const Eigen::Matrix3d B = CgaMatrixOf(sums);
+  Eigen::Vector3d S;
+  if (!SmallestEigenvectorByInverseIteration(B, S) && !SmallestEigenvectorByEigenSolver(B, S))
+  {
+    return CircleFit{};
+  }
+  return CircleOfSphere(S);
+}
+
+CircleFit FitPreviousWithEigenSolver(const CgaSums& sums)
+{
+  Eigen::Vector3d S;
+  return SmallestEigenvectorByEigenSolver(CgaMatrixOf(sums), S) ? CircleOfSphere(S) : CircleFit{};
 }
 
 CircleFit FitEquations12(const CgaSums& sums)

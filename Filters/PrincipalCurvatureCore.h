@@ -88,6 +88,10 @@ struct CircleFit
 /// imaginary sphere (negative radicand).
 CircleFit FitPrevious(const CgaSums& sums);
 
+/// The same fit with the eigenvector from Eigen's iterative symmetric
+/// eigensolver alone: FitPrevious's fallback, and its reference in tests.
+CircleFit FitPreviousWithEigenSolver(const CgaSums& sums);
+
 /// kappa_12 = (a d - b^2) / (b e - c d): least squares with s_0 = 1.
 CircleFit FitEquations12(const CgaSums& sums);
 
