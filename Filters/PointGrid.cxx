@@ -44,6 +44,10 @@ GridLattice GridLattice::Make(const double lower[3],
     size = std::min(size * std::max(1.01, std::cbrt(cells / maximumCells)), largest);
   }
   lattice.CellSize = size;
+  for (int k = 0; k < 3; ++k)
+  {
+    lattice.LastCell[k] = std::floor((0.5 * upper[k] - 0.5 * lower[k]) / (0.5 * size));
+  }
   return lattice;
 }
 

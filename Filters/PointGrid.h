@@ -36,6 +36,12 @@ struct GridLattice
 {
   std::array<double, 3> Origin{ { 0.0, 0.0, 0.0 } };
   double CellSize = 1.0;
+  /// Index of the last cell along each axis: the lattice spans the box it
+  /// was made for, and points beyond it belong to its outermost cells. A
+  /// grid then stays as fine as its box needs even when a few points lie
+  /// far outside it; queries stay exact, since clamping keeps the order of
+  /// cells.
+  std::array<double, 3> LastCell{ { 0.0, 0.0, 0.0 } };
 
   /// A lattice over the box [lower, upper] holding `count` points, with
   /// cells of about `cellSize`, enlarged when the box would need far more
@@ -52,9 +58,12 @@ struct GridLattice
     return (0.5 * coordinate - 0.5 * this->Origin[axis]) / (0.5 * this->CellSize);
   }
 
+  /// The cell along an axis, clamped to the lattice (NaN to cell 0).
   std::int64_t Cell(double coordinate, int axis) const
   {
-    return static_cast<std::int64_t>(std::floor(this->CellCoordinate(coordinate, axis)));
+    const double cell = std::floor(this->CellCoordinate(coordinate, axis));
+    const double last = this->LastCell[axis];
+    return static_cast<std::int64_t>(cell > 0.0 ? (cell < last ? cell : last) : 0.0);
   }
 };
 
@@ -131,7 +140,7 @@ private:
   /// Local cell index along an axis, clamped to the stored cells.
   std::int64_t CellIndex(double coordinate, int axis) const
   {
-    const double cell = std::floor(this->Lattice.CellCoordinate(coordinate, axis)) -
+    const double cell = static_cast<double>(this->Lattice.Cell(coordinate, axis)) -
       static_cast<double>(this->Low[axis]);
     // Comparisons that send NaN to cell 0: a NaN cast to an integer is
     // undefined behaviour.

@@ -366,11 +366,27 @@ bool InSpacingSample(const double x[3],
   return hash % static_cast<std::uint64_t>(std::max<std::int64_t>(stride, 1)) == 0;
 }
 
+void GridBox(const CloudPoints& cloud,
+  const ProcessGroup& processes,
+  double lower[3],
+  double upper[3])
+{
+  double fullLower[3], fullUpper[3];
+  cloud.OwnBounds(fullLower, fullUpper);
+  processes.Bounds(fullLower, fullUpper);
+  SamplingBox(cloud, processes, lower, upper);
+  for (int k = 0; k < 3; ++k)
+  {
+    const double margin = 0.5 * upper[k] - 0.5 * lower[k];
+    lower[k] = std::max(fullLower[k], lower[k] - margin);
+    upper[k] = std::min(fullUpper[k], upper[k] + margin);
+  }
+}
+
 GridLattice GlobalLattice(const CloudPoints& cloud, const ProcessGroup& processes, double radius)
 {
   double lower[3], upper[3];
-  cloud.OwnBounds(lower, upper);
-  processes.Bounds(lower, upper);
+  GridBox(cloud, processes, lower, upper);
   for (int k = 0; k < 3; ++k)
   {
     if (!(lower[k] <= upper[k]))
@@ -392,8 +408,7 @@ double TypicalRadius(CloudPoints& cloud, const ProcessGroup& processes, int k)
   // About 512 sample points whatever the size of the cloud.
   const std::int64_t stride = std::max<std::int64_t>(1, globalCount / 512);
   double lower[3], upper[3], sampleLower[3], sampleUpper[3];
-  cloud.OwnBounds(lower, upper);
-  processes.Bounds(lower, upper);
+  GridBox(cloud, processes, lower, upper);
   SamplingBox(cloud, processes, sampleLower, sampleUpper);
   const double diagonal = std::sqrt(vtkMath::Distance2BetweenPoints(sampleLower, sampleUpper));
   // Cells for a first guess: the points spread over a square as wide as

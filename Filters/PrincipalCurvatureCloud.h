@@ -103,6 +103,16 @@ void SamplingBox(const CloudPoints& cloud,
   double lower[3],
   double upper[3]);
 
+/// The box the grid's lattice spans: the sampling box widened by half its
+/// extent on every side, within the cloud's bounds. For most clouds that is
+/// the bounding box; a few far outliers end up in the outermost cells
+/// instead of making every cell coarse (one point 1e7 away put a whole
+/// torus into one cell).
+void GridBox(const CloudPoints& cloud,
+  const ProcessGroup& processes,
+  double lower[3],
+  double upper[3]);
+
 /// True for the points of the sample that measures the cloud's spacing:
 /// chosen by a hash of the coordinates quantised to 2^20 steps of the
 /// sampling box, so that the sample is the same whatever the order of the

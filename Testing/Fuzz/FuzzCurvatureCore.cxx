@@ -475,6 +475,18 @@ void CheckGrid(Bytes& in)
       upper[k] = std::max(upper[k], points[3 * i + k]);
     }
   }
+  if (in.Byte() & 1)
+  {
+    // A lattice over the central half only, as for a cloud with far
+    // outliers: the points outside belong to its outermost cells, and
+    // every query must still find exactly what a scan finds.
+    for (int k = 0; k < 3; ++k)
+    {
+      const double quarter = 0.25 * upper[k] - 0.25 * lower[k];
+      lower[k] += quarter;
+      upper[k] -= quarter;
+    }
+  }
   const double cell = (spread == 1 ? unit : 1.0) * 0.05 * (1 + in.Byte());
   pcurv::PointGrid grid;
   grid.Build(points.data(), count, pcurv::GridLattice::Make(lower, upper, count, cell));
