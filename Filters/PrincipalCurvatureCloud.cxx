@@ -296,8 +296,6 @@ void SamplingBox(const CloudPoints& cloud,
   double lower[3],
   double upper[3])
 {
-  cloud.OwnBounds(lower, upper);
-  processes.Bounds(lower, upper);
   const std::int64_t total = processes.Sum(cloud.NumberOfOwnPoints);
   // 0-based ranks, in coordinate order, of the points at 1 % and 99 %.
   const std::int64_t firstRank = total / 100;
@@ -369,24 +367,28 @@ bool InSpacingSample(const double x[3],
 void GridBox(const CloudPoints& cloud,
   const ProcessGroup& processes,
   double lower[3],
-  double upper[3])
+  double upper[3],
+  double sampleLower[3],
+  double sampleUpper[3])
 {
   double fullLower[3], fullUpper[3];
   cloud.OwnBounds(fullLower, fullUpper);
   processes.Bounds(fullLower, fullUpper);
-  SamplingBox(cloud, processes, lower, upper);
+  std::copy_n(fullLower, 3, sampleLower);
+  std::copy_n(fullUpper, 3, sampleUpper);
+  SamplingBox(cloud, processes, sampleLower, sampleUpper);
   for (int k = 0; k < 3; ++k)
   {
-    const double margin = 0.5 * upper[k] - 0.5 * lower[k];
-    lower[k] = std::max(fullLower[k], lower[k] - margin);
-    upper[k] = std::min(fullUpper[k], upper[k] + margin);
+    const double margin = 0.5 * sampleUpper[k] - 0.5 * sampleLower[k];
+    lower[k] = std::max(fullLower[k], sampleLower[k] - margin);
+    upper[k] = std::min(fullUpper[k], sampleUpper[k] + margin);
   }
 }
 
 GridLattice GlobalLattice(const CloudPoints& cloud, const ProcessGroup& processes, double radius)
 {
-  double lower[3], upper[3];
-  GridBox(cloud, processes, lower, upper);
+  double lower[3], upper[3], sampleLower[3], sampleUpper[3];
+  GridBox(cloud, processes, lower, upper, sampleLower, sampleUpper);
   for (int k = 0; k < 3; ++k)
   {
     if (!(lower[k] <= upper[k]))
@@ -408,8 +410,7 @@ double TypicalRadius(CloudPoints& cloud, const ProcessGroup& processes, int k)
   // About 512 sample points whatever the size of the cloud.
   const std::int64_t stride = std::max<std::int64_t>(1, globalCount / 512);
   double lower[3], upper[3], sampleLower[3], sampleUpper[3];
-  GridBox(cloud, processes, lower, upper);
-  SamplingBox(cloud, processes, sampleLower, sampleUpper);
+  GridBox(cloud, processes, lower, upper, sampleLower, sampleUpper);
   const double diagonal = std::sqrt(vtkMath::Distance2BetweenPoints(sampleLower, sampleUpper));
   // Cells for a first guess: the points spread over a square as wide as
   // the (sampling) box's diagonal.

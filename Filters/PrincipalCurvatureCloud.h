@@ -93,25 +93,29 @@ private:
 /// the unit.
 double WorkingLengthScale(const CloudPoints& cloud, const ProcessGroup& processes);
 
-/// The box the spacing sample is drawn in: the global bounding box, unless
-/// a few far points would squeeze the rest into a handful of quantisation
-/// steps; then, per axis, the range of the central 98 % of the points, found
-/// by zooming in with global histograms (integer counts: the same for any
-/// split among processes).
+/// The box the spacing sample is drawn in, zoomed from the global bounding
+/// box given in [lower, upper]: unchanged, unless a few far points would
+/// squeeze the rest into a handful of quantisation steps; then, per axis,
+/// the range of the central 98 % of the points, found by zooming in with
+/// global histograms (integer counts: the same for any split among
+/// processes).
 void SamplingBox(const CloudPoints& cloud,
   const ProcessGroup& processes,
   double lower[3],
   double upper[3]);
 
-/// The box the grid's lattice spans: the sampling box widened by half its
-/// extent on every side, within the cloud's bounds. For most clouds that is
-/// the bounding box; a few far outliers end up in the outermost cells
-/// instead of making every cell coarse (one point 1e7 away put a whole
-/// torus into one cell).
+/// The box the grid's lattice spans [lower, upper]: the sampling box
+/// (returned in [sampleLower, sampleUpper]) widened by half its extent on
+/// every side, within the cloud's bounds. For most clouds that is the
+/// bounding box; a few far outliers end up in the outermost cells instead of
+/// making every cell coarse (one point 1e7 away put a whole torus into one
+/// cell).
 void GridBox(const CloudPoints& cloud,
   const ProcessGroup& processes,
   double lower[3],
-  double upper[3]);
+  double upper[3],
+  double sampleLower[3],
+  double sampleUpper[3]);
 
 /// True for the points of the sample that measures the cloud's spacing:
 /// chosen by a hash of the coordinates quantised to 2^20 steps of the

@@ -1128,7 +1128,6 @@ void TestFarOutlier(Checks& checks)
 /// works in a power-of-two unit of its own and must then give the clean
 /// run's numbers; with another factor, rounding moves the automatic
 /// radius by an ulp and with it neighbours that lie exactly on it.
-///  Also:
 ///  - FarApart: a torus and one point 1e300 away;
 ///  - FullRange: a torus and two points at -1e308 and +1e308 (the box's
 ///    extent overflows).
