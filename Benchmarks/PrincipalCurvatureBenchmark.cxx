@@ -820,7 +820,7 @@ PhaseRecord MeasurePhases(CoreCloud& core, const Options& options, const FilterR
   record.Queries = static_cast<long>(queries.size());
   record.Scale = static_cast<double>(core.N) / record.Queries;
   pcurv::PointCurvatureEstimator estimator;
-  std::vector<double> neighbors;
+  pcurv::NeighborOffsets neighbors;
   pcurv::FitSettings settings[3];
   for (int mode = 0; mode < 3; ++mode)
   {
@@ -835,10 +835,11 @@ PhaseRecord MeasurePhases(CoreCloud& core, const Options& options, const FilterR
     {
       const pcurv::Vector3 x = core.Point(i);
       const auto t0 = Clock::now();
-      core.Grid.GatherWithinRadius(x.data(), core.S, neighbors);
+      core.Grid.GatherOffsetsWithinRadius(x.data(), core.S, neighbors);
       const auto t1 = Clock::now();
       estimator.Begin(x, core.Normal(i), core.P, core.S);
-      estimator.AddNeighbors(neighbors.data(), neighbors.size() / 3);
+      estimator.AddNeighborOffsets(
+        neighbors.Dx.data(), neighbors.Dy.data(), neighbors.Dz.data(), neighbors.Count);
       auto t2 = Clock::now();
       search += Seconds(t0, t1);
       accumulate += Seconds(t1, t2);
@@ -1362,10 +1363,10 @@ void PrintSummary(const Options& options, const Results& results, CsvFile& csv)
       table.Add(row);
     };
     same("grid build (counting sort, whole cloud)", grid, "");
-    same("neighbour search (GatherWithinRadius)",
+    same("neighbour search (GatherOffsetsWithinRadius)",
       search,
       Format("%.1f ns", 1e9 * Median(ph.Search) / neighbors));
-    same("half planes + six sums (Begin, AddNeighbors)",
+    same("half planes + direction lists (Begin, AddNeighborOffsets)",
       accumulate,
       Format("%.1f ns", 1e9 * Median(ph.Accumulate) / neighbors));
     std::vector<std::string> fits{ "circle fits (Estimate minus sine fit)" };

@@ -142,20 +142,11 @@ void PointGrid::Build(const double* coordinates, std::int64_t count, const GridL
   }
 }
 
-void PointGrid::GatherWithinRadius(const double x[3], double radius, std::vector<double>& out) const
-{
-  out.resize(3 * this->GatherWithinRadiusInto(x, radius, out));
-}
-
-std::size_t PointGrid::GatherWithinRadiusInto(const double x[3],
+std::int64_t PointGrid::QueryCells(const double x[3],
   double radius,
-  std::vector<double>& out) const
+  std::array<std::int64_t, 3>& low,
+  std::array<std::int64_t, 3>& high) const
 {
-  if (this->Ids.empty() || !(radius > 0.0))
-  {
-    return 0;
-  }
-  std::array<std::int64_t, 3> low, high;
   for (int k = 0; k < 3; ++k)
   {
     low[k] = this->CellIndex(x[k] - radius, k);
@@ -170,33 +161,65 @@ std::size_t PointGrid::GatherWithinRadiusInto(const double x[3],
       candidates += this->CellStart[row + high[0] + 1] - this->CellStart[row + low[0]];
     }
   }
-  // One spare slot for the last, maybe rejected, write.
-  const std::size_t needed = static_cast<std::size_t>(3 * candidates + 3);
-  if (out.size() < needed)
+  return candidates;
+}
+
+void PointGrid::GatherWithinRadius(const double x[3], double radius, std::vector<double>& out) const
+{
+  out.clear();
+  if (this->Ids.empty() || !(radius > 0.0))
   {
-    out.resize(needed);
+    return;
   }
+  std::array<std::int64_t, 3> low, high;
+  const std::int64_t candidates = this->QueryCells(x, radius, low, high);
+  out.resize(static_cast<std::size_t>(3 * candidates + 3));
   double* write = out.data();
-  std::int64_t kept = 0;
-  const double radiusSquared = radius * radius;
-  for (std::int64_t iz = low[2]; iz <= high[2]; ++iz)
-  {
-    for (std::int64_t iy = low[1]; iy <= high[1]; ++iy)
+  const std::size_t kept = this->GatherCandidates(x,
+    radius,
+    low,
+    high,
+    [write](std::size_t k, const double* q, double, double, double)
     {
-      const std::int64_t row = (iz * this->Dimensions[1] + iy) * this->Dimensions[0];
-      const std::int64_t end = this->CellStart[row + high[0] + 1];
-      for (std::int64_t j = this->CellStart[row + low[0]]; j < end; ++j)
-      {
-        const double* q = &this->Sorted[3 * j];
-        const double dx = q[0] - x[0], dy = q[1] - x[1], dz = q[2] - x[2];
-        write[3 * kept] = q[0];
-        write[3 * kept + 1] = q[1];
-        write[3 * kept + 2] = q[2];
-        kept += (dx * dx + dy * dy + dz * dz < radiusSquared) ? 1 : 0;
-      }
+      write[3 * k] = q[0];
+      write[3 * k + 1] = q[1];
+      write[3 * k + 2] = q[2];
+    });
+  out.resize(3 * kept);
+}
+
+std::size_t PointGrid::GatherOffsetsWithinRadius(const double x[3],
+  double radius,
+  NeighborOffsets& out) const
+{
+  out.Count = 0;
+  if (this->Ids.empty() || !(radius > 0.0))
+  {
+    return 0;
+  }
+  std::array<std::int64_t, 3> low, high;
+  const std::size_t candidates = static_cast<std::size_t>(this->QueryCells(x, radius, low, high));
+  if (out.Dx.size() < candidates + 1)
+  {
+    for (std::vector<double>* axis : { &out.Dx, &out.Dy, &out.Dz })
+    {
+      axis->resize(candidates + 1);
     }
   }
-  return static_cast<std::size_t>(kept);
+  double* dxOut = out.Dx.data();
+  double* dyOut = out.Dy.data();
+  double* dzOut = out.Dz.data();
+  out.Count = this->GatherCandidates(x,
+    radius,
+    low,
+    high,
+    [=](std::size_t k, const double*, double dx, double dy, double dz)
+    {
+      dxOut[k] = dx;
+      dyOut[k] = dy;
+      dzOut[k] = dz;
+    });
+  return out.Count;
 }
 
 double PointGrid::SquaredDistanceToKth(const double x[3], int k, std::vector<double>& scratch) const

@@ -67,6 +67,15 @@ struct GridLattice
   }
 };
 
+/// Neighbours as offsets q - x from the query point x, one array per axis
+/// (the layout the half-plane binning reads). The arrays only grow: the
+/// first Count values are the neighbours.
+struct NeighborOffsets
+{
+  std::vector<double> Dx, Dy, Dz;
+  std::size_t Count = 0;
+};
+
 class PointGrid
 {
 public:
@@ -119,17 +128,16 @@ public:
   }
 
   /// Replaces `out` with the coordinates (xyz triplets) of every point q with
-  /// |q - x| < radius, in the same order as ForEachWithinRadius. Branch-free
-  /// inner loop: about half the candidates are rejected, too randomly for
-  /// branch prediction.
+  /// |q - x| < radius, in the same order as ForEachWithinRadius.
   void GatherWithinRadius(const double x[3], double radius, std::vector<double>& out) const;
 
-  /// The same points into the first 3 n values of `buffer`, returning n;
-  /// `buffer` only grows, so that a buffer reused from query to query is
-  /// not cleared each time (resizing it cost 3 % of the filter's time).
-  std::size_t GatherWithinRadiusInto(const double x[3],
+  /// The same points as offsets q - x (computed as q[k] - x[k]), in the
+  /// same order; sets and returns out.Count. The filter's query: the
+  /// buffers are reused from query to query, never cleared (resizing them
+  /// cost 3 % of the filter's time).
+  std::size_t GatherOffsetsWithinRadius(const double x[3],
     double radius,
-    std::vector<double>& buffer) const;
+    NeighborOffsets& out) const;
 
   /// Squared distance from x to its k-th nearest point (x itself counts
   /// when it is one of the points), found with growing radius queries.
@@ -137,6 +145,47 @@ public:
   double SquaredDistanceToKth(const double x[3], int k, std::vector<double>& scratch) const;
 
 private:
+  /// The cells a query of `radius` around x visits (low..high per axis),
+  /// and the number of points in them.
+  std::int64_t QueryCells(const double x[3],
+    double radius,
+    std::array<std::int64_t, 3>& low,
+    std::array<std::int64_t, 3>& high) const;
+
+  /// Calls write(kept, q, dx, dy, dz) for every point q of the cells
+  /// low..high, in order, with dx = q[0] - x[0] etc., and counts it as kept
+  /// when |q - x| < radius; returns the count. Branch-free (about half the
+  /// candidates are rejected, too randomly for branch prediction): a
+  /// rejected point's write is overwritten by the next one, so the output
+  /// needs one spare slot.
+  template<typename Write>
+  std::size_t GatherCandidates(const double x[3],
+    double radius,
+    const std::array<std::int64_t, 3>& low,
+    const std::array<std::int64_t, 3>& high,
+    Write&& write) const
+  {
+    std::size_t kept = 0;
+    const double radiusSquared = radius * radius;
+    for (std::int64_t iz = low[2]; iz <= high[2]; ++iz)
+    {
+      for (std::int64_t iy = low[1]; iy <= high[1]; ++iy)
+      {
+        const std::int64_t row = (iz * this->Dimensions[1] + iy) * this->Dimensions[0];
+        const std::int64_t end = this->CellStart[row + high[0] + 1];
+        // Cells of one row are contiguous in the sorted order.
+        for (std::int64_t j = this->CellStart[row + low[0]]; j < end; ++j)
+        {
+          const double* q = &this->Sorted[3 * j];
+          const double dx = q[0] - x[0], dy = q[1] - x[1], dz = q[2] - x[2];
+          write(kept, q, dx, dy, dz);
+          kept += (dx * dx + dy * dy + dz * dz < radiusSquared) ? 1 : 0;
+        }
+      }
+    }
+    return kept;
+  }
+
   /// Local cell index along an axis, clamped to the stored cells.
   std::int64_t CellIndex(double coordinate, int axis) const
   {

@@ -22,6 +22,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "HalfPlaneBinning.h"
+
 namespace pcurv
 {
 
@@ -183,6 +185,11 @@ public:
   void AddNeighbors(const double* coordinates, std::size_t count);
   void AddNeighbor(const double q[3]) { this->AddNeighbors(q, 1); }
 
+  /// The same for neighbours given as offsets q - x from the query point,
+  /// one array per axis (as PointGrid::GatherOffsetsWithinRadius writes
+  /// them): the same results as AddNeighbors, without the copy.
+  void AddNeighborOffsets(const double* dx, const double* dy, const double* dz, std::size_t count);
+
   /// Number of neighbours added so far (coincident points excluded).
   int GetNumberOfNeighbors() const { return static_cast<int>(this->NumberOfAdded); }
 
@@ -199,6 +206,9 @@ public:
 private:
   /// Makes room for `neighbors` neighbours in all, keeping those added.
   void Reserve(std::size_t neighbors);
+  /// Appends the block's neighbours, classified by binning::Classify and
+  /// stored from slot `first` on, to their direction lists.
+  void AppendBlock(const binning::Block& block, std::size_t first, std::size_t count);
   /// The six sums of each direction from its lists, in list order.
   void SumDirectionLists();
   void FitDirections(const FitSettings& settings);
@@ -211,15 +221,18 @@ private:
   /// The neighbours added so far, in the order added (units of the scale):
   /// height above the tangent plane, squared distance, tangent coordinates,
   /// and the directions each belongs to (New02's second pass reads them).
+  /// A neighbour at the query point takes a slot but no direction, and is
+  /// not counted in NumberOfAdded.
+  std::size_t NumberOfSlots = 0;
   std::size_t NumberOfAdded = 0;
   std::size_t Capacity = 0;
   std::vector<double> AddedH, AddedD, AddedTx, AddedTy;
   std::vector<std::uint32_t> AddedMask;
 
-  /// Per direction, two lists of indices into the above: the neighbours of
-  /// the sector the direction opens and those near the normal line (role
-  /// 0), and the neighbours of the sector it closes (role 1); list
-  /// r * 16 + i at [(r * 16 + i) * Capacity, + ListCount).
+  /// Per direction, two lists of indices into the above: the neighbours
+  /// whose sector the direction's line bounds from below, and those near
+  /// the normal line (role 0); those whose sector it bounds from above
+  /// (role 1). List r * 16 + i at [(r * 16 + i) * Capacity, + ListCount).
   /// Appending each neighbour to lists and summing them afterwards, list
   /// by list with the running sums in registers, costs half as much as
   /// adding it straight into sums picked at run time (each add then waits
@@ -228,6 +241,7 @@ private:
   static constexpr int NumberOfLists = 2 * NumberOfDirections;
   std::vector<std::uint32_t> ListIndices;
   std::array<std::uint32_t, NumberOfLists> ListCount{};
+  binning::Block Binned;
 
   std::array<CgaSums, NumberOfDirections> Sums{};
   std::array<double, NumberOfDirections> DirectionCurvature{};

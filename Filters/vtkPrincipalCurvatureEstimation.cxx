@@ -295,8 +295,7 @@ private:
     pcurv::PointCurvatureEstimator Estimator;
     pcurv::DynamicAdjustment Adjustment;
     std::vector<double> Distances;
-    std::vector<double> Neighbors; // the first 3 Found values: the gathered points
-    std::size_t Found = 0;
+    pcurv::NeighborOffsets Neighbors;
   };
 
   bool HasNormal(vtkIdType point) const
@@ -320,7 +319,7 @@ private:
       s = std::sqrt(this->Grid.SquaredDistanceToKth(x, this->Rule.K + 1, scratch.Distances));
       s = std::nextafter(s, HUGE_VAL); // the query keeps distances < s
     }
-    scratch.Found = this->Grid.GatherWithinRadiusInto(x, s, scratch.Neighbors);
+    this->Grid.GatherOffsetsWithinRadius(x, s, scratch.Neighbors);
     // A fixed p of 0 stays 0: every point is then flagged, never silently
     // estimated with some other p.
     const double p =
@@ -350,12 +349,12 @@ private:
       }
       const double* x = &this->Cloud.Coordinates[3 * point];
       double s = adjustment.GetSurroundingsThreshold();
-      scratch.Found = this->Grid.GatherWithinRadiusInto(x, s, scratch.Neighbors);
+      this->Grid.GatherOffsetsWithinRadius(x, s, scratch.Neighbors);
       if (firstPoint)
       {
         adjustment.Adjust(NeighborCount(scratch));
         s = adjustment.GetSurroundingsThreshold();
-        scratch.Found = this->Grid.GatherWithinRadiusInto(x, s, scratch.Neighbors);
+        this->Grid.GatherOffsetsWithinRadius(x, s, scratch.Neighbors);
         firstPoint = false;
       }
       const double p = adjustment.Adjust(NeighborCount(scratch));
@@ -369,7 +368,7 @@ private:
   /// Neighbours found, the point itself excluded (as the estimator counts).
   static int NeighborCount(const Scratch& scratch)
   {
-    return std::max(0, static_cast<int>(scratch.Found) - 1);
+    return std::max(0, static_cast<int>(scratch.Neighbors.Count) - 1);
   }
 
   void EstimateGathered(vtkIdType point, double s, double p, Scratch& scratch)
@@ -378,7 +377,9 @@ private:
     const double* n = &this->Cloud.Normals[3 * point];
     pcurv::PointCurvatureEstimator& estimator = scratch.Estimator;
     estimator.Begin({ { x[0], x[1], x[2] } }, { { n[0], n[1], n[2] } }, p, s);
-    estimator.AddNeighbors(scratch.Neighbors.data(), scratch.Found);
+    const pcurv::NeighborOffsets& offsets = scratch.Neighbors;
+    estimator.AddNeighborOffsets(
+      offsets.Dx.data(), offsets.Dy.data(), offsets.Dz.data(), offsets.Count);
     this->Out.Store(this->Cloud.InputIds[point], estimator.Estimate(this->Settings), s, p);
   }
 

@@ -1,6 +1,7 @@
 // Tests of the numeric core alone (no VTK): frame, half-plane binning,
 // circle fits, sine fit and the per-point estimator.
 #include "AnalyticSurfaces.h"
+#include "HalfPlaneBinning.h"
 #include "PrincipalCurvatureCore.h"
 #include "TestChecks.h"
 
@@ -8,6 +9,10 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <cstring>
+#include <limits>
+#include <string>
+#include <vector>
 
 namespace
 {
@@ -63,6 +68,151 @@ void TestDirectionMaskMatchesPlaneTest(Checks& checks)
   checks.Equal("far point on the ray of direction 0",
     static_cast<int>(PointCurvatureEstimator::DirectionMask(1.0, 0.0, 0.01)),
     1);
+}
+
+/// One random offset for the kernel comparison: mostly ordinary points,
+/// some exactly on a direction's ray or on a slice boundary (where the
+/// sector tests compare equal values), some degenerate.
+void RandomOffset(Random& random, double& x, double& y, double& z)
+{
+  const double kind = random.Uniform();
+  const double angle = 3.14159265358979323846 / 8.0 * std::floor(32.0 * random.Uniform()) / 2.0;
+  const double r = 2.0 * random.Uniform();
+  x = 2.0 * random.Uniform() - 1.0;
+  y = 2.0 * random.Uniform() - 1.0;
+  z = 0.2 * random.Uniform() - 0.1;
+  if (kind < 0.2) // on a ray of a direction or half way between two
+  {
+    x = r * std::cos(angle);
+    y = r * std::sin(angle);
+  }
+  else if (kind < 0.3) // |x| == |y| or |y| == tan(pi / 8) |x|
+  {
+    y = (random.Uniform() < 0.5 ? x : 0.41421356237309503 * x) * (random.Uniform() < 0.5 ? -1 : 1);
+  }
+  else if (kind < 0.35)
+  {
+    x = y = 0.0;
+  }
+  else if (kind < 0.4)
+  {
+    const double specials[] = { std::numeric_limits<double>::quiet_NaN(),
+      std::numeric_limits<double>::infinity(),
+      -std::numeric_limits<double>::infinity(),
+      1e-320,
+      -0.0,
+      1e300 };
+    x = specials[static_cast<int>(6.0 * random.Uniform()) % 6];
+  }
+}
+
+/// Every instruction set's kernel gives bit for bit the generic kernel's
+/// output, for every block length (whole vectors and tails).
+void TestBinningKernelsAgree(Checks& checks)
+{
+  const std::vector<std::string> kernels = binning::AvailableKernels();
+  std::printf("binning kernels: %zu available, active: %s\n",
+    kernels.size(),
+    binning::ActiveKernel().c_str());
+  checks.True("the generic kernel is available", kernels.front() == "generic");
+  Random random(17);
+  constexpr std::size_t Room = binning::BlockSize + binning::Padding;
+  struct Output
+  {
+    binning::Block Block;
+    double H[Room], D[Room], Tx[Room], Ty[Room];
+    Output()
+    {
+      this->Block.H = this->H;
+      this->Block.D = this->D;
+      this->Block.Tx = this->Tx;
+      this->Block.Ty = this->Ty;
+    }
+  };
+  long differences = 0, blocks = 0;
+  for (int trial = 0; trial < 20000; ++trial)
+  {
+    const std::size_t count = 1 + static_cast<std::size_t>(trial % binning::BlockSize);
+    // Every seventh block in the identity frame, where offsets on a ray or
+    // a slice boundary stay exactly there.
+    const bool identity = trial % 7 == 0;
+    testing::Vec n{ { random.Normal(), random.Normal(), random.Normal() } };
+    const TangentFrame t = identity
+      ? TangentFrame{ { { 0.0, 0.0, 1.0 } }, { { 1.0, 0.0, 0.0 } }, { { 0.0, 1.0, 0.0 } } }
+      : MakeTangentFrame(testing::Unit(n));
+    const double scale = identity ? 1.0 : 0.5 + random.Uniform();
+    const binning::Frame frame{ { t.Normal[0], t.Normal[1], t.Normal[2] },
+      { t.V0[0], t.V0[1], t.V0[2] },
+      { t.W0[0], t.W0[1], t.W0[2] },
+      1.0 / scale,
+      0.3 * random.Uniform() };
+    double dx[binning::BlockSize], dy[binning::BlockSize], dz[binning::BlockSize];
+    for (std::size_t j = 0; j < count; ++j)
+    {
+      RandomOffset(random, dx[j], dy[j], dz[j]);
+      dz[j] = identity ? 0.0 : dz[j];
+    }
+    Output reference;
+    binning::ClassifyWith("generic", frame, dx, dy, dz, count, reference.Block);
+    for (const std::string& kernel : kernels)
+    {
+      Output out;
+      checks.True(
+        "kernel runs", binning::ClassifyWith(kernel, frame, dx, dy, dz, count, out.Block));
+      ++blocks;
+      const std::size_t doubles = count * sizeof(double);
+      const std::size_t integers = count * sizeof(std::int64_t);
+      const bool same = std::memcmp(out.H, reference.H, doubles) == 0 &&
+        std::memcmp(out.D, reference.D, doubles) == 0 &&
+        std::memcmp(out.Tx, reference.Tx, doubles) == 0 &&
+        std::memcmp(out.Ty, reference.Ty, doubles) == 0 &&
+        std::memcmp(out.Block.BelowList, reference.Block.BelowList, integers) == 0 &&
+        std::memcmp(out.Block.AboveList, reference.Block.AboveList, integers) == 0 &&
+        std::memcmp(out.Block.KeepBelow, reference.Block.KeepBelow, integers) == 0 &&
+        std::memcmp(out.Block.KeepAbove, reference.Block.KeepAbove, integers) == 0 &&
+        std::memcmp(out.Block.Mask, reference.Block.Mask, integers) == 0 &&
+        std::memcmp(out.Block.Near, reference.Block.Near, integers) == 0 &&
+        out.Block.AtQueryPoint == reference.Block.AtQueryPoint;
+      differences += same ? 0 : 1;
+    }
+  }
+  std::printf("kernel blocks compared: %ld\n", blocks);
+  checks.Equal("blocks where a kernel differs from the generic one", differences, 0L);
+  Output unused;
+  checks.True("an unknown kernel is refused",
+    !binning::ClassifyWith("none", binning::Frame{}, nullptr, nullptr, nullptr, 0, unused.Block));
+}
+
+/// Neighbours given as coordinates or as offsets: the same estimate.
+void TestOffsetsEqualCoordinates(Checks& checks)
+{
+  Random random(23);
+  const testing::Vec x{ { 0.3, -0.2, 1.1 } };
+  std::vector<double> coordinates, dx, dy, dz;
+  for (int j = 0; j < 500; ++j)
+  {
+    const double u = 0.4 * random.Uniform() - 0.2, v = 0.4 * random.Uniform() - 0.2;
+    const double q[3] = { x[0] + u, x[1] + v, x[2] + 0.7 * u * u - 0.3 * v * v };
+    for (int k = 0; k < 3; ++k)
+    {
+      coordinates.push_back(q[k]);
+    }
+    dx.push_back(q[0] - x[0]);
+    dy.push_back(q[1] - x[1]);
+    dz.push_back(q[2] - x[2]);
+  }
+  PointCurvatureEstimator a, b;
+  a.Begin({ { x[0], x[1], x[2] } }, { { 0.0, 0.0, 1.0 } }, 0.02, 0.2);
+  b.Begin({ { x[0], x[1], x[2] } }, { { 0.0, 0.0, 1.0 } }, 0.02, 0.2);
+  a.AddNeighbors(coordinates.data(), 500);
+  b.AddNeighborOffsets(dx.data(), dy.data(), dz.data(), 200);
+  b.AddNeighborOffsets(dx.data() + 200, dy.data() + 200, dz.data() + 200, 300);
+  const PointCurvature ra = a.Estimate(FitSettings{});
+  const PointCurvature rb = b.Estimate(FitSettings{});
+  checks.True("estimated", ra.Valid && rb.Valid);
+  checks.True("identical minimum", ra.MinimumCurvature == rb.MinimumCurvature);
+  checks.True("identical maximum", ra.MaximumCurvature == rb.MaximumCurvature);
+  checks.Equal("identical neighbour counts", a.GetNumberOfNeighbors(), b.GetNumberOfNeighbors());
 }
 
 /// Points of a circle through the origin with centre (0, 1/kappa) in the
@@ -352,6 +502,8 @@ int main()
   Checks checks;
   TestTangentFrame(checks);
   TestDirectionMaskMatchesPlaneTest(checks);
+  TestBinningKernelsAgree(checks);
+  TestOffsetsEqualCoordinates(checks);
   TestCircleFits(checks);
   TestPreviousMatchesEigenSolver(checks);
   TestDistanceToCircle(checks);
