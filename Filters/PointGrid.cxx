@@ -1,5 +1,7 @@
 #include "PointGrid.h"
 
+#include "SimdKernels.h"
+
 #include <limits>
 
 namespace pcurv
@@ -55,7 +57,10 @@ void PointGrid::Build(const double* coordinates, std::int64_t count, const GridL
 {
   this->Lattice = lattice;
   this->Ids.clear();
-  this->Sorted.clear();
+  for (std::vector<double>& axis : this->Sorted)
+  {
+    axis.clear();
+  }
   this->CellStart.assign(2, 0);
   this->Low = { { 0, 0, 0 } };
   this->Dimensions = { { 1, 1, 1 } };
@@ -132,12 +137,12 @@ void PointGrid::Build(const double* coordinates, std::int64_t count, const GridL
         this->Ids.begin() + this->CellStart[c], this->Ids.begin() + this->CellStart[c + 1], before);
     }
   }
-  this->Sorted.resize(3 * count);
-  for (std::int64_t j = 0; j < count; ++j)
+  for (int k = 0; k < 3; ++k)
   {
-    for (int k = 0; k < 3; ++k)
+    this->Sorted[k].resize(count);
+    for (std::int64_t j = 0; j < count; ++j)
     {
-      this->Sorted[3 * j + k] = coordinates[3 * this->Ids[j] + k];
+      this->Sorted[k][j] = coordinates[3 * this->Ids[j] + k];
     }
   }
 }
@@ -167,25 +172,12 @@ std::int64_t PointGrid::QueryCells(const double x[3],
 void PointGrid::GatherWithinRadius(const double x[3], double radius, std::vector<double>& out) const
 {
   out.clear();
-  if (this->Ids.empty() || !(radius > 0.0))
-  {
-    return;
-  }
-  std::array<std::int64_t, 3> low, high;
-  const std::int64_t candidates = this->QueryCells(x, radius, low, high);
-  out.resize(static_cast<std::size_t>(3 * candidates + 3));
-  double* write = out.data();
-  const std::size_t kept = this->GatherCandidates(x,
+  this->ForEachWithinRadius(x,
     radius,
-    low,
-    high,
-    [write](std::size_t k, const double* q, double, double, double)
+    [&out](const double* q, std::int64_t)
     {
-      write[3 * k] = q[0];
-      write[3 * k + 1] = q[1];
-      write[3 * k + 2] = q[2];
+      out.insert(out.end(), q, q + 3);
     });
-  out.resize(3 * kept);
 }
 
 std::size_t PointGrid::GatherOffsetsWithinRadius(const double x[3],
@@ -199,27 +191,28 @@ std::size_t PointGrid::GatherOffsetsWithinRadius(const double x[3],
   }
   std::array<std::int64_t, 3> low, high;
   const std::size_t candidates = static_cast<std::size_t>(this->QueryCells(x, radius, low, high));
-  if (out.Dx.size() < candidates + 1)
+  if (out.Dx.size() < candidates + gather::Padding)
   {
     for (std::vector<double>* axis : { &out.Dx, &out.Dy, &out.Dz })
     {
-      axis->resize(candidates + 1);
+      axis->resize(candidates + gather::Padding);
     }
   }
-  double* dxOut = out.Dx.data();
-  double* dyOut = out.Dy.data();
-  double* dzOut = out.Dz.data();
-  out.Count = this->GatherCandidates(x,
-    radius,
-    low,
-    high,
-    [=](std::size_t k, const double*, double dx, double dy, double dz)
+  const double radiusSquared = radius * radius;
+  std::size_t kept = 0;
+  for (std::int64_t iz = low[2]; iz <= high[2]; ++iz)
+  {
+    for (std::int64_t iy = low[1]; iy <= high[1]; ++iy)
     {
-      dxOut[k] = dx;
-      dyOut[k] = dy;
-      dzOut[k] = dz;
-    });
-  return out.Count;
+      // Cells of one row are contiguous in the sorted order.
+      const std::int64_t row = (iz * this->Dimensions[1] + iy) * this->Dimensions[0];
+      kept = gather::WithinRadius(this->Sorted[0].data(), this->Sorted[1].data(),
+        this->Sorted[2].data(), this->CellStart[row + low[0]], this->CellStart[row + high[0] + 1],
+        x, radiusSquared, out.Dx.data(), out.Dy.data(), out.Dz.data(), kept);
+    }
+  }
+  out.Count = kept;
+  return kept;
 }
 
 double PointGrid::SquaredDistanceToKth(const double x[3], int k, std::vector<double>& scratch) const
@@ -245,7 +238,8 @@ double PointGrid::SquaredDistanceToKth(const double x[3], int k, std::vector<dou
     {
       for (std::int64_t j = 0; j < this->GetNumberOfPoints(); ++j)
       {
-        scratch.push_back(squaredDistance(&this->Sorted[3 * j]));
+        const double q[3] = { this->Sorted[0][j], this->Sorted[1][j], this->Sorted[2][j] };
+        scratch.push_back(squaredDistance(q));
       }
       std::nth_element(scratch.begin(), scratch.begin() + (wanted - 1), scratch.end());
       return scratch[wanted - 1];

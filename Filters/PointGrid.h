@@ -116,7 +116,7 @@ public:
         // Cells of one row are contiguous in the sorted order.
         for (std::int64_t j = begin; j < end; ++j)
         {
-          const double* q = &this->Sorted[3 * j];
+          const double q[3] = { this->Sorted[0][j], this->Sorted[1][j], this->Sorted[2][j] };
           const double dx = q[0] - x[0], dy = q[1] - x[1], dz = q[2] - x[2];
           if (dx * dx + dy * dy + dz * dz < radiusSquared)
           {
@@ -152,40 +152,6 @@ private:
     std::array<std::int64_t, 3>& low,
     std::array<std::int64_t, 3>& high) const;
 
-  /// Calls write(kept, q, dx, dy, dz) for every point q of the cells
-  /// low..high, in order, with dx = q[0] - x[0] etc., and counts it as kept
-  /// when |q - x| < radius; returns the count. Branch-free (about half the
-  /// candidates are rejected, too randomly for branch prediction): a
-  /// rejected point's write is overwritten by the next one, so the output
-  /// needs one spare slot.
-  template<typename Write>
-  std::size_t GatherCandidates(const double x[3],
-    double radius,
-    const std::array<std::int64_t, 3>& low,
-    const std::array<std::int64_t, 3>& high,
-    Write&& write) const
-  {
-    std::size_t kept = 0;
-    const double radiusSquared = radius * radius;
-    for (std::int64_t iz = low[2]; iz <= high[2]; ++iz)
-    {
-      for (std::int64_t iy = low[1]; iy <= high[1]; ++iy)
-      {
-        const std::int64_t row = (iz * this->Dimensions[1] + iy) * this->Dimensions[0];
-        const std::int64_t end = this->CellStart[row + high[0] + 1];
-        // Cells of one row are contiguous in the sorted order.
-        for (std::int64_t j = this->CellStart[row + low[0]]; j < end; ++j)
-        {
-          const double* q = &this->Sorted[3 * j];
-          const double dx = q[0] - x[0], dy = q[1] - x[1], dz = q[2] - x[2];
-          write(kept, q, dx, dy, dz);
-          kept += (dx * dx + dy * dy + dz * dz < radiusSquared) ? 1 : 0;
-        }
-      }
-    }
-    return kept;
-  }
-
   /// Local cell index along an axis, clamped to the stored cells.
   std::int64_t CellIndex(double coordinate, int axis) const
   {
@@ -202,7 +168,7 @@ private:
   std::array<std::int64_t, 3> Dimensions{ { 1, 1, 1 } };
   double Diagonal = 0.0;
   std::vector<std::int64_t> CellStart; // per cell, its first sorted point; one extra at the end
-  std::vector<double> Sorted;          // coordinates in cell order
+  std::array<std::vector<double>, 3> Sorted; // coordinates in cell order, one array per axis
   std::vector<std::int64_t> Ids;       // original ids in cell order
 };
 

@@ -256,8 +256,10 @@ SineFit FitSine(const std::array<double, NumberOfDirections>& curvature,
   // 2 theta_i = i pi / 4: directions i and i + 8 share one position on the
   // circle of 2 theta (they are the two halves of one plane).
   std::array<bool, 8> occupied{};
-  Eigen::Matrix3d normal = Eigen::Matrix3d::Zero();
-  Eigen::Vector3d rhs = Eigen::Vector3d::Zero();
+  // Normal equations of the least-squares fit of k = a + b cos 2t + c sin 2t
+  // (symmetric: six entries), and their right-hand side.
+  double n00 = 0.0, n01 = 0.0, n02 = 0.0, n11 = 0.0, n12 = 0.0, n22 = 0.0;
+  double r0 = 0.0, r1 = 0.0, r2 = 0.0;
   const DirectionTable& table = Directions();
   for (int i = 0; i < NumberOfDirections; ++i)
   {
@@ -268,9 +270,16 @@ SineFit FitSine(const std::array<double, NumberOfDirections>& curvature,
     ++fit.ValidDirections;
     occupied[i % 8] = true;
     const int doubled = (2 * i) % NumberOfDirections;
-    const Eigen::Vector3d row(1.0, table.Cos[doubled], table.Sin[doubled]);
-    normal += row * row.transpose();
-    rhs += row * curvature[i];
+    const double c = table.Cos[doubled], s = table.Sin[doubled], k = curvature[i];
+    n00 += 1.0;
+    n01 += c;
+    n02 += s;
+    n11 += c * c;
+    n12 += c * s;
+    n22 += s * s;
+    r0 += k;
+    r1 += c * k;
+    r2 += s * k;
   }
 
   int distinct = 0;
@@ -304,10 +313,19 @@ SineFit FitSine(const std::array<double, NumberOfDirections>& curvature,
     return fit;
   }
 
-  const Eigen::Vector3d coefficients = normal.ldlt().solve(rhs);
-  fit.Offset = coefficients[0];
-  fit.CosineAmplitude = coefficients[1];
-  fit.SineAmplitude = coefficients[2];
+  // L D L^T without pivoting: with three directions spread over more than
+  // a half-turn the matrix is positive definite and well conditioned (its
+  // pivots are at least about 1); written out, it costs a tenth of Eigen's
+  // pivoting solver.
+  const double l10 = n01 / n00, l20 = n02 / n00;
+  const double d1 = n11 - l10 * n01;
+  const double l21 = (n12 - l20 * n01) / d1;
+  const double d2 = n22 - l20 * n02 - l21 * l21 * d1;
+  const double y1 = r1 - l10 * r0;
+  const double y2 = r2 - l20 * r0 - l21 * y1;
+  fit.SineAmplitude = y2 / d2;
+  fit.CosineAmplitude = y1 / d1 - l21 * fit.SineAmplitude;
+  fit.Offset = r0 / n00 - l10 * fit.CosineAmplitude - l20 * fit.SineAmplitude;
   // Residuals relative to the largest curvature, so that their squares
   // cannot overflow where the curvatures are huge (a degenerate
   // neighbourhood can give 1e283).
@@ -354,10 +372,26 @@ void PrincipalCurvaturesFromSine(const SineFit& fit, const TangentFrame& frame, 
     out.MaximumCurvature = out.MinimumCurvature = 0.0;
     return;
   }
-  // The paper-sign maximum (output minimum) lies at 2 theta = atan2(As, Ac).
-  const double theta = 0.5 * std::atan2(fit.SineAmplitude, fit.CosineAmplitude);
-  const double c = std::cos(theta);
-  const double s = std::sin(theta);
+  // The paper-sign maximum (output minimum) lies at 2 theta = atan2(As, Ac),
+  // theta in (-pi/2, pi/2]. Its cosine and sine from the half-angle
+  // formulas, each from the better conditioned side (atan2, cos and sin
+  // cost three times as much).
+  double c = 1.0, s = 0.0; // no amplitude: atan2(0, 0) = 0
+  if (amplitude > 0.0)
+  {
+    const double cosine2 = fit.CosineAmplitude / amplitude;
+    const double sine2 = fit.SineAmplitude / amplitude;
+    if (cosine2 >= 0.0)
+    {
+      c = std::sqrt(0.5 * (1.0 + cosine2));
+      s = sine2 / (2.0 * c);
+    }
+    else
+    {
+      s = std::copysign(std::sqrt(0.5 * (1.0 - cosine2)), fit.SineAmplitude);
+      c = sine2 / (2.0 * s);
+    }
+  }
   for (int k = 0; k < 3; ++k)
   {
     out.MinimumDirection[k] = c * frame.V0[k] + s * frame.W0[k];
@@ -414,8 +448,13 @@ std::uint32_t PointCurvatureEstimator::DirectionMask(double tx, double ty, doubl
   block.Tx = x;
   block.Ty = y;
   binning::Classify(identity, &tx, &ty, &zero, 1, block);
-  return block.Near[0] ? AllHalfPlanesMask(Directions(), tx, ty, p)
-                       : static_cast<std::uint32_t>(block.Mask[0]);
+  if (block.Near[0])
+  {
+    return AllHalfPlanesMask(Directions(), tx, ty, p);
+  }
+  const auto bit = [](std::int64_t list, std::int64_t keep)
+  { return static_cast<std::uint32_t>(keep) << (list % NumberOfDirections); };
+  return bit(block.BelowList[0], block.KeepBelow[0]) | bit(block.AboveList[0], block.KeepAbove[0]);
 }
 
 void PointCurvatureEstimator::Begin(const Vector3& point,
@@ -450,7 +489,6 @@ void PointCurvatureEstimator::Reserve(std::size_t neighbors)
   {
     added->resize(capacity + binning::Padding);
   }
-  this->AddedMask.resize(capacity);
   // ... and every list its entries, at the list's new start.
   std::vector<std::uint32_t> grown(NumberOfLists * capacity);
   for (int list = 0; list < NumberOfLists; ++list)
@@ -519,7 +557,6 @@ void PointCurvatureEstimator::AppendBlock(const binning::Block& block,
   const std::size_t capacity = this->Capacity;
   const double p = this->ScaledPlaneDistance;
   std::uint32_t* indices = this->ListIndices.data();
-  std::uint32_t* addedMask = this->AddedMask.data() + first;
   std::array<std::uint32_t, NumberOfLists> listCount = this->ListCount;
   // Writes neighbour `k` at the end of list `list`, and keeps it when
   // `keep` is 1: no branch depends on the neighbour. (Counts, not end
@@ -534,7 +571,6 @@ void PointCurvatureEstimator::AppendBlock(const binning::Block& block,
     const std::uint32_t k = static_cast<std::uint32_t>(first + j);
     append(block.BelowList[j], block.KeepBelow[j], k);
     append(block.AboveList[j], block.KeepAbove[j], k);
-    addedMask[j] = static_cast<std::uint32_t>(block.Mask[j]);
     if (block.Near[j]) // rare: a few percent of the neighbours
     {
       const std::uint32_t mask = NearLaneMask(block, j, p);
@@ -542,7 +578,6 @@ void PointCurvatureEstimator::AppendBlock(const binning::Block& block,
       {
         append(__builtin_ctz(rest), 1, k);
       }
-      addedMask[j] = mask;
     }
   }
   this->ListCount = listCount;
@@ -637,16 +672,21 @@ void PointCurvatureEstimator::FitDirections(const FitSettings& settings)
     // candidate circle; keep the candidate with the smaller Q.
     std::array<double, NumberOfDirections> quality12{};
     std::array<double, NumberOfDirections> quality23{};
-    for (std::size_t k = 0; k < this->NumberOfSlots; ++k)
+    for (int i = 0; i < NumberOfDirections; ++i)
     {
-      const double h = this->AddedH[k], squaredDistance = this->AddedD[k];
-      for (std::uint32_t rest = this->AddedMask[k]; rest; rest &= rest - 1)
+      if (!candidate12[i].Valid || !candidate23[i].Valid)
       {
-        const int direction = __builtin_ctz(rest);
-        quality12[direction] +=
-          DistanceToCircle(candidate12[direction].Curvature, h, squaredDistance);
-        quality23[direction] +=
-          DistanceToCircle(candidate23[direction].Curvature, h, squaredDistance);
+        continue;
+      }
+      for (const int list : { i, NumberOfDirections + i })
+      {
+        const std::uint32_t* index = this->ListIndices.data() + list * this->Capacity;
+        for (std::uint32_t j = 0; j < this->ListCount[list]; ++j)
+        {
+          const double h = this->AddedH[index[j]], squaredDistance = this->AddedD[index[j]];
+          quality12[i] += DistanceToCircle(candidate12[i].Curvature, h, squaredDistance);
+          quality23[i] += DistanceToCircle(candidate23[i].Curvature, h, squaredDistance);
+        }
       }
     }
     for (int i = 0; i < NumberOfDirections; ++i)

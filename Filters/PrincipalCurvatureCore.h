@@ -22,7 +22,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "HalfPlaneBinning.h"
+#include "SimdKernels.h"
 
 namespace pcurv
 {
@@ -227,7 +227,6 @@ private:
   std::size_t NumberOfAdded = 0;
   std::size_t Capacity = 0;
   std::vector<double> AddedH, AddedD, AddedTx, AddedTy;
-  std::vector<std::uint32_t> AddedMask;
 
   /// Per direction, two lists of indices into the above: the neighbours
   /// whose sector the direction's line bounds from below, and those near

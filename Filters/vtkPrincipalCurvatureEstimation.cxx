@@ -102,6 +102,22 @@ struct CurvatureArrays
     this->ValidDirections->SetValue(i, r.ValidDirections);
   }
 
+  /// Asks for the cache lines Store(i, ...) will write.
+  void Prefetch(vtkIdType i) const
+  {
+    for (vtkDoubleArray* values : { this->Minimum.Get(), this->Maximum.Get(), this->Mean.Get(),
+           this->Gauss.Get(), this->SineFitRms.Get(), this->Surroundings.Get(),
+           this->PlaneDistance.Get() })
+    {
+      __builtin_prefetch(values->GetPointer(i), 1);
+    }
+    __builtin_prefetch(this->MinimumDirection->GetPointer(3 * i), 1);
+    __builtin_prefetch(this->MaximumDirection->GetPointer(3 * i), 1);
+    __builtin_prefetch(this->Valid->GetPointer(i), 1);
+    __builtin_prefetch(this->NeighborCount->GetPointer(i), 1);
+    __builtin_prefetch(this->ValidDirections->GetPointer(i), 1);
+  }
+
   /// Back from the filter's working length unit (lengths multiplied by
   /// `lengthScale`) to the input's: curvatures scale like 1 / length.
   void ToInputUnit(double lengthScale)
@@ -280,6 +296,7 @@ public:
       }
       else
       {
+        this->PrefetchAhead(item, end);
         this->EstimateFixed(this->Order.Points[item], scratch);
       }
     }
@@ -297,6 +314,27 @@ private:
     std::vector<double> Distances;
     pcurv::NeighborOffsets Neighbors;
   };
+
+  /// Points are processed in grid order, their data and results sit in
+  /// input order: where that is random, each point's reads and writes
+  /// missed the cache (8 % of the filter's time on a shuffled 1M cloud).
+  /// Fetching a few points ahead hides it; two steps, since the output
+  /// position itself has to be read first.
+  void PrefetchAhead(vtkIdType item, vtkIdType end) const
+  {
+    constexpr vtkIdType Inputs = 16, Outputs = 8;
+    if (item + Inputs < end)
+    {
+      const vtkIdType point = this->Order.Points[item + Inputs];
+      __builtin_prefetch(&this->Cloud.InputIds[point]);
+      __builtin_prefetch(&this->Cloud.Coordinates[3 * point]);
+      __builtin_prefetch(&this->Cloud.Normals[3 * point]);
+    }
+    if (item + Outputs < end)
+    {
+      this->Out.Prefetch(this->Cloud.InputIds[this->Order.Points[item + Outputs]]);
+    }
+  }
 
   bool HasNormal(vtkIdType point) const
   {

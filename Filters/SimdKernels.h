@@ -1,9 +1,11 @@
 /**
- * @file HalfPlaneBinning.h
- * @brief Which of the 16 half planes each neighbour of a query point falls
- * into, for blocks of neighbours, with SIMD chosen at run time (no VTK).
+ * @file SimdKernels.h
+ * @brief The two innermost loops, with SIMD chosen at run time (no VTK):
+ * which of the 16 half planes each neighbour of a query point falls into
+ * (binning), and which points of a run of grid cells lie within the
+ * radius (gather).
  *
- * This is the innermost loop of the method: about 375 neighbours per point,
+ * Binning is the innermost loop of the method: about 375 neighbours per point,
  * each put into its tangent frame and tested against the half planes. Done
  * one neighbour at a time it cost about 100 scalar instructions and 60 % of
  * the filter's time; here the frame coordinates and the tests run on
@@ -11,8 +13,10 @@
  * AVX-512), and only the appends to the direction lists stay scalar.
  *
  * Every instruction set computes the same IEEE operations in the same order,
- * without fused multiply-adds (the file is compiled with -ffp-contract=off):
- * results are bit-identical whichever is used (tested).
+ * without fused multiply-adds (the file turns contraction off): results are
+ * bit-identical whichever is used (tested). PCURV_KERNEL=generic|avx2|avx512
+ * in the environment picks one (to compare them); by default the widest the
+ * processor has.
  *
  * The test, for a neighbour at tangent coordinates (tx, ty) and plane
  * distance p: direction i (angle i pi / 8) holds it when t . v_i > 0 and
@@ -22,8 +26,8 @@
  * first quadrant (|tx|, |ty|), which leaves distances to the lines
  * unchanged. Nearer ("near" lanes, a few percent) the caller tests all 16.
  */
-#ifndef HalfPlaneBinning_h
-#define HalfPlaneBinning_h
+#ifndef SimdKernels_h
+#define SimdKernels_h
 
 #include <cstddef>
 #include <cstdint>
@@ -66,9 +70,8 @@ struct Block
   std::int64_t AboveList[BlockSize + Padding];
   std::int64_t KeepBelow[BlockSize + Padding]; ///< 1: it belongs to BelowList
   std::int64_t KeepAbove[BlockSize + Padding];
-  std::int64_t Mask[BlockSize + Padding]; ///< bit i: in direction i
   /// 1 within p / sin(pi / 8) of the normal line, where the caller tests
-  /// all 16 planes (a few percent of the lanes; Keep... and Mask are 0).
+  /// all 16 planes (a few percent of the lanes; Keep... are 0 there).
   std::int64_t Near[BlockSize + Padding];
   std::size_t AtQueryPoint = 0; ///< neighbours with squared distance 0
 };
@@ -82,11 +85,6 @@ void Classify(const Frame& frame,
   std::size_t count,
   Block& block);
 
-/// The instruction sets this build and this processor can use, best last
-/// ("generic" is always there), and the one Classify uses.
-std::vector<std::string> AvailableKernels();
-std::string ActiveKernel();
-
 /// Classify with a named kernel (for tests comparing them); false when it
 /// is not available.
 bool ClassifyWith(const std::string& kernel,
@@ -98,6 +96,50 @@ bool ClassifyWith(const std::string& kernel,
   Block& block);
 
 } // namespace binning
+
+namespace gather
+{
+/// Extra entries each output array needs beyond the number of candidates:
+/// whole vectors are stored.
+constexpr std::size_t Padding = 8;
+
+/// The points begin..end - 1 of coordinate arrays x, y, z (one per axis)
+/// strictly closer than sqrt(radiusSquared) to `query`: their offsets
+/// (x[j] - query[0], ...) appended in order from entry `kept` of dx, dy,
+/// dz. Returns the new count. The distance is computed as
+/// (dx^2 + dy^2) + dz^2 on every instruction set.
+std::size_t WithinRadius(const double* x,
+  const double* y,
+  const double* z,
+  std::int64_t begin,
+  std::int64_t end,
+  const double query[3],
+  double radiusSquared,
+  double* dx,
+  double* dy,
+  double* dz,
+  std::size_t kept);
+
+/// WithinRadius with a named kernel (for tests); false when not available.
+bool WithinRadiusWith(const std::string& kernel,
+  const double* x,
+  const double* y,
+  const double* z,
+  std::int64_t begin,
+  std::int64_t end,
+  const double query[3],
+  double radiusSquared,
+  double* dx,
+  double* dy,
+  double* dz,
+  std::size_t& kept);
+} // namespace gather
+
+/// The instruction sets this build and this processor can use, widest last
+/// ("generic" is always there), and the one the kernels use.
+std::vector<std::string> AvailableKernels();
+std::string ActiveKernel();
+
 } // namespace pcurv
 
 #endif

@@ -1,0 +1,285 @@
+#include "SimdKernels.h"
+
+// No fused multiply-adds: with them (AVX-512 implies FMA) the kernels would
+// round differently from each other and from processors without FMA.
+#if defined(__clang__)
+#pragma clang fp contract(off)
+#elif defined(__GNUC__)
+#pragma GCC optimize("fp-contract=off")
+#endif
+
+#include <cstdlib>
+#include <cstring>
+
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
+// Wider kernels where GCC can target them per function and the processor
+// is checked at run time; other compilers and processors use the generic
+// ones (the same results).
+#define PCURV_MULTIVERSION 1
+#include <immintrin.h>
+#endif
+
+namespace pcurv
+{
+namespace
+{
+constexpr double TanEighthPi = 0.41421356237309503;        // tan(pi / 8)
+constexpr double SinEighthPiSquared = 0.14644660940672624; // sin^2(pi / 8)
+constexpr double CosEighthPi = 0.92387953251128674;        // cos(pi / 8) = sin(3 pi / 8)
+constexpr double SinEighthPi = 0.38268343236508978;        // sin(pi / 8) = cos(3 pi / 8)
+constexpr double CosQuarterPi = 0.70710678118654757;       // cos(pi / 4) = sin(pi / 4)
+
+using binning::Block;
+using binning::Frame;
+using ClassifyKernel =
+  void (*)(const Frame&, const double*, const double*, const double*, std::size_t, Block&);
+using GatherKernel = std::size_t (*)(const double*,
+  const double*,
+  const double*,
+  std::int64_t,
+  std::int64_t,
+  const double*,
+  double,
+  double*,
+  double*,
+  double*,
+  std::size_t);
+
+/// The gather, one candidate at a time: branch-free (about half the
+/// candidates are rejected, too randomly for branch prediction), a
+/// rejected candidate's offsets are overwritten by the next one.
+std::size_t GatherScalar(const double* x,
+  const double* y,
+  const double* z,
+  std::int64_t begin,
+  std::int64_t end,
+  const double* query,
+  double radiusSquared,
+  double* dx,
+  double* dy,
+  double* dz,
+  std::size_t kept)
+{
+  for (std::int64_t j = begin; j < end; ++j)
+  {
+    const double ox = x[j] - query[0], oy = y[j] - query[1], oz = z[j] - query[2];
+    dx[kept] = ox;
+    dy[kept] = oy;
+    dz[kept] = oz;
+    kept += (ox * ox + oy * oy + oz * oz < radiusSquared) ? 1 : 0;
+  }
+  return kept;
+}
+
+namespace generic
+{
+#define PCURV_LANES 2
+#include "HalfPlaneKernel.inc"
+#undef PCURV_LANES
+} // namespace generic
+
+#ifdef PCURV_MULTIVERSION
+#pragma GCC push_options
+#pragma GCC target("avx2")
+namespace avx2
+{
+#define PCURV_LANES 4
+#include "HalfPlaneKernel.inc"
+#undef PCURV_LANES
+} // namespace avx2
+#pragma GCC pop_options
+
+#pragma GCC push_options
+#pragma GCC target("avx512f,avx512dq,avx512vl,avx512bw")
+namespace avx512
+{
+#define PCURV_LANES 8
+#include "HalfPlaneKernel.inc"
+#undef PCURV_LANES
+
+/// Eight candidates at a time: the points inside are packed to the front
+/// of each vector (compress) and stored whole, the count advancing by
+/// their number. The same operations as GatherScalar.
+std::size_t Gather(const double* x,
+  const double* y,
+  const double* z,
+  std::int64_t begin,
+  std::int64_t end,
+  const double* query,
+  double radiusSquared,
+  double* dx,
+  double* dy,
+  double* dz,
+  std::size_t kept)
+{
+  const __m512d qx = _mm512_set1_pd(query[0]);
+  const __m512d qy = _mm512_set1_pd(query[1]);
+  const __m512d qz = _mm512_set1_pd(query[2]);
+  const __m512d limit = _mm512_set1_pd(radiusSquared);
+  for (std::int64_t j = begin; j < end; j += 8)
+  {
+    const __mmask8 valid =
+      end - j >= 8 ? __mmask8(0xff) : static_cast<__mmask8>((1u << (end - j)) - 1u);
+    const __m512d ox = _mm512_sub_pd(_mm512_maskz_loadu_pd(valid, x + j), qx);
+    const __m512d oy = _mm512_sub_pd(_mm512_maskz_loadu_pd(valid, y + j), qy);
+    const __m512d oz = _mm512_sub_pd(_mm512_maskz_loadu_pd(valid, z + j), qz);
+    const __m512d squared = _mm512_add_pd(
+      _mm512_add_pd(_mm512_mul_pd(ox, ox), _mm512_mul_pd(oy, oy)), _mm512_mul_pd(oz, oz));
+    const __mmask8 inside = _mm512_mask_cmp_pd_mask(valid, squared, limit, _CMP_LT_OQ);
+    _mm512_storeu_pd(dx + kept, _mm512_maskz_compress_pd(inside, ox));
+    _mm512_storeu_pd(dy + kept, _mm512_maskz_compress_pd(inside, oy));
+    _mm512_storeu_pd(dz + kept, _mm512_maskz_compress_pd(inside, oz));
+    kept += static_cast<std::size_t>(__builtin_popcount(inside));
+  }
+  return kept;
+}
+} // namespace avx512
+#pragma GCC pop_options
+#endif
+
+struct NamedKernel
+{
+  const char* Name;
+  ClassifyKernel Classify;
+  GatherKernel Gather;
+};
+
+std::vector<NamedKernel> Kernels()
+{
+  std::vector<NamedKernel> kernels{ { "generic", &generic::ClassifyBlock, &GatherScalar } };
+#ifdef PCURV_MULTIVERSION
+  __builtin_cpu_init();
+  if (__builtin_cpu_supports("avx2"))
+  {
+    kernels.push_back({ "avx2", &avx2::ClassifyBlock, &GatherScalar });
+  }
+  if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") &&
+    __builtin_cpu_supports("avx512vl") && __builtin_cpu_supports("avx512bw"))
+  {
+    kernels.push_back({ "avx512", &avx512::ClassifyBlock, &avx512::Gather });
+  }
+#endif
+  return kernels;
+}
+
+/// The widest kernel, unless PCURV_KERNEL names another available one.
+NamedKernel ChooseKernel()
+{
+  const std::vector<NamedKernel> kernels = Kernels();
+  if (const char* wanted = std::getenv("PCURV_KERNEL"))
+  {
+    for (const NamedKernel& kernel : kernels)
+    {
+      if (std::strcmp(kernel.Name, wanted) == 0)
+      {
+        return kernel;
+      }
+    }
+  }
+  return kernels.back();
+}
+
+const NamedKernel& Best()
+{
+  static const NamedKernel best = ChooseKernel();
+  return best;
+}
+
+const NamedKernel* Named(const std::string& name)
+{
+  static const std::vector<NamedKernel> kernels = Kernels();
+  for (const NamedKernel& kernel : kernels)
+  {
+    if (name == kernel.Name)
+    {
+      return &kernel;
+    }
+  }
+  return nullptr;
+}
+} // namespace
+
+namespace binning
+{
+void Classify(const Frame& frame,
+  const double* dx,
+  const double* dy,
+  const double* dz,
+  std::size_t count,
+  Block& block)
+{
+  Best().Classify(frame, dx, dy, dz, count, block);
+}
+
+bool ClassifyWith(const std::string& kernel,
+  const Frame& frame,
+  const double* dx,
+  const double* dy,
+  const double* dz,
+  std::size_t count,
+  Block& block)
+{
+  const NamedKernel* named = Named(kernel);
+  if (named)
+  {
+    named->Classify(frame, dx, dy, dz, count, block);
+  }
+  return named != nullptr;
+}
+} // namespace binning
+
+namespace gather
+{
+std::size_t WithinRadius(const double* x,
+  const double* y,
+  const double* z,
+  std::int64_t begin,
+  std::int64_t end,
+  const double query[3],
+  double radiusSquared,
+  double* dx,
+  double* dy,
+  double* dz,
+  std::size_t kept)
+{
+  return Best().Gather(x, y, z, begin, end, query, radiusSquared, dx, dy, dz, kept);
+}
+
+bool WithinRadiusWith(const std::string& kernel,
+  const double* x,
+  const double* y,
+  const double* z,
+  std::int64_t begin,
+  std::int64_t end,
+  const double query[3],
+  double radiusSquared,
+  double* dx,
+  double* dy,
+  double* dz,
+  std::size_t& kept)
+{
+  const NamedKernel* named = Named(kernel);
+  if (named)
+  {
+    kept = named->Gather(x, y, z, begin, end, query, radiusSquared, dx, dy, dz, kept);
+  }
+  return named != nullptr;
+}
+} // namespace gather
+
+std::vector<std::string> AvailableKernels()
+{
+  std::vector<std::string> names;
+  for (const NamedKernel& kernel : Kernels())
+  {
+    names.emplace_back(kernel.Name);
+  }
+  return names;
+}
+
+std::string ActiveKernel()
+{
+  return Best().Name;
+}
+
+} // namespace pcurv
