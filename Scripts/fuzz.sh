@@ -26,7 +26,7 @@ defines=()
 [ "${PCURV_FUZZ_SKIP_KNOWN_BUGS:-0}" = 1 ] && defines=(-DPCURV_FUZZ_SKIP_KNOWN_BUGS)
 nice clang++ -std=c++17 -O1 -g -fsanitize=fuzzer,address,undefined,float-cast-overflow \
   -fno-sanitize-recover=all "${defines[@]}" -I Filters -I /usr/include/eigen3 \
-  Testing/Fuzz/FuzzCurvatureCore.cxx Filters/PrincipalCurvatureCore.cxx Filters/HalfPlaneBinning.cxx Filters/PointGrid.cxx \
+  Testing/Fuzz/FuzzCurvatureCore.cxx Filters/PrincipalCurvatureCore.cxx Filters/SimdKernels.cxx Filters/PointGrid.cxx \
   Filters/DynamicAdjustment.cxx -o build-fuzz/FuzzCurvatureCore
 built=$(date +%s)
 export ASAN_OPTIONS="abort_on_error=1:halt_on_error=1"
