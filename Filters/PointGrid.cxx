@@ -172,12 +172,8 @@ std::int64_t PointGrid::QueryCells(const double x[3],
 void PointGrid::GatherWithinRadius(const double x[3], double radius, std::vector<double>& out) const
 {
   out.clear();
-  this->ForEachWithinRadius(x,
-    radius,
-    [&out](const double* q, std::int64_t)
-    {
-      out.insert(out.end(), q, q + 3);
-    });
+  this->ForEachWithinRadius(
+    x, radius, [&out](const double* q, std::int64_t) { out.insert(out.end(), q, q + 3); });
 }
 
 std::size_t PointGrid::GatherOffsetsWithinRadius(const double x[3],
@@ -206,9 +202,17 @@ std::size_t PointGrid::GatherOffsetsWithinRadius(const double x[3],
     {
       // Cells of one row are contiguous in the sorted order.
       const std::int64_t row = (iz * this->Dimensions[1] + iy) * this->Dimensions[0];
-      kept = gather::WithinRadius(this->Sorted[0].data(), this->Sorted[1].data(),
-        this->Sorted[2].data(), this->CellStart[row + low[0]], this->CellStart[row + high[0] + 1],
-        x, radiusSquared, out.Dx.data(), out.Dy.data(), out.Dz.data(), kept);
+      kept = gather::WithinRadius(this->Sorted[0].data(),
+        this->Sorted[1].data(),
+        this->Sorted[2].data(),
+        this->CellStart[row + low[0]],
+        this->CellStart[row + high[0] + 1],
+        x,
+        radiusSquared,
+        out.Dx.data(),
+        out.Dy.data(),
+        out.Dz.data(),
+        kept);
     }
   }
   out.Count = kept;

@@ -169,7 +169,7 @@ private:
   double Diagonal = 0.0;
   std::vector<std::int64_t> CellStart; // per cell, its first sorted point; one extra at the end
   std::array<std::vector<double>, 3> Sorted; // coordinates in cell order, one array per axis
-  std::vector<std::int64_t> Ids;       // original ids in cell order
+  std::vector<std::int64_t> Ids;             // original ids in cell order
 };
 
 } // namespace pcurv

@@ -227,6 +227,9 @@ private:
   std::size_t NumberOfAdded = 0;
   std::size_t Capacity = 0;
   std::vector<double> AddedH, AddedD, AddedTx, AddedTy;
+  /// One direction's heights and squared distances, gathered from its
+  /// lists for New02's choice.
+  std::vector<double> DirectionH, DirectionD;
 
   /// Per direction, two lists of indices into the above: the neighbours
   /// whose sector the direction's line bounds from below, and those near

@@ -10,6 +10,9 @@
 
 #include <cstdlib>
 #include <cstring>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
 // Wider kernels where GCC can target them per function and the processor
@@ -33,6 +36,7 @@ using binning::Block;
 using binning::Frame;
 using ClassifyKernel =
   void (*)(const Frame&, const double*, const double*, const double*, std::size_t, Block&);
+using CircleKernel = void (*)(const double*, const double*, std::size_t, const double*, double*);
 using GatherKernel = std::size_t (*)(const double*,
   const double*,
   const double*,
@@ -74,7 +78,7 @@ std::size_t GatherScalar(const double* x,
 namespace generic
 {
 #define PCURV_LANES 2
-#include "HalfPlaneKernel.inc"
+#include "SimdKernels.inc"
 #undef PCURV_LANES
 } // namespace generic
 
@@ -84,7 +88,7 @@ namespace generic
 namespace avx2
 {
 #define PCURV_LANES 4
-#include "HalfPlaneKernel.inc"
+#include "SimdKernels.inc"
 #undef PCURV_LANES
 } // namespace avx2
 #pragma GCC pop_options
@@ -94,7 +98,7 @@ namespace avx2
 namespace avx512
 {
 #define PCURV_LANES 8
-#include "HalfPlaneKernel.inc"
+#include "SimdKernels.inc"
 #undef PCURV_LANES
 
 /// Eight candidates at a time: the points inside are packed to the front
@@ -142,21 +146,25 @@ struct NamedKernel
   const char* Name;
   ClassifyKernel Classify;
   GatherKernel Gather;
+  CircleKernel Circles;
 };
 
 std::vector<NamedKernel> Kernels()
 {
-  std::vector<NamedKernel> kernels{ { "generic", &generic::ClassifyBlock, &GatherScalar } };
+  std::vector<NamedKernel> kernels{
+    { "generic", &generic::ClassifyBlock, &GatherScalar, &generic::CircleDistanceSums }
+  };
 #ifdef PCURV_MULTIVERSION
   __builtin_cpu_init();
   if (__builtin_cpu_supports("avx2"))
   {
-    kernels.push_back({ "avx2", &avx2::ClassifyBlock, &GatherScalar });
+    kernels.push_back({ "avx2", &avx2::ClassifyBlock, &GatherScalar, &avx2::CircleDistanceSums });
   }
   if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") &&
     __builtin_cpu_supports("avx512vl") && __builtin_cpu_supports("avx512bw"))
   {
-    kernels.push_back({ "avx512", &avx512::ClassifyBlock, &avx512::Gather });
+    kernels.push_back(
+      { "avx512", &avx512::ClassifyBlock, &avx512::Gather, &avx512::CircleDistanceSums });
   }
 #endif
   return kernels;
@@ -266,6 +274,33 @@ bool WithinRadiusWith(const std::string& kernel,
   return named != nullptr;
 }
 } // namespace gather
+
+namespace circles
+{
+void DistanceSums(const double* h,
+  const double* d,
+  std::size_t count,
+  const double kappa[2],
+  double sums[2])
+{
+  Best().Circles(h, d, count, kappa, sums);
+}
+
+bool DistanceSumsWith(const std::string& kernel,
+  const double* h,
+  const double* d,
+  std::size_t count,
+  const double kappa[2],
+  double sums[2])
+{
+  const NamedKernel* named = Named(kernel);
+  if (named)
+  {
+    named->Circles(h, d, count, kappa, sums);
+  }
+  return named != nullptr;
+}
+} // namespace circles
 
 std::vector<std::string> AvailableKernels()
 {

@@ -1,9 +1,9 @@
 /**
  * @file SimdKernels.h
- * @brief The two innermost loops, with SIMD chosen at run time (no VTK):
- * which of the 16 half planes each neighbour of a query point falls into
- * (binning), and which points of a run of grid cells lie within the
- * radius (gather).
+ * @brief The innermost loops, with SIMD chosen at run time (no VTK): which
+ * of the 16 half planes each neighbour of a query point falls into
+ * (binning), which points of a run of grid cells lie within the radius
+ * (gather), and New02's summed distances to its two circles (circles).
  *
  * Binning is the innermost loop of the method: about 375 neighbours per point,
  * each put into its tangent frame and tested against the half planes. Done
@@ -134,6 +134,26 @@ bool WithinRadiusWith(const std::string& kernel,
   double* dz,
   std::size_t& kept);
 } // namespace gather
+
+namespace circles
+{
+/// sums[c] = sum over j < count of DistanceToCircle(kappa[c], h[j], d[j]),
+/// c = 0, 1 (New02's choice between its two circles), added in eight
+/// interleaved partial sums in a fixed order on every instruction set.
+void DistanceSums(const double* h,
+  const double* d,
+  std::size_t count,
+  const double kappa[2],
+  double sums[2]);
+
+/// DistanceSums with a named kernel (for tests); false when not available.
+bool DistanceSumsWith(const std::string& kernel,
+  const double* h,
+  const double* d,
+  std::size_t count,
+  const double kappa[2],
+  double sums[2]);
+} // namespace circles
 
 /// The instruction sets this build and this processor can use, widest last
 /// ("generic" is always there), and the one the kernels use.

@@ -105,8 +105,12 @@ struct CurvatureArrays
   /// Asks for the cache lines Store(i, ...) will write.
   void Prefetch(vtkIdType i) const
   {
-    for (vtkDoubleArray* values : { this->Minimum.Get(), this->Maximum.Get(), this->Mean.Get(),
-           this->Gauss.Get(), this->SineFitRms.Get(), this->Surroundings.Get(),
+    for (vtkDoubleArray* values : { this->Minimum.Get(),
+           this->Maximum.Get(),
+           this->Mean.Get(),
+           this->Gauss.Get(),
+           this->SineFitRms.Get(),
+           this->Surroundings.Get(),
            this->PlaneDistance.Get() })
     {
       __builtin_prefetch(values->GetPointer(i), 1);

@@ -111,9 +111,8 @@ void RandomOffset(Random& random, double& x, double& y, double& z)
 void TestBinningKernelsAgree(Checks& checks)
 {
   const std::vector<std::string> kernels = AvailableKernels();
-  std::printf("binning kernels: %zu available, active: %s\n",
-    kernels.size(),
-    ActiveKernel().c_str());
+  std::printf(
+    "binning kernels: %zu available, active: %s\n", kernels.size(), ActiveKernel().c_str());
   checks.True("the generic kernel is available", kernels.front() == "generic");
   Random random(17);
   constexpr std::size_t Room = binning::BlockSize + binning::Padding;
@@ -216,11 +215,31 @@ void TestGatherKernelsAgree(Checks& checks)
       const double radiusSquared = trial % 3 == 0 ? 0.25 : random.Uniform();
       std::vector<double> a(3 * (64 + gather::Padding), -1.0), b = a;
       std::size_t keptA = 3, keptB = 3; // appended after three earlier entries
-      gather::WithinRadiusWith("generic", x.data(), y.data(), z.data(), begin, end, query,
-        radiusSquared, a.data(), a.data() + 72, a.data() + 144, keptA);
+      gather::WithinRadiusWith("generic",
+        x.data(),
+        y.data(),
+        z.data(),
+        begin,
+        end,
+        query,
+        radiusSquared,
+        a.data(),
+        a.data() + 72,
+        a.data() + 144,
+        keptA);
       checks.True("gather kernel runs",
-        gather::WithinRadiusWith(kernel, x.data(), y.data(), z.data(), begin, end, query,
-          radiusSquared, b.data(), b.data() + 72, b.data() + 144, keptB));
+        gather::WithinRadiusWith(kernel,
+          x.data(),
+          y.data(),
+          z.data(),
+          begin,
+          end,
+          query,
+          radiusSquared,
+          b.data(),
+          b.data() + 72,
+          b.data() + 144,
+          keptB));
       bool same = keptA == keptB;
       for (std::size_t k = 0; same && k < keptA; ++k)
       {
@@ -233,6 +252,48 @@ void TestGatherKernelsAgree(Checks& checks)
     }
   }
   checks.Equal("gathers where a kernel differs from the generic one", differences, 0L);
+}
+
+/// New02's summed distances to its circles: every kernel gives the generic
+/// one's sums bit for bit, and they equal DistanceToCircle added up.
+void TestCircleDistanceKernelsAgree(Checks& checks)
+{
+  Random random(31);
+  long differences = 0;
+  double largestRelative = 0.0;
+  for (int trial = 0; trial < 3000; ++trial)
+  {
+    const std::size_t count = static_cast<std::size_t>(trial % 70);
+    std::vector<double> h(count), d(count);
+    for (std::size_t j = 0; j < count; ++j)
+    {
+      const double along = random.Uniform();
+      h[j] = 0.3 * along * along + 0.01 * random.Normal();
+      d[j] = along * along + h[j] * h[j];
+    }
+    const double kappa[2] = { 2.0 * random.Normal(), trial % 5 == 0 ? 0.0 : 2.0 * random.Normal() };
+    double reference[2];
+    circles::DistanceSumsWith("generic", h.data(), d.data(), count, kappa, reference);
+    for (const std::string& kernel : AvailableKernels())
+    {
+      double sums[2] = { -1.0, -1.0 };
+      checks.True("circle kernel runs",
+        circles::DistanceSumsWith(kernel, h.data(), d.data(), count, kappa, sums));
+      differences += std::memcmp(sums, reference, sizeof sums) == 0 ? 0 : 1;
+    }
+    for (int c = 0; c < 2; ++c)
+    {
+      double plain = 0.0;
+      for (std::size_t j = 0; j < count; ++j)
+      {
+        plain += DistanceToCircle(kappa[c], h[j], d[j]);
+      }
+      largestRelative =
+        std::max(largestRelative, std::fabs(reference[c] - plain) / std::max(plain, 1e-300));
+    }
+  }
+  checks.Equal("circle sums where a kernel differs from the generic one", differences, 0L);
+  checks.Near("circle sums against DistanceToCircle (relative)", largestRelative, 0.0, 1e-13);
 }
 
 /// Neighbours given as coordinates or as offsets: the same estimate.
@@ -556,6 +617,7 @@ int main()
   TestDirectionMaskMatchesPlaneTest(checks);
   TestBinningKernelsAgree(checks);
   TestGatherKernelsAgree(checks);
+  TestCircleDistanceKernelsAgree(checks);
   TestOffsetsEqualCoordinates(checks);
   TestCircleFits(checks);
   TestPreviousMatchesEigenSolver(checks);
