@@ -407,41 +407,6 @@ void PrincipalCurvaturesFromSine(const SineFit& fit, const TangentFrame& frame, 
   out.MaximumDirection = Cross(frame.Normal, out.MinimumDirection);
 }
 
-namespace
-{
-/// 1 when (tx, ty) lies in half plane i: on its side and closer than p.
-/// Bitwise, not short-circuit: which neighbours pass is too random for the
-/// branch predictor.
-inline std::uint32_t InHalfPlane(const DirectionTable& table, int i, double tx, double ty, double p)
-{
-  const double along = tx * table.Cos[i] + ty * table.Sin[i];
-  const double across = -tx * table.Sin[i] + ty * table.Cos[i];
-  return static_cast<std::uint32_t>(along > 0.0) &
-    static_cast<std::uint32_t>(std::fabs(across) < p);
-}
-
-std::uint32_t AllHalfPlanesMask(const DirectionTable& table, double tx, double ty, double p)
-{
-  std::uint32_t mask = 0;
-  for (int i = 0; i < NumberOfDirections; ++i)
-  {
-    mask |= InHalfPlane(table, i, tx, ty, p) << i;
-  }
-  return mask;
-}
-} // namespace
-
-namespace
-{
-/// All 16 tests for a neighbour that the block classification left to the
-/// caller; none for one at the query point.
-std::uint32_t NearLaneMask(const binning::Block& block, std::size_t lane, double p)
-{
-  return block.D[lane] == 0.0 ? 0u
-                              : AllHalfPlanesMask(Directions(), block.Tx[lane], block.Ty[lane], p);
-}
-} // namespace
-
 std::uint32_t PointCurvatureEstimator::DirectionMask(double tx, double ty, double p)
 {
   // The filter's own classification, in the frame where the tangent
@@ -456,13 +421,11 @@ std::uint32_t PointCurvatureEstimator::DirectionMask(double tx, double ty, doubl
   block.Tx = x;
   block.Ty = y;
   binning::Classify(identity, &tx, &ty, &zero, 1, block);
-  if (block.Near[0])
+  if (block.Rare[0])
   {
-    return AllHalfPlanesMask(Directions(), tx, ty, p);
+    return static_cast<std::uint32_t>(block.Mask[0]);
   }
-  const auto bit = [](std::int64_t list, std::int64_t keep)
-  { return static_cast<std::uint32_t>(keep) << (list % NumberOfDirections); };
-  return bit(block.BelowList[0], block.KeepBelow[0]) | bit(block.AboveList[0], block.KeepAbove[0]);
+  return static_cast<std::uint32_t>(block.Keep[0]) << (block.List[0] % NumberOfDirections);
 }
 
 void PointCurvatureEstimator::Begin(const Vector3& point,
@@ -567,29 +530,32 @@ void PointCurvatureEstimator::AppendBlock(const binning::Block& block,
   // Locals, not members: the stores below could alias members and would
   // make the compiler reload them every iteration.
   const std::size_t capacity = this->Capacity;
-  const double p = this->ScaledPlaneDistance;
   std::uint32_t* indices = this->ListIndices.data();
   std::array<std::uint32_t, NumberOfLists> listCount = this->ListCount;
   // Writes neighbour `k` at the end of list `list`, and keeps it when
-  // `keep` is 1: no branch depends on the neighbour. (Counts, not end
-  // pointers: pointers measured 20 % slower.)
+  // `keep` is 1. (Counts, not end pointers: pointers measured 20 % slower.)
   auto append = [&](std::int64_t list, std::int64_t keep, std::uint32_t k)
   {
     indices[list * capacity + listCount[list]] = k;
     listCount[list] += static_cast<std::uint32_t>(keep);
   };
+  // One append per lane, no branch that depends on the neighbour; the rare
+  // lanes are marked and appended after the others.
+  std::uint64_t rare = 0;
   for (std::size_t j = 0; j < count; ++j)
   {
+    append(block.List[j], block.Keep[j], static_cast<std::uint32_t>(first + j));
+    rare |= static_cast<std::uint64_t>(block.Rare[j]) << j;
+  }
+  for (; rare; rare &= rare - 1)
+  {
+    const std::size_t j = static_cast<std::size_t>(__builtin_ctzll(rare));
     const std::uint32_t k = static_cast<std::uint32_t>(first + j);
-    append(block.BelowList[j], block.KeepBelow[j], k);
-    append(block.AboveList[j], block.KeepAbove[j], k);
-    if (block.Near[j]) // rare: a few percent of the neighbours
+    // Not at the query point, where every plane test is meaningless.
+    const std::uint64_t mask = block.D[j] == 0.0 ? 0 : static_cast<std::uint64_t>(block.Mask[j]);
+    for (std::uint64_t rest = mask; rest; rest &= rest - 1)
     {
-      const std::uint32_t mask = NearLaneMask(block, j, p);
-      for (std::uint32_t rest = mask; rest; rest &= rest - 1)
-      {
-        append(__builtin_ctz(rest), 1, k);
-      }
+      append(__builtin_ctzll(rest), 1, k);
     }
   }
   this->ListCount = listCount;

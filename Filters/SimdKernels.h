@@ -20,11 +20,12 @@
  *
  * The test, for a neighbour at tangent coordinates (tx, ty) and plane
  * distance p: direction i (angle i pi / 8) holds it when t . v_i > 0 and
- * |t . (n x v_i)| < p. Farther than p / sin(pi / 8) from the normal line only
- * the two directions bounding its sector can hold it, and both have
- * t . v_i > 0 there: those two are tested, in coordinates mirrored into the
+ * |t . (n x v_i)| < p. Farther than p / sin(pi / 4) from the normal line only
+ * the four directions nearest to its angle can hold it, all with
+ * t . v_i > 0: those four are tested, in coordinates mirrored into the
  * first quadrant (|tx|, |ty|), which leaves distances to the lines
- * unchanged. Nearer ("near" lanes, a few percent) the caller tests all 16.
+ * unchanged. Nearer (2 % of the lanes at p = s / 10) all 8 lines are
+ * tested, on both sides.
  */
 #ifndef SimdKernels_h
 #define SimdKernels_h
@@ -57,23 +58,22 @@ struct Frame
 };
 
 /// Per neighbour of a block: its coordinates (written where the caller
-/// points), and the two direction lists it may go to: those of the lines
-/// below and above it, role 0 and role 1 (direction i's lists are i and
-/// 16 + i).
+/// points), and the direction lists it goes to: for most, in one half plane
+/// or none, one list (direction i's lists are i and 16 + i); for the rare
+/// others, a mask of directions.
 struct Block
 {
   double* H = nullptr;  ///< height above the tangent plane
   double* D = nullptr;  ///< squared distance
   double* Tx = nullptr; ///< tangent coordinates
   double* Ty = nullptr;
-  std::int64_t BelowList[BlockSize + Padding];
-  std::int64_t AboveList[BlockSize + Padding];
-  std::int64_t KeepBelow[BlockSize + Padding]; ///< 1: it belongs to BelowList
-  std::int64_t KeepAbove[BlockSize + Padding];
-  /// 1 within p / sin(pi / 8) of the normal line, where the caller tests
-  /// all 16 planes (a few percent of the lanes; Keep... are 0 there).
-  std::int64_t Near[BlockSize + Padding];
-  std::size_t AtQueryPoint = 0; ///< neighbours with squared distance 0
+  std::int64_t List[BlockSize + Padding];
+  std::int64_t Keep[BlockSize + Padding]; ///< 1: in the half plane of List alone
+  /// 1 for lanes in two half planes or more, or within p / sin(pi / 4) of
+  /// the normal line (8 % of the lanes at p = s / 10; Keep is 0 there).
+  std::int64_t Rare[BlockSize + Padding];
+  std::int64_t Mask[BlockSize + Padding]; ///< rare lanes: bit i, in direction i
+  std::size_t AtQueryPoint = 0;           ///< neighbours with squared distance 0
 };
 
 /// Classifies `count` (at most BlockSize) neighbours given as offsets from

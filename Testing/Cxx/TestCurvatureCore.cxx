@@ -165,11 +165,10 @@ void TestBinningKernelsAgree(Checks& checks)
         std::memcmp(out.D, reference.D, doubles) == 0 &&
         std::memcmp(out.Tx, reference.Tx, doubles) == 0 &&
         std::memcmp(out.Ty, reference.Ty, doubles) == 0 &&
-        std::memcmp(out.Block.BelowList, reference.Block.BelowList, integers) == 0 &&
-        std::memcmp(out.Block.AboveList, reference.Block.AboveList, integers) == 0 &&
-        std::memcmp(out.Block.KeepBelow, reference.Block.KeepBelow, integers) == 0 &&
-        std::memcmp(out.Block.KeepAbove, reference.Block.KeepAbove, integers) == 0 &&
-        std::memcmp(out.Block.Near, reference.Block.Near, integers) == 0 &&
+        std::memcmp(out.Block.List, reference.Block.List, integers) == 0 &&
+        std::memcmp(out.Block.Keep, reference.Block.Keep, integers) == 0 &&
+        std::memcmp(out.Block.Rare, reference.Block.Rare, integers) == 0 &&
+        std::memcmp(out.Block.Mask, reference.Block.Mask, integers) == 0 &&
         out.Block.AtQueryPoint == reference.Block.AtQueryPoint;
       differences += same ? 0 : 1;
     }
