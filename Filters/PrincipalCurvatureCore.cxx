@@ -387,8 +387,14 @@ void PrincipalCurvaturesFromSine(const SineFit& fit, const TangentFrame& frame, 
   double c = 1.0, s = 0.0; // no amplitude: atan2(0, 0) = 0
   if (amplitude > 0.0)
   {
-    const double cosine2 = fit.CosineAmplitude / amplitude;
-    const double sine2 = fit.SineAmplitude / amplitude;
+    // Subnormal amplitudes have too few bits for accurate ratios (found by
+    // fuzzing: |d_min| = 1 - 7e-7): scaled up first, exactly.
+    const bool tiny = amplitude < 0x1p-900;
+    const double ac = tiny ? fit.CosineAmplitude * 0x1p600 : fit.CosineAmplitude;
+    const double as = tiny ? fit.SineAmplitude * 0x1p600 : fit.SineAmplitude;
+    const double norm = tiny ? std::hypot(ac, as) : amplitude;
+    const double cosine2 = ac / norm;
+    const double sine2 = as / norm;
     if (cosine2 >= 0.0)
     {
       c = std::sqrt(0.5 * (1.0 + cosine2));
@@ -415,17 +421,17 @@ std::uint32_t PointCurvatureEstimator::DirectionMask(double tx, double ty, doubl
   const double zero = 0.0;
   double h[1 + binning::Padding], d[1 + binning::Padding];
   double x[1 + binning::Padding], y[1 + binning::Padding];
+  std::int64_t mask[1 + binning::Padding];
+  std::vector<double> banks(binning::BankDoubles, 0.0);
   binning::Block block;
   block.H = h;
   block.D = d;
   block.Tx = x;
   block.Ty = y;
+  block.Mask = mask;
+  block.Banks = banks.data();
   binning::Classify(identity, &tx, &ty, &zero, 1, block);
-  if (block.Rare[0])
-  {
-    return static_cast<std::uint32_t>(block.Mask[0]);
-  }
-  return static_cast<std::uint32_t>(block.Keep[0]) << (block.List[0] % NumberOfDirections);
+  return static_cast<std::uint32_t>(mask[0]);
 }
 
 void PointCurvatureEstimator::Begin(const Vector3& point,
@@ -443,7 +449,11 @@ void PointCurvatureEstimator::Begin(const Vector3& point,
   this->ScaledPlaneDistance = planeDistance * this->InverseScale;
   this->NumberOfSlots = 0;
   this->NumberOfAdded = 0;
-  this->ListCount.fill(0);
+  this->Banks.assign(binning::BankDoubles, 0.0);
+  for (auto& record : this->RareRecords)
+  {
+    record.fill(0.0);
+  }
 }
 
 void PointCurvatureEstimator::Reserve(std::size_t neighbors)
@@ -452,27 +462,15 @@ void PointCurvatureEstimator::Reserve(std::size_t neighbors)
   {
     return;
   }
+  // The neighbours added so far keep their places; whole vectors are
+  // stored past the last one.
   const std::size_t capacity = std::max(neighbors, 2 * this->Capacity);
-  // The neighbours added so far keep their places...
-  // Whole vectors are stored past the last neighbour.
-  for (std::vector<double>* added : { &this->AddedH,
-         &this->AddedD,
-         &this->AddedTx,
-         &this->AddedTy,
-         &this->DirectionH,
-         &this->DirectionD })
+  for (std::vector<double>* added :
+    { &this->AddedH, &this->AddedD, &this->AddedTx, &this->AddedTy })
   {
     added->resize(capacity + binning::Padding);
   }
-  // ... and every list its entries, at the list's new start.
-  std::vector<std::uint32_t> grown(NumberOfLists * capacity);
-  for (int list = 0; list < NumberOfLists; ++list)
-  {
-    std::copy_n(this->ListIndices.data() + list * this->Capacity,
-      this->ListCount[list],
-      grown.data() + list * capacity);
-  }
-  this->ListIndices.swap(grown);
+  this->AddedMask.resize(capacity + binning::Padding);
   this->Capacity = capacity;
 }
 
@@ -498,8 +496,6 @@ void PointCurvatureEstimator::AddNeighborOffsets(const double* dx,
   const double* dz,
   std::size_t count)
 {
-  // Every list can take every neighbour: the appends write one entry past
-  // a list's end whether or not they keep it.
   this->Reserve(this->NumberOfSlots + count);
   const Vector3& n = this->Frame.Normal;
   const Vector3& v = this->Frame.V0;
@@ -518,100 +514,79 @@ void PointCurvatureEstimator::AddNeighborOffsets(const double* dx,
     block.D = this->AddedD.data() + first;
     block.Tx = this->AddedTx.data() + first;
     block.Ty = this->AddedTy.data() + first;
+    block.Mask = this->AddedMask.data() + first;
+    block.Banks = this->Banks.data();
+    block.FirstSlot = first;
     binning::Classify(frame, dx + start, dy + start, dz + start, size, block);
-    this->AppendBlock(block, first, size);
+    this->AddRareNeighbors(block, first, size);
   }
 }
 
-void PointCurvatureEstimator::AppendBlock(const binning::Block& block,
+void PointCurvatureEstimator::AddRareNeighbors(const binning::Block& block,
   std::size_t first,
   std::size_t count)
 {
-  // Locals, not members: the stores below could alias members and would
-  // make the compiler reload them every iteration.
-  const std::size_t capacity = this->Capacity;
-  std::uint32_t* indices = this->ListIndices.data();
-  std::array<std::uint32_t, NumberOfLists> listCount = this->ListCount;
-  // Writes neighbour `k` at the end of list `list`, and keeps it when
-  // `keep` is 1. (Counts, not end pointers: pointers measured 20 % slower.)
-  auto append = [&](std::int64_t list, std::int64_t keep, std::uint32_t k)
+  const DirectionTable& table = Directions();
+  for (std::uint64_t rare = block.RareBits; rare; rare &= rare - 1)
   {
-    indices[list * capacity + listCount[list]] = k;
-    listCount[list] += static_cast<std::uint32_t>(keep);
-  };
-  // One append per lane, no branch that depends on the neighbour; the rare
-  // lanes are marked and appended after the others.
-  std::uint64_t rare = 0;
-  for (std::size_t j = 0; j < count; ++j)
-  {
-    append(block.List[j], block.Keep[j], static_cast<std::uint32_t>(first + j));
-    rare |= static_cast<std::uint64_t>(block.Rare[j]) << j;
-  }
-  for (; rare; rare &= rare - 1)
-  {
-    const std::size_t j = static_cast<std::size_t>(__builtin_ctzll(rare));
-    const std::uint32_t k = static_cast<std::uint32_t>(first + j);
-    // Not at the query point, where every plane test is meaningless.
-    const std::uint64_t mask = block.D[j] == 0.0 ? 0 : static_cast<std::uint64_t>(block.Mask[j]);
-    for (std::uint64_t rest = mask; rest; rest &= rest - 1)
+    const std::size_t k = first + static_cast<std::size_t>(__builtin_ctzll(rare));
+    // Not at the query point, where the plane tests mean nothing.
+    if (this->AddedD[k] == 0.0)
     {
-      append(__builtin_ctzll(rest), 1, k);
+      this->AddedMask[k] = 0;
+      continue;
+    }
+    const double h = this->AddedH[k], d = this->AddedD[k];
+    for (std::uint64_t rest = static_cast<std::uint64_t>(this->AddedMask[k]); rest;
+         rest &= rest - 1)
+    {
+      const int i = __builtin_ctzll(rest);
+      std::array<double, binning::RecordSize>& r = this->RareRecords[i];
+      const double along = this->AddedTx[k] * table.Cos[i] + this->AddedTy[k] * table.Sin[i];
+      r[binning::SumH2] += h * h;
+      r[binning::SumH] += h;
+      r[binning::SumHD] += h * d;
+      r[binning::SumD] += d;
+      r[binning::SumD2] += d * d;
+      r[binning::Count] += 1.0;
+      r[binning::Extent] = std::max(r[binning::Extent], along);
     }
   }
-  this->ListCount = listCount;
   this->NumberOfSlots = first + count;
   this->NumberOfAdded += count - block.AtQueryPoint;
 }
 
-void PointCurvatureEstimator::SumDirectionLists()
+void PointCurvatureEstimator::SumBanks()
 {
-  const DirectionTable& table = Directions();
-  const double* addedH = this->AddedH.data();
-  const double* addedD = this->AddedD.data();
-  const double* addedTx = this->AddedTx.data();
-  const double* addedTy = this->AddedTy.data();
+  constexpr std::size_t BankStride = binning::RecordsPerBank * binning::RecordSize;
   for (int i = 0; i < NumberOfDirections; ++i)
   {
-    const double c = table.Cos[i], s = table.Sin[i];
-    // Two interleaved partial sums per list: independent chains of adds,
-    // combined in a fixed order (results depend on nothing but the lists).
-    double h2[2] = { 0.0, 0.0 }, hs[2] = { 0.0, 0.0 }, hd[2] = { 0.0, 0.0 };
-    double ds[2] = { 0.0, 0.0 }, d2[2] = { 0.0, 0.0 }, extent[2] = { 0.0, 0.0 };
-    auto add = [&](int lane, std::uint32_t k)
+    // Banks in a fixed order, then the rare neighbours: the sums depend on
+    // nothing but the order of the neighbours. Field by field (the loop
+    // over the eight fields vectorises).
+    const double* r = this->Banks.data() + i * binning::RecordSize;
+    const double* rare = this->RareRecords[i].data();
+    double total[binning::RecordSize];
+    for (int f = 0; f < binning::RecordSize; ++f)
     {
-      const double h = addedH[k], d = addedD[k];
-      h2[lane] += h * h;
-      hs[lane] += h;
-      hd[lane] += h * d;
-      ds[lane] += d;
-      d2[lane] += d * d;
-      extent[lane] = std::max(extent[lane], addedTx[k] * c + addedTy[k] * s);
-    };
-    std::uint32_t total = 0;
-    for (const int list : { i, NumberOfDirections + i })
+      total[f] = ((r[f] + r[BankStride + f]) + (r[2 * BankStride + f] + r[3 * BankStride + f])) +
+        ((r[4 * BankStride + f] + r[5 * BankStride + f]) +
+          (r[6 * BankStride + f] + r[7 * BankStride + f])) +
+        rare[f];
+    }
+    double extent = rare[binning::Extent];
+    for (int bank = 0; bank < binning::NumberOfBanks; ++bank)
     {
-      const std::uint32_t* index = this->ListIndices.data() + list * this->Capacity;
-      const std::uint32_t count = this->ListCount[list];
-      std::uint32_t j = 0;
-      for (; j + 1 < count; j += 2)
-      {
-        add(0, index[j]);
-        add(1, index[j + 1]);
-      }
-      if (j < count)
-      {
-        add(0, index[j]);
-      }
-      total += count;
+      extent = std::max(extent, r[bank * BankStride + binning::Extent]);
     }
     CgaSums& sums = this->Sums[i];
-    sums.SumH2 = h2[0] + h2[1];
-    sums.SumH = hs[0] + hs[1];
-    sums.SumHD = hd[0] + hd[1];
-    sums.SumD = ds[0] + ds[1];
-    sums.SumD2 = d2[0] + d2[1];
-    sums.Count = static_cast<int>(total);
-    sums.Extent = std::max(extent[0], extent[1]);
+    sums.SumH2 = total[binning::SumH2];
+    sums.SumH = total[binning::SumH];
+    sums.SumHD = total[binning::SumHD];
+    sums.SumD = total[binning::SumD];
+    sums.SumD2 = total[binning::SumD2];
+    sums.Count = static_cast<int>(total[binning::Count]);
+    sums.Extent = extent;
   }
 }
 
@@ -648,29 +623,49 @@ void PointCurvatureEstimator::FitDirections(const FitSettings& settings)
   {
     // Q = summed geometric distance of the direction's points to each
     // candidate circle; keep the candidate with the smaller Q.
+    // Each direction's points side by side, then a square root and a
+    // division per point and circle in vector instructions.
+    std::uint32_t wanted = 0;
+    for (int i = 0; i < NumberOfDirections; ++i)
+    {
+      wanted |= (candidate12[i].Valid && candidate23[i].Valid) ? 1u << i : 0u;
+    }
+    const std::size_t stride = this->Capacity + binning::Padding;
+    this->DirectionH.resize(NumberOfDirections * stride);
+    this->DirectionD.resize(NumberOfDirections * stride);
+    // Locals, not members: the stores could alias members.
+    std::array<std::size_t, NumberOfDirections> count{};
+    double* directionH = this->DirectionH.data();
+    double* directionD = this->DirectionD.data();
+    const std::int64_t* mask = this->AddedMask.data();
+    const double* addedH = this->AddedH.data();
+    const double* addedD = this->AddedD.data();
+    for (std::size_t k = 0; k < this->NumberOfSlots; ++k)
+    {
+      for (std::uint32_t rest = static_cast<std::uint32_t>(mask[k]) & wanted; rest;
+           rest &= rest - 1)
+      {
+        const std::size_t at = __builtin_ctz(rest) * stride + count[__builtin_ctz(rest)]++;
+        directionH[at] = addedH[k];
+        directionD[at] = addedD[k];
+      }
+    }
+    this->DirectionCount = count;
     std::array<double, NumberOfDirections> quality12{};
     std::array<double, NumberOfDirections> quality23{};
     for (int i = 0; i < NumberOfDirections; ++i)
     {
-      if (!candidate12[i].Valid || !candidate23[i].Valid)
+      if (!(wanted >> i & 1u))
       {
         continue;
       }
-      // The direction's points side by side, then a square root and a
-      // division per point and circle in vector instructions.
-      std::size_t count = 0;
-      for (const int list : { i, NumberOfDirections + i })
-      {
-        const std::uint32_t* index = this->ListIndices.data() + list * this->Capacity;
-        for (std::uint32_t j = 0; j < this->ListCount[list]; ++j, ++count)
-        {
-          this->DirectionH[count] = this->AddedH[index[j]];
-          this->DirectionD[count] = this->AddedD[index[j]];
-        }
-      }
       const double kappa[2] = { candidate12[i].Curvature, candidate23[i].Curvature };
       double sums[2];
-      circles::DistanceSums(this->DirectionH.data(), this->DirectionD.data(), count, kappa, sums);
+      circles::DistanceSums(this->DirectionH.data() + i * stride,
+        this->DirectionD.data() + i * stride,
+        this->DirectionCount[i],
+        kappa,
+        sums);
       quality12[i] = sums[0];
       quality23[i] = sums[1];
     }
@@ -701,7 +696,7 @@ PointCurvature PointCurvatureEstimator::Estimate(const FitSettings& settings)
   {
     return result;
   }
-  this->SumDirectionLists();
+  this->SumBanks();
   this->FitDirections(settings);
   const SineFit sine = FitSine(this->DirectionCurvature, this->DirectionValid);
   PrincipalCurvaturesFromSine(sine, this->Frame, result);

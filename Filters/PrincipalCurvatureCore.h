@@ -206,11 +206,11 @@ public:
 private:
   /// Makes room for `neighbors` neighbours in all, keeping those added.
   void Reserve(std::size_t neighbors);
-  /// Appends the block's neighbours, classified by binning::Classify and
-  /// stored from slot `first` on, to their direction lists.
-  void AppendBlock(const binning::Block& block, std::size_t first, std::size_t count);
-  /// The six sums of each direction from its lists, in list order.
-  void SumDirectionLists();
+  /// Adds the block's rare neighbours (those binning::Classify left to the
+  /// caller), stored from slot `first` on, to their directions' records.
+  void AddRareNeighbors(const binning::Block& block, std::size_t first, std::size_t count);
+  /// The six sums of each direction from its banks and rare record.
+  void SumBanks();
   void FitDirections(const FitSettings& settings);
 
   Vector3 Point{ { 0.0, 0.0, 0.0 } };
@@ -220,30 +220,28 @@ private:
 
   /// The neighbours added so far, in the order added (units of the scale):
   /// height above the tangent plane, squared distance, tangent coordinates,
-  /// and the directions each belongs to (New02's second pass reads them).
-  /// A neighbour at the query point takes a slot but no direction, and is
-  /// not counted in NumberOfAdded.
+  /// and the directions each is in (New02's second pass reads them). A
+  /// neighbour at the query point takes a slot but no direction, and is not
+  /// counted in NumberOfAdded.
   std::size_t NumberOfSlots = 0;
   std::size_t NumberOfAdded = 0;
   std::size_t Capacity = 0;
   std::vector<double> AddedH, AddedD, AddedTx, AddedTy;
-  /// One direction's heights and squared distances, gathered from its
-  /// lists for New02's choice.
-  std::vector<double> DirectionH, DirectionD;
+  std::vector<std::int64_t> AddedMask;
 
-  /// Per direction, two lists of indices into the above: the neighbours
-  /// whose sector the direction's line bounds from below, and those near
-  /// the normal line (role 0); those whose sector it bounds from above
-  /// (role 1). List r * 16 + i at [(r * 16 + i) * Capacity, + ListCount).
-  /// Appending each neighbour to lists and summing them afterwards, list
-  /// by list with the running sums in registers, costs half as much as
-  /// adding it straight into sums picked at run time (each add then waits
-  /// for the previous store); two roles make two independent chains of
-  /// list appends instead of one.
-  static constexpr int NumberOfLists = 2 * NumberOfDirections;
-  std::vector<std::uint32_t> ListIndices;
-  std::array<std::uint32_t, NumberOfLists> ListCount{};
+  /// The running sums: the banks the classification adds most neighbours
+  /// to (binning::Block), and one record per direction for the rare
+  /// neighbours, added in slot order. Adding each neighbour into sums
+  /// picked at run time made each add wait for the previous one's store
+  /// (36 ns per neighbour, 2024); direction lists summed afterwards halved
+  /// that; banks by slot, with a vector add per neighbour, need no lists.
+  std::vector<double> Banks;
+  std::array<std::array<double, binning::RecordSize>, NumberOfDirections> RareRecords{};
   binning::Block Binned;
+
+  /// New02: each direction's heights and squared distances side by side.
+  std::vector<double> DirectionH, DirectionD;
+  std::array<std::size_t, NumberOfDirections> DirectionCount{};
 
   std::array<CgaSums, NumberOfDirections> Sums{};
   std::array<double, NumberOfDirections> DirectionCurvature{};

@@ -32,8 +32,7 @@ constexpr double CosEighthPi = 0.92387953251128674;        // cos(pi / 8) = sin(
 constexpr double SinEighthPi = 0.38268343236508978;        // sin(pi / 8) = cos(3 pi / 8)
 constexpr double CosQuarterPi = 0.70710678118654757;       // cos(pi / 4) = sin(pi / 4)
 
-using binning::Block;
-using binning::Frame;
+using namespace binning;
 using ClassifyKernel =
   void (*)(const Frame&, const double*, const double*, const double*, std::size_t, Block&);
 using CircleKernel = void (*)(const double*, const double*, std::size_t, const double*, double*);
@@ -128,6 +127,37 @@ inline __attribute__((always_inline)) __m512i AllDirectionsAvx512(__m512d tx, __
   return mask;
 }
 
+/// lane[j][f] = field[f][j]: eight vectors of eight transposed in three
+/// rounds of two-source permutes.
+inline __attribute__((always_inline)) void Transpose(const __m512d field[8], __m512d lane[8])
+{
+  __m512d a[8], b[8];
+  for (int k = 0; k < 4; ++k)
+  {
+    a[2 * k] = _mm512_unpacklo_pd(field[2 * k], field[2 * k + 1]);
+    a[2 * k + 1] = _mm512_unpackhi_pd(field[2 * k], field[2 * k + 1]);
+  }
+  const __m512i low = _mm512_set_epi64(13, 12, 5, 4, 9, 8, 1, 0);
+  const __m512i high = _mm512_set_epi64(15, 14, 7, 6, 11, 10, 3, 2);
+  // b[0]: fields 0-3 of lanes 0 and 4; b[1]: of lanes 2 and 6; b[2]: 1
+  // and 5; b[3]: 3 and 7; b[4..7] the same for fields 4-7.
+  for (int k = 0; k < 2; ++k)
+  {
+    b[4 * k] = _mm512_permutex2var_pd(a[4 * k], low, a[4 * k + 2]);
+    b[4 * k + 1] = _mm512_permutex2var_pd(a[4 * k], high, a[4 * k + 2]);
+    b[4 * k + 2] = _mm512_permutex2var_pd(a[4 * k + 1], low, a[4 * k + 3]);
+    b[4 * k + 3] = _mm512_permutex2var_pd(a[4 * k + 1], high, a[4 * k + 3]);
+  }
+  const __m512i first = _mm512_set_epi64(11, 10, 9, 8, 3, 2, 1, 0);
+  const __m512i second = _mm512_set_epi64(15, 14, 13, 12, 7, 6, 5, 4);
+  static constexpr int LaneOf[4] = { 0, 2, 1, 3 };
+  for (int k = 0; k < 4; ++k)
+  {
+    lane[LaneOf[k]] = _mm512_permutex2var_pd(b[k], first, b[k + 4]);
+    lane[LaneOf[k] + 4] = _mm512_permutex2var_pd(b[k], second, b[k + 4]);
+  }
+}
+
 inline __attribute__((always_inline)) __m512i ClassifyLanesAvx512(const Frame& f,
   const double* dx,
   const double* dy,
@@ -209,9 +239,16 @@ inline __attribute__((always_inline)) __m512i ClassifyLanesAvx512(const Frame& f
   const __m512i list = _mm512_or_si512(
     _mm512_or_si512(_mm512_maskz_mov_epi64(in0, line0), _mm512_maskz_mov_epi64(in1, line1)),
     _mm512_or_si512(_mm512_maskz_mov_epi64(in2, line2), _mm512_maskz_mov_epi64(in3, line3)));
-  const __m512i role = _mm512_set_epi64(16, 0, 16, 0, 16, 0, 16, 0);
-  _mm512_storeu_si512(block.List + at, _mm512_add_epi64(list, role));
-  _mm512_storeu_si512(block.Keep + at, _mm512_maskz_mov_epi64(single & ~near, one));
+  const __m512d c8 = _mm512_set1_pd(CosEighthPi), s8 = _mm512_set1_pd(SinEighthPi);
+  const __m512d along0 = _mm512_sub_pd(_mm512_mul_pd(u, c8), _mm512_mul_pd(w, s8));
+  const __m512d along2 = _mm512_add_pd(_mm512_mul_pd(u, c8), _mm512_mul_pd(w, s8));
+  const __m512d along3 = _mm512_mul_pd(_mm512_add_pd(u, w), _mm512_set1_pd(CosQuarterPi));
+  // in0 ? along0 : in1 ? u : in2 ? along2 : along3
+  __m512d along = _mm512_mask_blend_pd(in2, along3, along2);
+  along = _mm512_mask_blend_pd(in1, along, u);
+  along = _mm512_mask_blend_pd(in0, along, along0);
+  const __mmask8 keep = single & ~near;
+  const __m512i record = _mm512_mask_mov_epi64(_mm512_set1_epi64(RecordsPerBank - 1), keep, list);
 
   __m512i mask = _mm512_or_si512(_mm512_or_si512(_mm512_maskz_sllv_epi64(in0, one, line0),
                                    _mm512_maskz_sllv_epi64(in1, one, line1)),
@@ -222,8 +259,34 @@ inline __attribute__((always_inline)) __m512i ClassifyLanesAvx512(const Frame& f
     mask = _mm512_mask_mov_epi64(mask, near, AllDirectionsAvx512(tx, ty, p));
   }
   const __mmask8 rare = near | several;
-  _mm512_storeu_si512(block.Mask + at, _mm512_maskz_mov_epi64(rare, mask));
+  _mm512_storeu_si512(block.Mask + at, _mm512_maskz_mov_epi64(rare | keep, mask));
   _mm512_storeu_si512(block.Rare + at, _mm512_maskz_mov_epi64(rare, one));
+  block.RareBits |= static_cast<std::uint64_t>(rare) << at;
+
+  // The single-plane lanes into their banks: the eight records (h^2, h,
+  // h D, D, D^2, 1, along, -) transposed to one vector per lane, each added
+  // to its bank's record with one vector add (and a max for the extent).
+  __m512d field[8] = { _mm512_mul_pd(h, h),
+    h,
+    _mm512_mul_pd(h, d),
+    d,
+    _mm512_mul_pd(d, d),
+    _mm512_set1_pd(1.0),
+    along,
+    _mm512_setzero_pd() };
+  __m512d lane[8];
+  Transpose(field, lane);
+  alignas(64) std::int64_t records[8];
+  _mm512_store_si512(records, record);
+  for (int j = 0; j < 8; ++j)
+  {
+    const std::size_t bank = (block.FirstSlot + at + j) % NumberOfBanks;
+    double* r = block.Banks + (bank * RecordsPerBank + records[j]) * RecordSize;
+    __m512d sums = _mm512_loadu_pd(r);
+    sums = _mm512_mask_add_pd(sums, 0x3f, sums, lane[j]);
+    sums = _mm512_mask_max_pd(sums, 0x40, sums, lane[j]);
+    _mm512_storeu_pd(r, sums);
+  }
   return _mm512_maskz_mov_epi64(_mm512_cmp_pd_mask(d, _mm512_setzero_pd(), _CMP_EQ_OQ), one);
 }
 #define PCURV_CLASSIFY_LANES ClassifyLanesAvx512

@@ -57,23 +57,46 @@ struct Frame
   double PlaneDistance;
 };
 
-/// Per neighbour of a block: its coordinates (written where the caller
-/// points), and the direction lists it goes to: for most, in one half plane
-/// or none, one list (direction i's lists are i and 16 + i); for the rare
-/// others, a mask of directions.
+/// Running sums of each direction, kept per bank: neighbour (slot) k adds
+/// into bank k mod 8, so that consecutive neighbours, often in the same
+/// direction, do not wait for each other's adds. A record holds, in this
+/// order, the sums of h^2, h, h D, D, D^2, the count, and the largest
+/// distance along the direction (the extent); record 16 of each bank takes
+/// the neighbours that are in no direction (a branch-free dead end).
+constexpr int NumberOfBanks = 8;
+constexpr int RecordsPerBank = 17;
+constexpr int RecordSize = 8;
+enum Field : int
+{
+  SumH2 = 0,
+  SumH = 1,
+  SumHD = 2,
+  SumD = 3,
+  SumD2 = 4,
+  Count = 5,
+  Extent = 6
+};
+constexpr std::size_t BankDoubles =
+  static_cast<std::size_t>(NumberOfBanks) * RecordsPerBank * RecordSize;
+
+/// Where a block's results go. Per neighbour, at its slot: coordinates and
+/// the directions it is in (bit i: direction i). The neighbours in one
+/// half plane (most of them) are added to the banks here; the rare others
+/// (in several, or near the normal line) are marked for the caller to add.
 struct Block
 {
   double* H = nullptr;  ///< height above the tangent plane
   double* D = nullptr;  ///< squared distance
   double* Tx = nullptr; ///< tangent coordinates
   double* Ty = nullptr;
-  std::int64_t List[BlockSize + Padding];
-  std::int64_t Keep[BlockSize + Padding]; ///< 1: in the half plane of List alone
-  /// 1 for lanes in two half planes or more, or within p / sin(pi / 4) of
-  /// the normal line (8 % of the lanes at p = s / 10; Keep is 0 there).
+  std::int64_t* Mask = nullptr; ///< directions of each neighbour
+  double* Banks = nullptr;      ///< BankDoubles values
+  std::size_t FirstSlot = 0;    ///< slot of the block's first neighbour
+  /// 1 for neighbours in several half planes or within p / sin(pi / 4) of
+  /// the normal line (8 % of them at p = s / 10): not added to the banks.
   std::int64_t Rare[BlockSize + Padding];
-  std::int64_t Mask[BlockSize + Padding]; ///< rare lanes: bit i, in direction i
-  std::size_t AtQueryPoint = 0;           ///< neighbours with squared distance 0
+  std::uint64_t RareBits = 0;   ///< bit j: Rare[j]
+  std::size_t AtQueryPoint = 0; ///< neighbours with squared distance 0
 };
 
 /// Classifies `count` (at most BlockSize) neighbours given as offsets from
