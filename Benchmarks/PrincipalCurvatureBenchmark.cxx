@@ -1366,7 +1366,7 @@ void PrintSummary(const Options& options, const Results& results, CsvFile& csv)
     same("neighbour search (GatherOffsetsWithinRadius)",
       search,
       Format("%.1f ns", 1e9 * Median(ph.Search) / neighbors));
-    same("half planes + direction lists (Begin, AddNeighborOffsets)",
+    same("half planes + sums (Begin, AddNeighborOffsets)",
       accumulate,
       Format("%.1f ns", 1e9 * Median(ph.Accumulate) / neighbors));
     std::vector<std::string> fits{ "circle fits (Estimate minus sine fit)" };
@@ -1428,7 +1428,7 @@ void PrintSummary(const Options& options, const Results& results, CsvFile& csv)
     }
     note += "points. The sine fit is timed alone per point (FitSine + principal values and "
             "directions) and subtracted from Estimate(); Estimate() also forms each "
-            "direction's six sums from the lists AddNeighbors filled.";
+            "direction's six sums from the banks AddNeighborOffsets filled.";
     table.Print(
       Format("Phases, %s points, seconds for the whole cloud", SizeName(size.N).c_str()), note);
   }

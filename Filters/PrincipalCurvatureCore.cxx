@@ -631,26 +631,35 @@ void PointCurvatureEstimator::FitDirections(const FitSettings& settings)
       wanted |= (candidate12[i].Valid && candidate23[i].Valid) ? 1u << i : 0u;
     }
     const std::size_t stride = this->Capacity + binning::Padding;
-    this->DirectionH.resize(NumberOfDirections * stride);
-    this->DirectionD.resize(NumberOfDirections * stride);
+    // One more row: a dead end for the neighbours in no wanted direction.
+    this->DirectionH.resize((NumberOfDirections + 1) * stride);
+    this->DirectionD.resize((NumberOfDirections + 1) * stride);
     // Locals, not members: the stores could alias members.
-    std::array<std::size_t, NumberOfDirections> count{};
+    std::array<std::size_t, NumberOfDirections + 1> count{};
     double* directionH = this->DirectionH.data();
     double* directionD = this->DirectionD.data();
     const std::int64_t* mask = this->AddedMask.data();
     const double* addedH = this->AddedH.data();
     const double* addedD = this->AddedD.data();
+    auto put = [&](std::size_t k, int i, std::size_t keep)
+    {
+      const std::size_t at = i * stride + count[i];
+      directionH[at] = addedH[k];
+      directionD[at] = addedD[k];
+      count[i] += keep;
+    };
     for (std::size_t k = 0; k < this->NumberOfSlots; ++k)
     {
-      for (std::uint32_t rest = static_cast<std::uint32_t>(mask[k]) & wanted; rest;
-           rest &= rest - 1)
+      // The first direction without a branch (most neighbours have one or
+      // none: a loop over the bits mispredicted at nearly every one).
+      const std::uint32_t bits = static_cast<std::uint32_t>(mask[k]) & wanted;
+      put(k, __builtin_ctz(bits | 1u << NumberOfDirections), bits != 0);
+      for (std::uint32_t rest = bits & (bits - 1); rest; rest &= rest - 1)
       {
-        const std::size_t at = __builtin_ctz(rest) * stride + count[__builtin_ctz(rest)]++;
-        directionH[at] = addedH[k];
-        directionD[at] = addedD[k];
+        put(k, __builtin_ctz(rest), 1);
       }
     }
-    this->DirectionCount = count;
+    std::copy_n(count.begin(), NumberOfDirections, this->DirectionCount.begin());
     std::array<double, NumberOfDirections> quality12{};
     std::array<double, NumberOfDirections> quality23{};
     for (int i = 0; i < NumberOfDirections; ++i)

@@ -1,0 +1,48 @@
+"""Filter update time under MPI (pvbatch), for the README's table.
+
+    build/bin/GenerateAnalyticCloud torus 1000000 /tmp/torus1M.vtp
+    mpiexec -n RANKS [--bind-to none] pvbatch --mpi Benchmarks/mpi_timing.py \
+        build/lib/paraview-plugins/PrincipalCurvatures/PrincipalCurvatures.so /tmp/torus1M.vtp [RUNS]
+
+The cloud is read, redistributed into one spatial piece per rank
+(RedistributeDataSet, as a distributed pipeline would hold it), and the
+filter's update alone is timed on every rank between barriers; rank 0
+prints the median of RUNS (default 3) runs. VTK_SMP_MAX_THREADS sets the
+threads per rank (default: all cores).
+"""
+
+import statistics
+import sys
+import time
+
+from paraview import servermanager, simple
+
+
+def main(plugin, cloud, runs=3):
+    simple.LoadPlugin(plugin, remote=False, ns=globals())
+    controller = servermanager.vtkProcessModule.GetProcessModule().GetGlobalController()
+    reader = simple.XMLPolyDataReader(FileName=[cloud])
+    pieces = simple.RedistributeDataSet(Input=reader)
+    pieces.UpdatePipeline()
+    times = []
+    for run in range(int(runs)):
+        curvatures = PrincipalCurvatures(Input=pieces)  # noqa: F821 (from the plugin)
+        curvatures.Normals = ["POINTS", "Normals"]
+        controller.Barrier()
+        start = time.perf_counter()
+        curvatures.UpdatePipeline()
+        controller.Barrier()
+        times.append(time.perf_counter() - start)
+        simple.Delete(curvatures)
+    if controller.GetLocalProcessId() == 0:
+        print("ranks %d, runs %s s, median %.2f s"
+              % (controller.GetNumberOfProcesses(), " ".join("%.2f" % t for t in times),
+                 statistics.median(times)))
+    return 0
+
+
+if __name__ == "__main__":
+    if len(sys.argv) not in (3, 4):
+        print(__doc__)
+        sys.exit(2)
+    sys.exit(main(*sys.argv[1:]))
