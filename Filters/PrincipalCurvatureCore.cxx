@@ -659,7 +659,6 @@ void PointCurvatureEstimator::FitDirections(const FitSettings& settings)
         put(k, __builtin_ctz(rest), 1);
       }
     }
-    std::copy_n(count.begin(), NumberOfDirections, this->DirectionCount.begin());
     std::array<double, NumberOfDirections> quality12{};
     std::array<double, NumberOfDirections> quality23{};
     for (int i = 0; i < NumberOfDirections; ++i)
@@ -672,7 +671,7 @@ void PointCurvatureEstimator::FitDirections(const FitSettings& settings)
       double sums[2];
       circles::DistanceSums(this->DirectionH.data() + i * stride,
         this->DirectionD.data() + i * stride,
-        this->DirectionCount[i],
+        count[i],
         kappa,
         sums);
       quality12[i] = sums[0];

@@ -233,15 +233,15 @@ private:
   /// to (binning::Block), and one record per direction for the rare
   /// neighbours, added in slot order. Adding each neighbour into sums
   /// picked at run time made each add wait for the previous one's store
-  /// (36 ns per neighbour, 2024); direction lists summed afterwards halved
-  /// that; banks by slot, with a vector add per neighbour, need no lists.
+  /// (36 ns per neighbour in the first version); direction lists summed
+  /// afterwards halved that; banks by slot, with a vector add per
+  /// neighbour, need no lists.
   std::vector<double> Banks;
   std::array<std::array<double, binning::RecordSize>, NumberOfDirections> RareRecords{};
   binning::Block Binned;
 
   /// New02: each direction's heights and squared distances side by side.
   std::vector<double> DirectionH, DirectionD;
-  std::array<std::size_t, NumberOfDirections> DirectionCount{};
 
   std::array<CgaSums, NumberOfDirections> Sums{};
   std::array<double, NumberOfDirections> DirectionCurvature{};

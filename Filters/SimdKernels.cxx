@@ -260,7 +260,6 @@ inline __attribute__((always_inline)) __m512i ClassifyLanesAvx512(const Frame& f
   }
   const __mmask8 rare = near | several;
   _mm512_storeu_si512(block.Mask + at, _mm512_maskz_mov_epi64(rare | keep, mask));
-  _mm512_storeu_si512(block.Rare + at, _mm512_maskz_mov_epi64(rare, one));
   block.RareBits |= static_cast<std::uint64_t>(rare) << at;
 
   // The single-plane lanes into their banks: the eight records (h^2, h,

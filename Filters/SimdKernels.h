@@ -6,11 +6,12 @@
  * (gather), and New02's summed distances to its two circles (circles).
  *
  * Binning is the innermost loop of the method: about 375 neighbours per point,
- * each put into its tangent frame and tested against the half planes. Done
- * one neighbour at a time it cost about 100 scalar instructions and 60 % of
- * the filter's time; here the frame coordinates and the tests run on
- * several neighbours at once (2 lanes with SSE2, 4 with AVX2, 8 with
- * AVX-512), and only the appends to the direction lists stay scalar.
+ * each put into its tangent frame, tested against the half planes and added
+ * to its direction's sums. Done one neighbour at a time it cost about 100
+ * scalar instructions and 60 % of the filter's time; here the frame
+ * coordinates and the tests run on several neighbours at once (2 lanes with
+ * SSE2, 4 with AVX2, 8 with AVX-512), and with AVX-512 the sums too; only
+ * the rare neighbours in several half planes stay scalar.
  *
  * Every instruction set computes the same IEEE operations in the same order,
  * without fused multiply-adds (the file turns contraction off): results are
@@ -92,10 +93,10 @@ struct Block
   std::int64_t* Mask = nullptr; ///< directions of each neighbour
   double* Banks = nullptr;      ///< BankDoubles values
   std::size_t FirstSlot = 0;    ///< slot of the block's first neighbour
-  /// 1 for neighbours in several half planes or within p / sin(pi / 4) of
-  /// the normal line (8 % of them at p = s / 10): not added to the banks.
-  std::int64_t Rare[BlockSize + Padding];
-  std::uint64_t RareBits = 0;   ///< bit j: Rare[j]
+  /// Bit j set for neighbour j when it is in several half planes or within
+  /// p / sin(pi / 4) of the normal line (8 % of them at p = s / 10): not
+  /// added to the banks.
+  std::uint64_t RareBits = 0;
   std::size_t AtQueryPoint = 0; ///< neighbours with squared distance 0
 };
 
