@@ -26,11 +26,10 @@ namespace pcurv
 {
 namespace
 {
-constexpr double TanEighthPi = 0.41421356237309503;        // tan(pi / 8)
-constexpr double SinEighthPiSquared = 0.14644660940672624; // sin^2(pi / 8)
-constexpr double CosEighthPi = 0.92387953251128674;        // cos(pi / 8) = sin(3 pi / 8)
-constexpr double SinEighthPi = 0.38268343236508978;        // sin(pi / 8) = cos(3 pi / 8)
-constexpr double CosQuarterPi = 0.70710678118654757;       // cos(pi / 4) = sin(pi / 4)
+constexpr double TanEighthPi = 0.41421356237309503;  // tan(pi / 8)
+constexpr double CosEighthPi = 0.92387953251128674;  // cos(pi / 8) = sin(3 pi / 8)
+constexpr double SinEighthPi = 0.38268343236508978;  // sin(pi / 8) = cos(3 pi / 8)
+constexpr double CosQuarterPi = 0.70710678118654757; // cos(pi / 4) = sin(pi / 4)
 
 using namespace binning;
 using ClassifyKernel =
