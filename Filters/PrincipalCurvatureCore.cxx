@@ -422,7 +422,8 @@ std::uint32_t PointCurvatureEstimator::DirectionMask(double tx, double ty, doubl
   double h[1 + binning::Padding], d[1 + binning::Padding];
   double x[1 + binning::Padding], y[1 + binning::Padding];
   std::int64_t mask[1 + binning::Padding];
-  std::vector<double> banks(binning::BankDoubles, 0.0);
+  // Sums the classification adds to and nobody reads: allocated once.
+  static thread_local std::vector<double> banks(binning::BankDoubles, 0.0);
   binning::Block block;
   block.H = h;
   block.D = d;
@@ -541,15 +542,8 @@ void PointCurvatureEstimator::AddRareNeighbors(const binning::Block& block,
          rest &= rest - 1)
     {
       const int i = __builtin_ctzll(rest);
-      std::array<double, binning::RecordSize>& r = this->RareRecords[i];
       const double along = this->AddedTx[k] * table.Cos[i] + this->AddedTy[k] * table.Sin[i];
-      r[binning::SumH2] += h * h;
-      r[binning::SumH] += h;
-      r[binning::SumHD] += h * d;
-      r[binning::SumD] += d;
-      r[binning::SumD2] += d * d;
-      r[binning::Count] += 1.0;
-      r[binning::Extent] = std::max(r[binning::Extent], along);
+      binning::AddToRecord(this->RareRecords[i].data(), h, d, along);
     }
   }
   this->NumberOfSlots = first + count;

@@ -80,6 +80,19 @@ enum Field : int
 constexpr std::size_t BankDoubles =
   static_cast<std::size_t>(NumberOfBanks) * RecordsPerBank * RecordSize;
 
+/// Adds one neighbour (height h, squared distance d, distance along the
+/// direction) to a record; the AVX-512 kernel does the same in one vector.
+inline __attribute__((always_inline)) void AddToRecord(double* r, double h, double d, double along)
+{
+  r[SumH2] += h * h;
+  r[SumH] += h;
+  r[SumHD] += h * d;
+  r[SumD] += d;
+  r[SumD2] += d * d;
+  r[Count] += 1.0;
+  r[Extent] = r[Extent] > along ? r[Extent] : along;
+}
+
 /// Where a block's results go. Per neighbour, at its slot: coordinates and
 /// the directions it is in (bit i: direction i). The neighbours in one
 /// half plane (most of them) are added to the banks here; the rare others
