@@ -55,6 +55,12 @@ public:
   /// Index (0..2) of the current target combination.
   int GetLevel() const { return this->Level; }
 
+  /// The current combination's target neighbour count N_t (rounded).
+  int GetTargetNeighborCount() const
+  {
+    return static_cast<int>(this->Settings.TargetNeighborCounts[this->Level] + 0.5);
+  }
+
   /// Takes the number of neighbours found within GetSurroundingsThreshold(),
   /// returns the plane-distance-threshold for this point and updates s and
   /// the target combination for the next point.

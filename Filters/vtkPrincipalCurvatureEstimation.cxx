@@ -67,8 +67,11 @@ struct CurvatureArrays
     SineFitRms, Surroundings, PlaneDistance;
   vtkSmartPointer<vtkUnsignedCharArray> Valid;
   vtkSmartPointer<vtkIntArray> NeighborCount, ValidDirections;
+  /// With the dynamic adjustment only: the neighbour count it aimed at for
+  /// the point (its target combination's N_t), to compare with Neighbor_Count.
+  vtkSmartPointer<vtkIntArray> TargetCount;
 
-  explicit CurvatureArrays(vtkIdType n)
+  CurvatureArrays(vtkIdType n, bool adjusted)
     : Minimum(NewDoubleArray("Minimum_Curvature", 1, n))
     , Maximum(NewDoubleArray("Maximum_Curvature", 1, n))
     , Mean(NewDoubleArray("Mean_Curvature", 1, n))
@@ -81,10 +84,12 @@ struct CurvatureArrays
     , Valid(NewIntegerArray<vtkUnsignedCharArray>("Curvature_Valid", n))
     , NeighborCount(NewIntegerArray<vtkIntArray>("Neighbor_Count", n))
     , ValidDirections(NewIntegerArray<vtkIntArray>("Valid_Direction_Count", n))
+    , TargetCount(adjusted ? NewIntegerArray<vtkIntArray>("Target_Neighbor_Count", n) : nullptr)
   {
   }
 
-  void Store(vtkIdType i, const pcurv::PointCurvature& r, double s, double p)
+  /// `target`: the adjustment's target count (0 where it has none).
+  void Store(vtkIdType i, const pcurv::PointCurvature& r, double s, double p, int target = 0)
   {
     const double kMin = r.Valid ? r.MinimumCurvature : NaN;
     const double kMax = r.Valid ? r.MaximumCurvature : NaN;
@@ -100,6 +105,10 @@ struct CurvatureArrays
     this->Valid->SetValue(i, r.Valid ? 1 : 0);
     this->NeighborCount->SetValue(i, r.NeighborCount);
     this->ValidDirections->SetValue(i, r.ValidDirections);
+    if (this->TargetCount)
+    {
+      this->TargetCount->SetValue(i, target);
+    }
   }
 
   /// Asks for the cache lines Store(i, ...) will write.
@@ -158,9 +167,13 @@ struct CurvatureArrays
            static_cast<vtkDataArray*>(this->ValidDirections),
            static_cast<vtkDataArray*>(this->SineFitRms),
            static_cast<vtkDataArray*>(this->Surroundings),
-           static_cast<vtkDataArray*>(this->PlaneDistance) })
+           static_cast<vtkDataArray*>(this->PlaneDistance),
+           static_cast<vtkDataArray*>(this->TargetCount) })
     {
-      pd->AddArray(array);
+      if (array)
+      {
+        pd->AddArray(array);
+      }
     }
   }
 };
@@ -399,10 +412,11 @@ private:
         this->Grid.GatherOffsetsWithinRadius(x, s, scratch.Neighbors);
         firstPoint = false;
       }
+      const int target = adjustment.GetTargetNeighborCount();
       const double p = adjustment.Adjust(NeighborCount(scratch));
       if (this->Cloud.IsOwn(point))
       {
-        this->EstimateGathered(point, s, p, scratch);
+        this->EstimateGathered(point, s, p, scratch, target);
       }
     }
   }
@@ -413,7 +427,7 @@ private:
     return std::max(0, static_cast<int>(scratch.Neighbors.Count) - 1);
   }
 
-  void EstimateGathered(vtkIdType point, double s, double p, Scratch& scratch)
+  void EstimateGathered(vtkIdType point, double s, double p, Scratch& scratch, int target = 0)
   {
     const double* x = &this->Cloud.Coordinates[3 * point];
     const double* n = &this->Cloud.Normals[3 * point];
@@ -422,7 +436,7 @@ private:
     const pcurv::NeighborOffsets& offsets = scratch.Neighbors;
     estimator.AddNeighborOffsets(
       offsets.Dx.data(), offsets.Dy.data(), offsets.Dz.data(), offsets.Count);
-    this->Out.Store(this->Cloud.InputIds[point], estimator.Estimate(this->Settings), s, p);
+    this->Out.Store(this->Cloud.InputIds[point], estimator.Estimate(this->Settings), s, p, target);
   }
 
   /// Progress every few thousand points, and the abort flag, from one thread.
@@ -524,6 +538,29 @@ double ToWorkingUnit(double length, double lengthScale)
   return std::min(length * lengthScale, std::numeric_limits<double>::max());
 }
 
+/// The adjustment's target counts within [1, 1e6] (NaN: 1), with a warning
+/// when one was not: a count outside it has no meaning, and beyond the int
+/// range it could not be reported in Target_Neighbor_Count.
+std::array<double, 3> UsableTargetCounts(vtkPrincipalCurvatureEstimation* self)
+{
+  std::array<double, 3> counts;
+  std::copy_n(self->GetTargetNeighborCounts(), 3, counts.begin());
+  bool clamped = false;
+  for (double& count : counts)
+  {
+    const double usable = std::isnan(count) ? 1.0 : std::min(std::max(count, 1.0), 1e6);
+    clamped = clamped || usable != count;
+    count = usable;
+  }
+  if (clamped)
+  {
+    vtkWarningWithObjectMacro(self,
+      "TargetNeighborCounts must lie within [1, 1e6]; used " << counts[0] << ", " << counts[1]
+                                                             << ", " << counts[2] << ".");
+  }
+  return counts;
+}
+
 /// The thresholds for every point from the settings and, where automatic,
 /// from the cloud (global in a parallel run); the radius the grid's cells
 /// are made for; and how far beyond its own points a process must see.
@@ -539,9 +576,10 @@ void ChooseThresholds(vtkPrincipalCurvatureEstimation* self,
   rule.K = self->GetNumberOfNeighbors();
   rule.Ratio = self->GetPlaneDistanceRatio();
   rule.Adjusted = self->GetDynamicAdjustment();
+  const std::array<double, 3> targetCounts = UsableTargetCounts(self);
   // The neighbour count the cloud's typical radius is measured for.
-  const int typicalCount = rule.Adjusted ? static_cast<int>(self->GetTargetNeighborCounts()[0])
-                                         : self->GetNumberOfNeighbors();
+  const int typicalCount =
+    rule.Adjusted ? static_cast<int>(targetCounts[0]) : self->GetNumberOfNeighbors();
   const bool needsTypicalRadius = rule.Adjusted ? self->GetAutomaticLengthUnit()
                                                 : (self->GetAutomaticThresholds() || rule.KNearest);
   const double typicalRadius =
@@ -551,7 +589,7 @@ void ChooseThresholds(vtkPrincipalCurvatureEstimation* self,
   {
     pcurv::AdjustmentSettings& adjustment = rule.Adjustment;
     adjustment.InitialSurroundingsThreshold = self->GetInitialSurroundingsThreshold();
-    std::copy_n(self->GetTargetNeighborCounts(), 3, adjustment.TargetNeighborCounts.begin());
+    adjustment.TargetNeighborCounts = targetCounts;
     std::copy_n(self->GetTargetPlaneDistances(), 3, adjustment.TargetPlaneDistances.begin());
     std::copy_n(self->GetSwitchLengths(), 3, adjustment.SwitchLengths.begin());
     adjustment.MaximumSurroundingsThreshold =
@@ -680,7 +718,7 @@ int vtkPrincipalCurvatureEstimation::RequestData(vtkInformation*,
   pcurv::FitSettings settings;
   settings.Mode = static_cast<pcurv::FitMode>(this->FitMode);
   settings.MinimumPointsPerDirection = this->MinimumPointsPerDirection;
-  CurvatureArrays arrays(numberOfPoints);
+  CurvatureArrays arrays(numberOfPoints, rule.Adjusted);
   for (vtkIdType i = 0; i < numberOfPoints; ++i)
   {
     if (!cloud.FiniteInput[i])

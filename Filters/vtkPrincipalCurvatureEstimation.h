@@ -31,6 +31,9 @@
  * - Neighbor_Count (int), Valid_Direction_Count (int, 0..16),
  *   Sine_Fit_RMS (1/length), Surroundings_Threshold and
  *   Plane_Distance_Threshold (the lengths used at the point).
+ * - Target_Neighbor_Count (int), with DynamicAdjustment only: the count the
+ *   adjustment aimed at for the point (its target combination's N_t; 0
+ *   where the point has no usable coordinate or normal).
  *
  * By default the thresholds are derived from the cloud: s is the median,
  * over a fixed sample of points, of the distance to the NumberOfNeighbors-th

@@ -786,17 +786,22 @@ void TestSettings(Checks& checks)
       o.Unestimated,
       cloud->GetNumberOfPoints());
   }
+  for (const double huge : { 0.0, 1e300 })
   {
-    const std::string row = "nonsense adjustment targets (0 and negative)";
+    const std::string row = huge > 0.0 ? "huge adjustment target counts (1e300)"
+                                       : "nonsense adjustment targets (0, negative, NaN)";
     Row(row);
-    const Outcome o = Run(cloud,
-      [](vtkPrincipalCurvatureEstimation* g)
+    Outcome o = Run(cloud,
+      [huge](vtkPrincipalCurvatureEstimation* g)
       {
         g->DynamicAdjustmentOn();
-        g->SetTargetNeighborCounts(0.0, -5.0, 0.0);
+        g->SetTargetNeighborCounts(huge, huge > 0.0 ? huge : -5.0, huge > 0.0 ? huge : NaN);
         g->SetTargetPlaneDistances(-1.0, 0.0, NaN);
       });
     checks.Equal(Label(row, "no error").c_str(), o.Errors, 0);
+    checks.True(Label(row, "a warning names the clamped counts").c_str(),
+      o.Saw("TargetNeighborCounts must lie within [1, 1e6]"));
+    --o.Warnings; // that warning; the contract counts the flagged points' one
     CheckContract(checks, row, o, normals);
   }
 }
