@@ -4,7 +4,8 @@ Run with ParaView's Python:
 
     pvpython Scripts/estimate_curvatures.py INPUT OUTPUT.vtp
         [--fit-mode Previous|New01|New02] [--neighbors N] [--k-nearest]
-        [--radius S [--plane-distance P]] [--dynamic-adjustment]
+        [--radius S [--plane-distance P]]
+        [--dynamic-adjustment [paper|ladder|noisy-ladder]]
         [--normals NAME] [--threads T] [--plugin PATH]
 
 INPUT may be:
@@ -77,8 +78,10 @@ def parse_arguments(argv):
                         help="fixed surroundings-threshold s (turns the automatic thresholds off)")
     parser.add_argument("--plane-distance", type=float, metavar="P",
                         help="fixed plane-distance-threshold p, with --radius (default: S / 10)")
-    parser.add_argument("--dynamic-adjustment", action="store_true",
-                        help="the paper's dynamic variable adjustment (replaces the neighbourhood options)")
+    parser.add_argument("--dynamic-adjustment", nargs="?", const="paper", choices=sorted(ADJUSTMENTS),
+                        help="the paper's dynamic variable adjustment (replaces the neighbourhood options): "
+                             "with the paper's constants (the default), or the banded ladder of the README "
+                             "for noise-free or noisy clouds")
     parser.add_argument("--normals", metavar="NAME",
                         help="point-data normals array (default: the normals attribute, or an array named like normals)")
     parser.add_argument("--threads", type=int, default=0, metavar="T", help="at most T threads (default 0: all cores)")
@@ -396,6 +399,17 @@ def choose_normals(source, requested):
 # ---------------------------------------------------------------------------
 # Running and reporting
 
+# The dynamic adjustment's constants (README, "Dynamic variable adjustment"):
+# the paper's, and the banded ladder measured on clouds of varying density.
+ADJUSTMENTS = {
+    "paper": {"TargetNeighborCounts": [375, 750, 1500], "TargetPlaneDistances": [0.1, 0.05, 0.025],
+              "SwitchLengths": [2, 1, 4]},
+    "ladder": {"TargetNeighborCounts": [375, 750, 1500], "TargetPlaneDistances": [0.2, 0.2, 0.2],
+               "SwitchLengths": [4.5, 3.2, 7.2]},
+    "noisy-ladder": {"TargetNeighborCounts": [1000, 2000, 4000], "TargetPlaneDistances": [0.6, 0.6, 0.6],
+                     "SwitchLengths": [4.5, 3.2, 7.2]},
+}
+
 
 def configure(curvatures, arguments):
     """Sets the filter's properties from the command line."""
@@ -403,6 +417,8 @@ def configure(curvatures, arguments):
     curvatures.NumberOfThreads = arguments.threads
     if arguments.dynamic_adjustment:
         curvatures.DynamicAdjustment = 1
+        for name, value in ADJUSTMENTS[arguments.dynamic_adjustment].items():
+            setattr(curvatures, name, value)
         return
     if arguments.neighbors:
         curvatures.NumberOfNeighbors = arguments.neighbors
@@ -417,7 +433,9 @@ def configure(curvatures, arguments):
 def neighbourhood_description(curvatures):
     """One line on the neighbourhood settings in use."""
     if curvatures.DynamicAdjustment:
-        return "dynamic adjustment"
+        return "dynamic adjustment: target counts %s, plane distances %s L, switch lengths %s L" % tuple(
+            " ".join("%g" % v for v in getattr(curvatures, name))
+            for name in ("TargetNeighborCounts", "TargetPlaneDistances", "SwitchLengths"))
     k, automatic = curvatures.NumberOfNeighbors, curvatures.AutomaticThresholds
     if curvatures.NeighborhoodMode == "K Nearest":
         neighbours = "the %d nearest points" % k
