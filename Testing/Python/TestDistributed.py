@@ -22,6 +22,8 @@ from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkIOXML import vtkXMLPolyDataReader, vtkXMLPolyDataWriter, vtkXMLPPolyDataReader
 
 ARRAYS = ("Minimum_Curvature", "Maximum_Curvature", "Neighbor_Count")
+COUNTS = ("Neighbor_Count", "Target_Neighbor_Count")  # compared absolutely
+OPTIONAL = ("Target_Neighbor_Count",)  # the dynamic adjustment's only
 VARIANTS = {"fixed": {}, "dva": {"DynamicAdjustment": 1}}
 
 
@@ -46,7 +48,8 @@ def as_arrays(data):
     point_data = data.GetPointData()
     points = vtk_to_numpy(data.GetPoints().GetData())
     order = numpy.lexsort((points[:, 2], points[:, 1], points[:, 0]))
-    result = {name: vtk_to_numpy(point_data.GetArray(name))[order] for name in ARRAYS}
+    result = {name: vtk_to_numpy(point_data.GetArray(name))[order]
+              for name in ARRAYS + OPTIONAL if point_data.GetArray(name) is not None}
     result["ids"] = points[order]
     process = point_data.GetArray("ProcessId")
     result["processes"] = len(numpy.unique(vtk_to_numpy(process))) if process else 1
@@ -74,14 +77,19 @@ def compare(reference, result, label):
     if not numpy.array_equal(reference["ids"], result["ids"]):
         return ["%s: not the same points (%d against %d)" % (label, len(result["ids"]), len(reference["ids"]))]
     scale = numpy.nanmax(numpy.abs(numpy.concatenate([reference[n] for n in ARRAYS[:2]])))
-    for name in ARRAYS:
+    for name in ARRAYS + OPTIONAL:
+        if (name in reference) != (name in result):
+            failures.append("%s: %s in one of the runs only" % (label, name))
+            continue
+        if name not in reference:
+            continue
         a, b = reference[name].astype(float), result[name].astype(float)
         if not numpy.array_equal(numpy.isnan(a), numpy.isnan(b)):
             failures.append("%s: %s: different points without an estimate" % (label, name))
             continue
         finite = ~numpy.isnan(a)
         difference = numpy.abs(a[finite] - b[finite]).max() if finite.any() else 0.0
-        relative = difference / (scale if name != "Neighbor_Count" else 1.0)
+        relative = difference / (scale if name not in COUNTS else 1.0)
         print("%-32s %-18s max difference %.3g (relative %.3g)" % (label, name, difference, relative))
         if relative > 1e-12:
             failures.append("%s: %s differs by %.3g" % (label, name, relative))
@@ -146,6 +154,8 @@ def main(plugin, cloud, action, prefix):
             label = "%d ranks, %s, %s" % (ranks, split, variant)
             if split == "four pieces" and result["processes"] != ranks:
                 failures.append("%s: points came from %d processes" % (label, result["processes"]))
+            if ("Target_Neighbor_Count" in result) != bool(properties.get("DynamicAdjustment")):
+                failures.append("%s: Target_Neighbor_Count present exactly with the adjustment" % label)
             failures += compare(as_arrays(read("%s_%s.vtp" % (prefix, variant))), result, label)
     for failure in failures:
         print("FAILED " + failure)

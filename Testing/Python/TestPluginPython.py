@@ -289,6 +289,14 @@ def check_file_cloud(path):
         if not check("Exact_Minimum_Curvature" in a and "Boundary_Distance" in a,
                      "%s: has Exact_*_Curvature and Boundary_Distance arrays" % name):
             break
+        adjusted = bool(properties)
+        check(("Target_Neighbor_Count" in a) == adjusted,
+              "%s, %s: Target_Neighbor_Count %s" % (name, label, "present" if adjusted else "absent"))
+        if adjusted and "Target_Neighbor_Count" in a:
+            ratio = a["Neighbor_Count"] / a["Target_Neighbor_Count"]
+            p5, p95 = numpy.percentile(ratio, [5, 95])
+            check(p5 >= 0.8 and p95 <= 1.25,
+                  "%s, %s: neighbour count / target within 0.8..1.25 (p5 %.2f, p95 %.2f)" % (name, label, p5, p95))
         valid = valid_mask(a, "%s, %s" % (name, label))
         inside = valid & (a["Boundary_Distance"] > 2.0 * a["Surroundings_Threshold"])
         scale = max(numpy.abs(a["Exact_Minimum_Curvature"]).max(), numpy.abs(a["Exact_Maximum_Curvature"]).max())
