@@ -6,6 +6,15 @@
 namespace pcurv
 {
 
+AdjustmentSettings BandedLadder(double firstCount, double planeDistance)
+{
+  AdjustmentSettings ladder;
+  ladder.TargetNeighborCounts = { { firstCount, 2.0 * firstCount, 4.0 * firstCount } };
+  ladder.TargetPlaneDistances = { { planeDistance, planeDistance, planeDistance } };
+  ladder.SwitchLengths = { { 4.5, 3.2, 7.2 } };
+  return ladder;
+}
+
 DynamicAdjustment::DynamicAdjustment(const AdjustmentSettings& settings)
   : Settings(settings)
 {

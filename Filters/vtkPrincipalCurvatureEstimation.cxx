@@ -754,6 +754,28 @@ int vtkPrincipalCurvatureEstimation::RequestData(vtkInformation*,
   return 1;
 }
 
+namespace
+{
+void SetAdjustmentConstants(vtkPrincipalCurvatureEstimation* self,
+  pcurv::AdjustmentSettings constants)
+{
+  self->SetTargetNeighborCounts(constants.TargetNeighborCounts.data());
+  self->SetTargetPlaneDistances(constants.TargetPlaneDistances.data());
+  self->SetSwitchLengths(constants.SwitchLengths.data());
+}
+} // namespace
+
+void vtkPrincipalCurvatureEstimation::SetAdjustmentConstantsToPaper()
+{
+  SetAdjustmentConstants(this, pcurv::AdjustmentSettings{});
+}
+
+void vtkPrincipalCurvatureEstimation::SetAdjustmentConstantsToBandedLadder(double firstCount,
+  double planeDistance)
+{
+  SetAdjustmentConstants(this, pcurv::BandedLadder(firstCount, planeDistance));
+}
+
 bool vtkPrincipalCurvatureEstimation::NormalsNotChosen()
 {
   vtkInformation* chosen = this->GetInputArrayInformation(0);

@@ -123,15 +123,11 @@ Result Run(vtkPolyData* cloud,
       filter->SetTargetPlaneDistances(0.4, 0.2, 0.1); // p = s / 10 at the targets
       break;
     case Constants::Ladder:
-    case Constants::NoisyLadder:
-    {
-      const bool noisy = constants == Constants::NoisyLadder;
-      const double n0 = noisy ? 1000.0 : 375.0, q = noisy ? 0.6 : 0.2;
-      filter->SetTargetNeighborCounts(n0, 2.0 * n0, 4.0 * n0);
-      filter->SetTargetPlaneDistances(q, q, q);
-      filter->SetSwitchLengths(4.5, 3.2, 7.2);
+      filter->SetAdjustmentConstantsToBandedLadder(375, 0.2);
       break;
-    }
+    case Constants::NoisyLadder:
+      filter->SetAdjustmentConstantsToBandedLadder(1000, 0.6);
+      break;
   }
   filter->GlobalWarningDisplayOff();
   filter->Update();

@@ -56,6 +56,31 @@ void TestStateMachine(Checks& checks)
   checks.Near("length unit scales p", millimetres.Adjust(375), 1e-4, 1e-18);
 }
 
+/// The constants' convenience setters set the three vectors.
+void TestConstantSetters(Checks& checks)
+{
+  vtkNew<vtkPrincipalCurvatureEstimation> fresh, filter;
+  filter->SetAdjustmentConstantsToBandedLadder(1000, 0.6);
+  const double* counts = filter->GetTargetNeighborCounts();
+  const double* planes = filter->GetTargetPlaneDistances();
+  const double* switches = filter->GetSwitchLengths();
+  checks.True("ladder counts 1000, 2000, 4000",
+    counts[0] == 1000.0 && counts[1] == 2000.0 && counts[2] == 4000.0);
+  checks.True("ladder plane distances 0.6 at every level",
+    planes[0] == 0.6 && planes[1] == 0.6 && planes[2] == 0.6);
+  checks.True("ladder switch lengths 4.5, 3.2, 7.2",
+    switches[0] == 4.5 && switches[1] == 3.2 && switches[2] == 7.2);
+  filter->SetAdjustmentConstantsToPaper();
+  bool same = true;
+  for (int i = 0; i < 3; ++i)
+  {
+    same = same && filter->GetTargetNeighborCounts()[i] == fresh->GetTargetNeighborCounts()[i] &&
+      filter->GetTargetPlaneDistances()[i] == fresh->GetTargetPlaneDistances()[i] &&
+      filter->GetSwitchLengths()[i] == fresh->GetSwitchLengths()[i];
+  }
+  checks.True("the paper's constants are the defaults", same);
+}
+
 /// A torus whose density falls tenfold from the +x side to the -x side.
 vtkSmartPointer<vtkPolyData> VaryingDensityTorus(double noiseInSpacings)
 {
@@ -169,19 +194,6 @@ double BestFixedRadius(Checks& checks,
   return best;
 }
 
-/// The adjustment's ladder with its switch lengths near the initial s, so
-/// that the target count doubles where the density grows and the radius
-/// stays in a band (README, "Dynamic adjustment"): counts n0, 2 n0, 4 n0,
-/// plane distance q L at every level, up below 4.5 L and 3.2 L (4.5 / sqrt 2),
-/// back above 7.2 L.
-void UseBandedLadder(vtkPrincipalCurvatureEstimation* filter, double n0, double q)
-{
-  filter->DynamicAdjustmentOn();
-  filter->SetTargetNeighborCounts(n0, 2.0 * n0, 4.0 * n0);
-  filter->SetTargetPlaneDistances(q, q, q);
-  filter->SetSwitchLengths(4.5, 3.2, 7.2);
-}
-
 /// The documented band: in every quarter of the torus, 90% of the points
 /// within -20% / +25% of the target count of their combination.
 void CheckCountBand(Checks& checks, const Result& r, const char* what)
@@ -203,7 +215,8 @@ void TestVaryingDensity(Checks& checks)
   paper->DynamicAdjustmentOn();
   const Result paperResult = Run(paper, clean, "DVA, paper's targets");
   vtkNew<vtkPrincipalCurvatureEstimation> ladder;
-  UseBandedLadder(ladder, 375, 0.2);
+  ladder->DynamicAdjustmentOn();
+  ladder->SetAdjustmentConstantsToBandedLadder(375, 0.2);
   const Result ladderResult = Run(ladder, clean, "DVA, banded ladder 375, p = 0.2 L");
   const double best =
     BestFixedRadius(checks, clean, { 0.3, 0.4, 0.5, 0.6, 0.75 }, { 0.025, 0.1, 0.2 }, "noise-free");
@@ -236,7 +249,8 @@ void TestVaryingDensity(Checks& checks)
   checks.Below(
     "DVA (p = s/10) beats the default fixed radius (noisy)", thickResult.Error, noisyDefaultError);
   vtkNew<vtkPrincipalCurvatureEstimation> noisyLadder;
-  UseBandedLadder(noisyLadder, 1000, 0.6);
+  noisyLadder->DynamicAdjustmentOn();
+  noisyLadder->SetAdjustmentConstantsToBandedLadder(1000, 0.6);
   const Result noisyLadderResult = Run(noisyLadder, noisy, "DVA, banded ladder 1000, p = 0.6 L");
   const double noisyBest =
     BestFixedRadius(checks, noisy, { 0.6, 0.7, 0.8, 0.9, 1.0, 1.2 }, { 0.1, 0.15, 0.2 }, "noisy");
@@ -335,6 +349,7 @@ int main()
 {
   Checks checks;
   TestStateMachine(checks);
+  TestConstantSetters(checks);
   TestVaryingDensity(checks);
   TestThreadsAndScale(checks);
   return checks.Summary();
