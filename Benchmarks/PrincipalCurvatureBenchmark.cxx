@@ -75,6 +75,10 @@ const char* const Usage =
   "  --no-peer                     skip CGAL's jet fitting\n"
   "  --no-phases                   skip the phase, fits-alone and peer timings\n"
   "  --no-memory                   skip the peak-memory child processes\n"
+  "  --dynamic-adjustment C        whole-filter runs with the dynamic adjustment and the\n"
+  "                                constants C: paper, ladder (375, 0.2) or noisy-ladder\n"
+  "                                (1000, 0.6); implies --no-phases (they model a fixed\n"
+  "                                radius)\n"
   "  --csv FILE                    also write every measurement as CSV\n";
 
 double Seconds(Clock::time_point start, Clock::time_point end)
@@ -333,7 +337,26 @@ struct Options
   bool Memory = true;
   bool MemoryProbe = false; // internal: this process is the memory child
   std::string Csv;
+  std::string Adjustment; // empty: fixed thresholds (the filter's default)
 };
+
+/// The filter as the options ask: the dynamic adjustment, if chosen.
+void ConfigureAdjustment(vtkPrincipalCurvatureEstimation* filter, const Options& options)
+{
+  if (options.Adjustment.empty())
+  {
+    return;
+  }
+  filter->DynamicAdjustmentOn();
+  if (options.Adjustment == "ladder")
+  {
+    filter->SetAdjustmentConstantsToBandedLadder(375, 0.2);
+  }
+  else if (options.Adjustment == "noisy-ladder")
+  {
+    filter->SetAdjustmentConstantsToBandedLadder(1000, 0.6);
+  }
+}
 
 [[noreturn]] void Fail(const std::string& message)
 {
@@ -431,6 +454,15 @@ Options Parse(int argc, char* argv[])
       o.MemoryProbe = true;
     else if (a == "--csv")
       o.Csv = next();
+    else if (a == "--dynamic-adjustment")
+    {
+      o.Adjustment = next();
+      if (o.Adjustment != "paper" && o.Adjustment != "ladder" && o.Adjustment != "noisy-ladder")
+      {
+        Fail("unknown adjustment constants '" + o.Adjustment + "'");
+      }
+      o.Phases = false;
+    }
     else if (a == "--help" || a == "-h")
     {
       std::printf("%s", Usage);
@@ -507,6 +539,7 @@ int RunMemoryProbe(const Options& options)
   filter->SetInputData(cloud);
   filter->SetFitMode(options.Modes[0]);
   filter->SetNumberOfThreads(static_cast<int>(options.Threads[0]));
+  ConfigureAdjustment(filter, options);
   malloc_trim(0);
   bool reset = false;
   {
@@ -581,7 +614,9 @@ MemoryRecord ProbeMemory(const Options& options, long n, int mode, long threads)
   }
   const std::string command = "'" + executable + "' --memory-probe --surface " + options.Surface +
     " --sizes " + std::to_string(n) + " --modes " + std::to_string(mode) + " --threads " +
-    std::to_string(threads) + " 2>/dev/null";
+    std::to_string(threads) +
+    (options.Adjustment.empty() ? "" : " --dynamic-adjustment " + options.Adjustment) +
+    " 2>/dev/null";
   std::FILE* pipe = popen(command.c_str(), "r");
   if (!pipe)
   {
@@ -643,6 +678,7 @@ struct FilterReference
 double RunFilter(vtkPolyData* cloud,
   int mode,
   long threads,
+  const Options& options,
   FilterRecord& record,
   FilterReference* reference)
 {
@@ -650,6 +686,7 @@ double RunFilter(vtkPolyData* cloud,
   filter->SetInputData(cloud);
   filter->SetFitMode(mode);
   filter->SetNumberOfThreads(static_cast<int>(threads));
+  ConfigureAdjustment(filter, options);
   const double cpu = ProcessCpuSeconds();
   const auto start = Clock::now();
   filter->Update();
@@ -1186,9 +1223,12 @@ void PrintSummary(const Options& options, const Results& results, CsvFile& csv)
 {
   const long largest = options.Sizes.back();
   const std::string description = SurfaceDescription(options.Surface);
-  std::printf("\n## Results: %s, exact normals, default settings (automatic radius for 375 "
-              "neighbours, p = 0.1 s), medians of %d runs\n",
+  const std::string settings = options.Adjustment.empty()
+    ? std::string("default settings (automatic radius for 375 neighbours, p = 0.1 s)")
+    : "the dynamic adjustment, constants: " + options.Adjustment;
+  std::printf("\n## Results: %s, exact normals, %s, medians of %d runs\n",
     description.c_str(),
+    settings.c_str(),
     options.Runs);
 
   // Whole filter.
@@ -1781,7 +1821,8 @@ int main(int argc, char* argv[])
         {
           FilterRecord& record = results.Filter[FilterKey{ n, mode, threads }];
           const bool first = run == 0 && threads == options.Threads.front();
-          const double t = RunFilter(cloud, mode, threads, record, first ? &reference : nullptr);
+          const double t =
+            RunFilter(cloud, mode, threads, options, record, first ? &reference : nullptr);
           record.Times.push_back(t);
           std::fprintf(stderr,
             "  run %d/%d %-8s %ld thread(s): %.3f s\n",
