@@ -576,7 +576,8 @@ void ChooseThresholds(vtkPrincipalCurvatureEstimation* self,
   rule.K = self->GetNumberOfNeighbors();
   rule.Ratio = self->GetPlaneDistanceRatio();
   rule.Adjusted = self->GetDynamicAdjustment();
-  const std::array<double, 3> targetCounts = UsableTargetCounts(self);
+  const std::array<double, 3> targetCounts =
+    rule.Adjusted ? UsableTargetCounts(self) : std::array<double, 3>{};
   // The neighbour count the cloud's typical radius is measured for.
   const int typicalCount =
     rule.Adjusted ? static_cast<int>(targetCounts[0]) : self->GetNumberOfNeighbors();

@@ -804,6 +804,16 @@ void TestSettings(Checks& checks)
     --o.Warnings; // that warning; the contract counts the flagged points' one
     CheckContract(checks, row, o, normals);
   }
+  {
+    const std::string row = "nonsense adjustment targets, adjustment off";
+    Row(row);
+    const Outcome o = Run(cloud,
+      [](vtkPrincipalCurvatureEstimation* g) { g->SetTargetNeighborCounts(NaN, -5.0, 1e300); });
+    checks.Equal(Label(row, "no error").c_str(), o.Errors, 0);
+    checks.True(
+      Label(row, "unused settings: no warning about them").c_str(), !o.Saw("TargetNeighborCounts"));
+    CheckContract(checks, row, o, normals);
+  }
 }
 
 void TestTypesAndInputs(Checks& checks)
