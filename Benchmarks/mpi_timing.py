@@ -1,4 +1,4 @@
-"""Filter update time under MPI (pvbatch), for the README's table.
+"""Filter update time under MPI (pvbatch), for the table in docs/parallel.md.
 
     build/bin/GenerateAnalyticCloud torus 1000000 /tmp/torus1M.vtp
     mpiexec -n RANKS [--bind-to none] pvbatch --mpi Benchmarks/mpi_timing.py \

@@ -226,18 +226,29 @@ public:
   ///@{
   /**
    * Set TargetNeighborCounts, TargetPlaneDistances and SwitchLengths at
-   * once: to the paper's constants, or to the "banded ladder" (README,
-   * "Dynamic variable adjustment"): counts firstCount, 2 firstCount,
+   * once: to the paper's constants, or to the "banded ladder"
+   * (docs/dynamic-adjustment.md): counts firstCount, 2 firstCount,
    * 4 firstCount, plane distance planeDistance L at every level, switch
-   * lengths 4.5, 3.2, 7.2 L. Measured on clouds whose density varies 5-20x:
-   * (375, 0.2) noise-free, (1000, 0.6) with noise of half a point spacing,
-   * both within 11 % of the best fixed radius of a sweep, where the paper's
-   * constants reach 1.3x. On a uniform cloud the ladder uses 2 firstCount
-   * neighbours everywhere.
+   * lengths next to the initial s (pcurv::BandedLadder), so that the target
+   * count doubles where the density grows and the radius stays in a band.
+   * The documentation gives the measured settings for clean and noisy
+   * clouds.
    */
   void SetAdjustmentConstantsToPaper();
   void SetAdjustmentConstantsToBandedLadder(double firstCount, double planeDistance);
   ///@}
+
+  /// The named sets of adjustment constants (pcurv::AdjustmentPreset).
+  enum AdjustmentPresets
+  {
+    PAPER_CONSTANTS = 0, ///< the paper's
+    LADDER = 1,          ///< SetAdjustmentConstantsToBandedLadder(375, 0.2): clean clouds
+    NOISY_LADDER = 2     ///< SetAdjustmentConstantsToBandedLadder(1000, 0.6): noise of h / 2
+  };
+
+  /// Sets TargetNeighborCounts, TargetPlaneDistances and SwitchLengths to
+  /// one of AdjustmentPresets (clamped to the range).
+  void SetAdjustmentConstantsToPreset(int preset);
 
   ///@{
   /**
@@ -288,24 +299,26 @@ protected:
   bool CheckNormals(vtkDataArray* normals, vtkIdType numberOfPoints);
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
-  int FitMode = NEW01;
-  int NeighborhoodMode = RADIUS;
-  bool AutomaticThresholds = true;
-  int NumberOfNeighbors = 375;
-  double SurroundingsThreshold = 1.0;
-  double PlaneDistanceThreshold = 0.1;
-  double PlaneDistanceRatio = 0.1;
-  int MinimumPointsPerDirection = 3;
+  // Defaults: pcurv::EstimationSettings (Filters/Core/CloudEstimation.h),
+  // copied by the constructor.
+  int FitMode;
+  int NeighborhoodMode;
+  bool AutomaticThresholds;
+  int NumberOfNeighbors;
+  double SurroundingsThreshold;
+  double PlaneDistanceThreshold;
+  double PlaneDistanceRatio;
+  int MinimumPointsPerDirection;
   int NumberOfThreads = 0;
-  bool DynamicAdjustment = false;
-  bool AutomaticLengthUnit = true;
-  double LengthUnit = 1.0;
-  double InitialSurroundingsThreshold = 4.0;
-  double TargetNeighborCounts[3] = { 375.0, 750.0, 1500.0 };
-  double TargetPlaneDistances[3] = { 0.1, 0.05, 0.025 };
-  double SwitchLengths[3] = { 2.0, 1.0, 4.0 };
-  double MaximumSurroundingsFactor = 4.0;
-  double AdjustmentBlockLength = 8.0;
+  bool DynamicAdjustment;
+  bool AutomaticLengthUnit;
+  double LengthUnit;
+  double InitialSurroundingsThreshold;
+  double TargetNeighborCounts[3];
+  double TargetPlaneDistances[3];
+  double SwitchLengths[3];
+  double MaximumSurroundingsFactor;
+  double AdjustmentBlockLength;
 
   double UsedLengthUnit = 0.0;
   double UsedSurroundingsThreshold = 0.0;

@@ -80,7 +80,7 @@ def parse_arguments(argv):
                         help="fixed plane-distance-threshold p, with --radius (default: S / 10)")
     parser.add_argument("--dynamic-adjustment", nargs="?", const="paper", choices=sorted(ADJUSTMENTS),
                         help="the paper's dynamic variable adjustment (replaces the neighbourhood options): "
-                             "with the paper's constants (the default), or the banded ladder of the README "
+                             "with the paper's constants (the default), or the banded ladder of docs/dynamic-adjustment.md "
                              "for noise-free or noisy clouds")
     parser.add_argument("--normals", metavar="NAME",
                         help="point-data normals array (default: the normals attribute, or an array named like normals)")
@@ -399,7 +399,8 @@ def choose_normals(source, requested):
 # ---------------------------------------------------------------------------
 # Running and reporting
 
-# The dynamic adjustment's constants (README, "Dynamic variable adjustment"):
+# The dynamic adjustment's constants (docs/dynamic-adjustment.md), as the
+# filter's presets give them (Testing/Python/TestSettingsAgree.py checks):
 # the paper's, and the banded ladder measured on clouds of varying density.
 ADJUSTMENTS = {
     "paper": {"TargetNeighborCounts": [375, 750, 1500], "TargetPlaneDistances": [0.1, 0.05, 0.025],

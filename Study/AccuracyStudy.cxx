@@ -93,7 +93,7 @@ struct Result
 };
 
 /// The dynamic adjustment's constants: the paper's, its counts with planes
-/// four times thicker, and the README's banded ladders (noise-free, noisy).
+/// four times thicker, and the banded ladders of docs/dynamic-adjustment.md (noise-free, noisy).
 enum class Constants
 {
   Paper,
@@ -123,10 +123,10 @@ Result Run(vtkPolyData* cloud,
       filter->SetTargetPlaneDistances(0.4, 0.2, 0.1); // p = s / 10 at the targets
       break;
     case Constants::Ladder:
-      filter->SetAdjustmentConstantsToBandedLadder(375, 0.2);
+      filter->SetAdjustmentConstantsToPreset(vtkPrincipalCurvatureEstimation::LADDER);
       break;
     case Constants::NoisyLadder:
-      filter->SetAdjustmentConstantsToBandedLadder(1000, 0.6);
+      filter->SetAdjustmentConstantsToPreset(vtkPrincipalCurvatureEstimation::NOISY_LADDER);
       break;
   }
   filter->GlobalWarningDisplayOff();
@@ -141,8 +141,9 @@ const double Ratios[] = { 0.025, 0.05, 0.1, 0.2 };
 /// Table 2: the dynamic adjustment on every cloud.
 void TableTwo(const std::vector<Cloud>& clouds)
 {
-  std::printf("\n## Table 2: dynamic variable adjustment (scale-free; the paper's constants; "
-              "its counts with thick planes p = s/10; the README's banded ladders)\n\n");
+  std::printf(
+    "\n## Table 2: dynamic variable adjustment (scale-free; the paper's constants; "
+    "its counts with thick planes p = s/10; the banded ladders of docs/dynamic-adjustment.md)\n\n");
   std::printf("| cloud | Previous | New01 | New02 | New02, p = s/10 | New01, ladder | New01, noisy "
               "ladder | unestimated (New02, paper) |\n"
               "|---|---|---|---|---|---|---|---|\n");

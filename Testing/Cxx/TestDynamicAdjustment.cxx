@@ -70,6 +70,21 @@ void TestConstantSetters(Checks& checks)
     planes[0] == 0.6 && planes[1] == 0.6 && planes[2] == 0.6);
   checks.True("ladder switch lengths 4.5, 3.2, 7.2",
     switches[0] == 4.5 && switches[1] == 3.2 && switches[2] == 7.2);
+  vtkNew<vtkPrincipalCurvatureEstimation> preset;
+  preset->SetAdjustmentConstantsToPreset(vtkPrincipalCurvatureEstimation::NOISY_LADDER);
+  bool samePreset = true;
+  for (int i = 0; i < 3; ++i)
+  {
+    samePreset = samePreset && preset->GetTargetNeighborCounts()[i] == counts[i] &&
+      preset->GetTargetPlaneDistances()[i] == planes[i] &&
+      preset->GetSwitchLengths()[i] == switches[i];
+  }
+  checks.True("the noisy-ladder preset is BandedLadder(1000, 0.6)", samePreset);
+  preset->SetAdjustmentConstantsToPreset(vtkPrincipalCurvatureEstimation::LADDER);
+  checks.True("the ladder preset is BandedLadder(375, 0.2)",
+    preset->GetTargetNeighborCounts()[0] == 375.0 &&
+      preset->GetTargetNeighborCounts()[2] == 1500.0 &&
+      preset->GetTargetPlaneDistances()[1] == 0.2 && preset->GetSwitchLengths()[0] == 4.5);
   filter->SetAdjustmentConstantsToPaper();
   bool same = true;
   for (int i = 0; i < 3; ++i)
@@ -217,7 +232,7 @@ void TestVaryingDensity(Checks& checks)
   const Result paperResult = Run(paper, clean, "DVA, paper's targets");
   vtkNew<vtkPrincipalCurvatureEstimation> ladder;
   ladder->DynamicAdjustmentOn();
-  ladder->SetAdjustmentConstantsToBandedLadder(375, 0.2);
+  ladder->SetAdjustmentConstantsToPreset(vtkPrincipalCurvatureEstimation::LADDER);
   const Result ladderResult = Run(ladder, clean, "DVA, banded ladder 375, p = 0.2 L");
   const double best =
     BestFixedRadius(checks, clean, { 0.3, 0.4, 0.5, 0.6, 0.75 }, { 0.025, 0.1, 0.2 }, "noise-free");
@@ -254,7 +269,7 @@ void TestVaryingDensity(Checks& checks)
     "DVA (p = s/10) beats the default fixed radius (noisy)", thickResult.Error, noisyDefaultError);
   vtkNew<vtkPrincipalCurvatureEstimation> noisyLadder;
   noisyLadder->DynamicAdjustmentOn();
-  noisyLadder->SetAdjustmentConstantsToBandedLadder(1000, 0.6);
+  noisyLadder->SetAdjustmentConstantsToPreset(vtkPrincipalCurvatureEstimation::NOISY_LADDER);
   const Result noisyLadderResult = Run(noisyLadder, noisy, "DVA, banded ladder 1000, p = 0.6 L");
   const double noisyBest =
     BestFixedRadius(checks, noisy, { 0.6, 0.7, 0.8, 0.9, 1.0, 1.2 }, { 0.1, 0.15, 0.2 }, "noisy");
@@ -262,7 +277,7 @@ void TestVaryingDensity(Checks& checks)
     noisyLadderResult.Error,
     noisyDefaultError);
   // Measured: 1.05x (1.04-1.08x over seeds, densities varying 5x to 20x,
-  // and noise of 1 spacing; README).
+  // and noise of 1 spacing; docs/dynamic-adjustment.md).
   checks.Below("DVA (ladder) within 10% of the best fixed radius (noisy)",
     noisyLadderResult.Error,
     1.1 * noisyBest);

@@ -22,6 +22,13 @@
 // Grid: radius queries and k-th neighbour distances equal a brute-force
 // scan, for clustered and for widely spread points.
 // Dynamic adjustment: s and p stay finite, positive and bounded.
+// Cloud estimation (first byte 253, which the older checks' inputs never
+// start with): small clouds of any coordinates and normals (NaN and Inf
+// included) with any settings, through the core's cloud-level entry point:
+// no crash, no undefined behaviour; a valid point has finite curvatures
+// with max >= min, an invalid one NaN curvatures; the summary's count of
+// unestimated points matches the flags.
+#include "CloudEstimation.h"
 #include "DynamicAdjustment.h"
 #include "PointGrid.h"
 #include "PrincipalCurvatureCore.h"
@@ -569,12 +576,122 @@ void CheckAdjustment(Bytes& in)
     }
   }
 }
+
+/// A coordinate for the cloud check: small integers (coincidences), any
+/// finite size, or anything.
+double CloudCoordinate(Bytes& in, std::uint8_t kind)
+{
+  switch (kind % 4)
+  {
+    case 0:
+    case 1:
+      return in.Small() / 8.0;
+    case 2:
+      return in.Finite();
+    default:
+      return in.Raw();
+  }
+}
+
+void CheckCloudEstimation(Bytes& in)
+{
+  pcurv::EstimationSettings settings;
+  const std::uint8_t flags = in.Byte();
+  settings.Mode = static_cast<pcurv::FitMode>(flags % 3);
+  settings.Neighborhood =
+    (flags & 4) ? pcurv::NeighborhoodMode::KNearest : pcurv::NeighborhoodMode::Radius;
+  settings.AutomaticThresholds = !(flags & 8);
+  settings.DynamicAdjustment = flags & 16;
+  settings.AutomaticLengthUnit = !(flags & 32);
+  settings.NumberOfNeighbors = 3 + in.Byte() % 40;
+  settings.MinimumPointsPerDirection = 3 + in.Byte() % 4;
+  if (flags & 64)
+  {
+    settings.SurroundingsThreshold = std::fabs(in.Raw());
+    settings.PlaneDistanceThreshold = std::fabs(in.Raw());
+    settings.LengthUnit = std::max(std::fabs(in.Raw()), 1e-300);
+    for (double& count : settings.Adjustment.TargetNeighborCounts)
+    {
+      count = in.Raw();
+    }
+  }
+  else
+  {
+    settings.SurroundingsThreshold = 1.0 + in.Byte() / 16.0;
+    settings.LengthUnit = 1.0 / (1 + in.Byte());
+  }
+  const std::uint8_t kind = in.Byte();
+  const int count = in.Byte() % 96;
+  pcurv::CloudPoints cloud;
+  cloud.Reset(count);
+  for (int i = 0; i < count; ++i)
+  {
+    double x[3], n[3];
+    for (double& c : x)
+    {
+      c = CloudCoordinate(in, kind);
+    }
+    for (double& c : n)
+    {
+      c = (kind & 4) ? in.Raw() : in.Small();
+    }
+    cloud.AddInputPoint(i, x, n);
+  }
+  std::vector<double> values(9 * count + 6 * count);
+  std::vector<unsigned char> valid(count);
+  std::vector<int> integers(3 * count);
+  pcurv::CurvatureBuffers out;
+  double* next = values.data();
+  for (double** array : { &out.Minimum,
+         &out.Maximum,
+         &out.Mean,
+         &out.Gauss,
+         &out.SineFitRms,
+         &out.Surroundings,
+         &out.PlaneDistance })
+  {
+    *array = next;
+    next += count;
+  }
+  out.MinimumDirection = next;
+  out.MaximumDirection = next + 3 * count;
+  out.Valid = valid.data();
+  out.NeighborCount = integers.data();
+  out.ValidDirections = integers.data() + count;
+  out.TargetCount = settings.DynamicAdjustment ? integers.data() + 2 * count : nullptr;
+  pcurv::SerialRunner runner;
+  const pcurv::EstimationSummary summary =
+    pcurv::EstimateCloud(std::move(cloud), settings, pcurv::Collectives{}, runner, nullptr, out);
+  std::int64_t unestimated = 0;
+  for (int i = 0; i < count; ++i)
+  {
+    if (valid[i])
+    {
+      Require(std::isfinite(out.Minimum[i]) && std::isfinite(out.Maximum[i]) &&
+          out.Maximum[i] >= out.Minimum[i],
+        "cloud: a valid point has finite curvatures, max >= min");
+    }
+    else
+    {
+      Require(std::isnan(out.Minimum[i]) && std::isnan(out.Mean[i]),
+        "cloud: an unestimated point has NaN curvatures");
+      ++unestimated;
+    }
+  }
+  Require(summary.NumberOfUnestimatedPoints == unestimated, "cloud: unestimated count");
+}
 } // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
 {
   Bytes in(data, size);
-  switch (in.Byte() % 6)
+  const std::uint8_t check = in.Byte();
+  if (check == 253)
+  {
+    CheckCloudEstimation(in);
+    return 0;
+  }
+  switch (check % 6)
   {
     case 0:
       CheckEstimate(in);

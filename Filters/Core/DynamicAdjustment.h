@@ -41,15 +41,28 @@ struct AdjustmentSettings
   double MaximumSurroundingsThreshold = 16.0;
 };
 
-/// The "banded ladder" (README, "Dynamic variable adjustment"): the paper's
-/// mechanism with its switch lengths next to the initial s (up below 4.5 L
-/// and 3.2 L = 4.5 L / sqrt 2, back above 7.2 L), so that the target count
-/// doubles where the density grows and the radius stays in a band; counts
-/// firstCount, 2 firstCount, 4 firstCount, and the same plane distance
-/// (units of L) at every level, since s stays about the same. Measured on
-/// clouds whose density varies 5-20x: firstCount 375, planeDistance 0.2
-/// noise-free; 1000 and 0.6 with noise of half a point spacing.
+/// The "banded ladder" (docs/dynamic-adjustment.md): the paper's mechanism
+/// with its switch lengths next to the initial s (up below 4.5 L and
+/// 3.2 L = 4.5 L / sqrt 2, back above 7.2 L: BandedLadderSwitchLengths), so
+/// that the target count doubles where the density grows and the radius
+/// stays in a band; counts firstCount, 2 firstCount, 4 firstCount, and the
+/// same plane distance (units of L) at every level, since s stays about the
+/// same.
+constexpr std::array<double, 3> BandedLadderSwitchLengths{ { 4.5, 3.2, 7.2 } };
 AdjustmentSettings BandedLadder(double firstCount, double planeDistance);
+
+/// The named sets of constants, defined here once for the filter, the study
+/// and the benchmark (the command-line tool's table is tested against
+/// them): the paper's, and the banded ladder as measured for clean clouds
+/// and for clouds with noise of about half a point spacing.
+enum class AdjustmentPreset : int
+{
+  Paper = 0,      ///< 375, 750, 1500 neighbours; p 0.1, 0.05, 0.025 L; switches 2, 1, 4 L
+  Ladder = 1,     ///< BandedLadder(375, 0.2)
+  NoisyLadder = 2 ///< BandedLadder(1000, 0.6)
+};
+
+AdjustmentSettings AdjustmentConstants(AdjustmentPreset preset);
 
 class DynamicAdjustment
 {

@@ -124,8 +124,8 @@ bool IsSmallestEigenpair(const Eigen::Matrix3d& B, const Eigen::Vector3d& x)
 /// shrinks the other components by |lambda_min - shift| / |lambda - shift|,
 /// so one or two suffice. False when the iterates do not settle (two close
 /// small eigenvalues, a shifted matrix of rank 1 or less): the caller then
-/// asks Eigen's iterative eigensolver. About 6x faster than that solver
-/// alone, which made Previous's pipeline 1.6x New01's.
+/// asks Eigen's iterative eigensolver, which is several times slower
+/// (Benchmarks/BENCHMARK.md).
 bool SmallestEigenvectorByInverseIteration(const Eigen::Matrix3d& B, Eigen::Vector3d& S)
 {
   const double determinant = B(1, 1) * B(2, 2) - B(1, 2) * B(1, 2);

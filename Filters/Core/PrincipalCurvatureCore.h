@@ -5,7 +5,7 @@
  * Hildenbrand 2011). No VTK types: this header can be used, tested and
  * profiled on its own.
  *
- * Conventions (see ALGORITHM.md in the repository documentation):
+ * Conventions (docs/method.md describes the method as implemented):
  * - Circle fits work in the paper's sign: a circle whose centre lies on the
  *   normal's side has positive curvature.
  * - Results leaving the core (PointCurvature) are in the output sign:

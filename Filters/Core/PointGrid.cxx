@@ -43,7 +43,9 @@ GridLattice GridLattice::Make(const double lower[3],
     {
       break;
     }
-    size = std::min(size * std::max(1.01, std::cbrt(cells / maximumCells)), largest);
+    const double grown = std::min(size * std::max(1.01, std::cbrt(cells / maximumCells)), largest);
+    // A subnormal size times 1.01 can round back to itself: double it then.
+    size = grown > size ? grown : std::min(2.0 * size, largest);
   }
   lattice.CellSize = size;
   for (int k = 0; k < 3; ++k)

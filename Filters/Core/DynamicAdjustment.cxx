@@ -11,8 +11,22 @@ AdjustmentSettings BandedLadder(double firstCount, double planeDistance)
   AdjustmentSettings ladder;
   ladder.TargetNeighborCounts = { { firstCount, 2.0 * firstCount, 4.0 * firstCount } };
   ladder.TargetPlaneDistances = { { planeDistance, planeDistance, planeDistance } };
-  ladder.SwitchLengths = { { 4.5, 3.2, 7.2 } };
+  ladder.SwitchLengths = BandedLadderSwitchLengths;
   return ladder;
+}
+
+AdjustmentSettings AdjustmentConstants(AdjustmentPreset preset)
+{
+  switch (preset)
+  {
+    case AdjustmentPreset::Ladder:
+      return BandedLadder(375.0, 0.2);
+    case AdjustmentPreset::NoisyLadder:
+      return BandedLadder(1000.0, 0.6);
+    case AdjustmentPreset::Paper:
+      break;
+  }
+  return AdjustmentSettings{};
 }
 
 DynamicAdjustment::DynamicAdjustment(const AdjustmentSettings& settings)

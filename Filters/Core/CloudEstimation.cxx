@@ -1,0 +1,588 @@
+#include "CloudEstimation.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <limits>
+#include <tuple>
+
+namespace pcurv
+{
+namespace
+{
+constexpr double NaN = std::numeric_limits<double>::quiet_NaN();
+
+/// The filter's working length unit (lengths multiplied by Scale, a power
+/// of two) and the way back to the input's: the only place lengths and
+/// curvatures change unit.
+struct WorkingUnit
+{
+  double Scale = 1.0;
+
+  /// A length the user gave, in the working unit (finite: a huge radius
+  /// stays the largest double).
+  double FromInput(double length) const
+  {
+    return std::min(length * this->Scale, std::numeric_limits<double>::max());
+  }
+  double ToInputLength(double length) const { return length / this->Scale; }
+};
+
+/// How neighbourhoods and thresholds are chosen for every point.
+struct NeighborhoodRule
+{
+  bool KNearest = false;
+  int K = 0;
+  double Radius = 0.0;             // RADIUS mode
+  bool FixedPlaneDistance = false; // p = PlaneDistance, else Ratio times the radius
+  double PlaneDistance = 0.0;
+  double Ratio = 0.0;
+  bool Adjusted = false; // dynamic variable adjustment instead of the above
+  AdjustmentSettings Adjustment;
+  double BlockLength = 0.0; // side of an adjustment block (a length)
+  /// The radius the grid's cells are made for, and how far beyond its own
+  /// points a process must see.
+  double CellRadius = 0.0;
+  double Reach = 0.0;
+};
+
+/// The adjustment's target counts within [1, 1e6] (NaN: 1): a count outside
+/// it has no meaning, and beyond the int range it could not be reported in
+/// Target_Neighbor_Count.
+std::array<double, 3> UsableTargetCounts(const std::array<double, 3>& requested, bool& clamped)
+{
+  std::array<double, 3> counts = requested;
+  clamped = false;
+  for (double& count : counts)
+  {
+    const double usable = std::isnan(count) ? 1.0 : std::min(std::max(count, 1.0), 1e6);
+    clamped = clamped || usable != count;
+    count = usable;
+  }
+  return counts;
+}
+
+/// The rule of the dynamic adjustment: constants in the working unit, and
+/// the blocks' size and reach.
+void ChooseAdjustment(const EstimationSettings& settings,
+  const WorkingUnit& unit,
+  const std::array<double, 3>& targetCounts,
+  double typicalRadius,
+  NeighborhoodRule& rule)
+{
+  AdjustmentSettings& adjustment = rule.Adjustment;
+  adjustment = settings.Adjustment;
+  adjustment.TargetNeighborCounts = targetCounts;
+  const double initial = settings.Adjustment.InitialSurroundingsThreshold;
+  adjustment.MaximumSurroundingsThreshold = settings.MaximumSurroundingsFactor * initial;
+  // Scale free: the initial s holds about the first target count.
+  adjustment.LengthUnit =
+    settings.AutomaticLengthUnit ? typicalRadius / initial : unit.FromInput(settings.LengthUnit);
+  rule.CellRadius = adjustment.LengthUnit * initial;
+  rule.BlockLength = settings.AdjustmentBlockLength * adjustment.LengthUnit;
+  // A block's points, and every query they make.
+  rule.Reach = std::sqrt(3.0) * rule.BlockLength +
+    adjustment.MaximumSurroundingsThreshold * adjustment.LengthUnit;
+}
+
+/// The thresholds for every point from the settings and, where automatic,
+/// from the cloud (global in a parallel run).
+NeighborhoodRule ChooseThresholds(const EstimationSettings& settings,
+  const CloudPoints& cloud,
+  const Collectives& processes,
+  const CloudBoxes& boxes,
+  const WorkingUnit& unit,
+  EstimationSummary& summary)
+{
+  NeighborhoodRule rule;
+  rule.KNearest = settings.Neighborhood == NeighborhoodMode::KNearest;
+  rule.K = settings.NumberOfNeighbors;
+  rule.Ratio = settings.PlaneDistanceRatio;
+  rule.Adjusted = settings.DynamicAdjustment;
+  if (rule.Adjusted)
+  {
+    summary.TargetNeighborCounts =
+      UsableTargetCounts(settings.Adjustment.TargetNeighborCounts, summary.TargetCountsClamped);
+  }
+  // The neighbour count the cloud's typical radius is measured for.
+  const int typicalCount =
+    rule.Adjusted ? static_cast<int>(summary.TargetNeighborCounts[0]) : settings.NumberOfNeighbors;
+  const bool needsTypicalRadius =
+    rule.Adjusted ? settings.AutomaticLengthUnit : (settings.AutomaticThresholds || rule.KNearest);
+  const double typicalRadius =
+    needsTypicalRadius ? TypicalRadius(cloud, processes, boxes, typicalCount) : 0.0;
+  rule.CellRadius = typicalRadius;
+  if (rule.Adjusted)
+  {
+    ChooseAdjustment(settings, unit, summary.TargetNeighborCounts, typicalRadius, rule);
+    return rule;
+  }
+  if (!settings.AutomaticThresholds)
+  {
+    rule.FixedPlaneDistance = true;
+    rule.PlaneDistance = unit.FromInput(settings.PlaneDistanceThreshold);
+    rule.Radius = unit.FromInput(settings.SurroundingsThreshold);
+  }
+  else if (!rule.KNearest)
+  {
+    rule.Radius = typicalRadius;
+    rule.PlaneDistance = settings.PlaneDistanceRatio * rule.Radius;
+  }
+  if (!rule.KNearest)
+  {
+    rule.CellRadius = rule.Radius;
+    rule.Reach = rule.Radius;
+  }
+  return rule;
+}
+
+/// The block of a coordinate given in block lengths: its floor, within the
+/// int64 range; 0 when it is NaN (a block length of 0, as when the cloud has
+/// no typical radius: every point then shares one block).
+std::int64_t BlockIndex(double blocks)
+{
+  constexpr double Limit = 9.0e18; // below 2^63
+  if (!(blocks == blocks))
+  {
+    return 0;
+  }
+  return static_cast<std::int64_t>(std::floor(std::min(std::max(blocks, -Limit), Limit)));
+}
+
+/// The order in which points are processed: the grid's order (cell by cell,
+/// by coordinates within a cell), which is global. With fixed thresholds a
+/// work item is one own point; with the dynamic adjustment it is one block:
+/// the points (own and halo) in one cell of a lattice of side BlockLength,
+/// processed in that order, each block started afresh. Blocks are defined
+/// in space, not by counting points, so neither the threads nor the split
+/// among processes change them.
+struct ProcessingOrder
+{
+  std::vector<std::int64_t> Points;      // cloud point indices
+  std::vector<std::int64_t> BlockStarts; // DVA: block b is Points[BlockStarts[b], BlockStarts[b+1])
+
+  std::int64_t GetNumberOfItems() const
+  {
+    return this->BlockStarts.empty() ? static_cast<std::int64_t>(this->Points.size())
+                                     : static_cast<std::int64_t>(this->BlockStarts.size()) - 1;
+  }
+
+  void MakePointwise(const PointGrid& grid, const CloudPoints& cloud)
+  {
+    for (std::int64_t j = 0; j < grid.GetNumberOfPoints(); ++j)
+    {
+      const std::int64_t point = grid.GetSortedId(j);
+      if (cloud.IsOwn(point))
+      {
+        this->Points.push_back(point);
+      }
+    }
+  }
+
+  void MakeBlocks(const PointGrid& grid,
+    const CloudPoints& cloud,
+    const GridLattice& lattice,
+    double blockLength)
+  {
+    using Key = std::tuple<std::int64_t, std::int64_t, std::int64_t>;
+    std::vector<std::pair<Key, std::int64_t>> keyed; // (block, grid position)
+    keyed.reserve(grid.GetNumberOfPoints());
+    for (std::int64_t j = 0; j < grid.GetNumberOfPoints(); ++j)
+    {
+      const double* x = &cloud.Coordinates[3 * grid.GetSortedId(j)];
+      std::array<std::int64_t, 3> b;
+      for (int k = 0; k < 3; ++k)
+      {
+        b[k] = BlockIndex((x[k] - lattice.Origin[k]) / blockLength);
+      }
+      keyed.emplace_back(Key{ b[2], b[1], b[0] }, j);
+    }
+    std::sort(keyed.begin(), keyed.end());
+    for (std::size_t first = 0; first < keyed.size();)
+    {
+      std::size_t last = first;
+      bool hasOwn = false;
+      while (last < keyed.size() && keyed[last].first == keyed[first].first)
+      {
+        hasOwn = hasOwn || cloud.IsOwn(grid.GetSortedId(keyed[last].second));
+        ++last;
+      }
+      if (hasOwn) // blocks of halo points only are another process's work
+      {
+        this->BlockStarts.push_back(static_cast<std::int64_t>(this->Points.size()));
+        for (std::size_t k = first; k < last; ++k)
+        {
+          this->Points.push_back(grid.GetSortedId(keyed[k].second));
+        }
+      }
+      first = last;
+    }
+    this->BlockStarts.push_back(static_cast<std::int64_t>(this->Points.size()));
+  }
+};
+
+/// Writes one point's results into the caller's buffers (each point by
+/// exactly one thread), in the working unit until ToInputUnit.
+class ResultWriter
+{
+public:
+  explicit ResultWriter(const CurvatureBuffers& out)
+    : Out(out)
+  {
+  }
+
+  /// `target`: the adjustment's target count (0 where it has none).
+  void Store(std::int64_t i, const PointCurvature& r, double s, double p, int target = 0) const
+  {
+    const double kMin = r.Valid ? r.MinimumCurvature : NaN;
+    const double kMax = r.Valid ? r.MaximumCurvature : NaN;
+    this->Out.Minimum[i] = kMin;
+    this->Out.Maximum[i] = kMax;
+    this->Out.Mean[i] = 0.5 * (kMin + kMax);
+    this->Out.Gauss[i] = kMin * kMax;
+    std::copy_n(r.MinimumDirection.data(), 3, this->Out.MinimumDirection + 3 * i);
+    std::copy_n(r.MaximumDirection.data(), 3, this->Out.MaximumDirection + 3 * i);
+    this->Out.SineFitRms[i] = r.Valid ? r.SineFitRms : NaN;
+    this->Out.Surroundings[i] = s;
+    this->Out.PlaneDistance[i] = p;
+    this->Out.Valid[i] = r.Valid ? 1 : 0;
+    this->Out.NeighborCount[i] = r.NeighborCount;
+    this->Out.ValidDirections[i] = r.ValidDirections;
+    if (this->Out.TargetCount)
+    {
+      this->Out.TargetCount[i] = target;
+    }
+  }
+
+  void StoreUnestimated(std::int64_t i) const { this->Store(i, PointCurvature{}, NaN, NaN); }
+
+  /// Asks for the cache lines Store(i, ...) will write.
+  void Prefetch(std::int64_t i) const
+  {
+    for (const double* values : { this->Out.Minimum,
+           this->Out.Maximum,
+           this->Out.Mean,
+           this->Out.Gauss,
+           this->Out.SineFitRms,
+           this->Out.Surroundings,
+           this->Out.PlaneDistance })
+    {
+      __builtin_prefetch(values + i, 1);
+    }
+    __builtin_prefetch(this->Out.MinimumDirection + 3 * i, 1);
+    __builtin_prefetch(this->Out.MaximumDirection + 3 * i, 1);
+    __builtin_prefetch(this->Out.Valid + i, 1);
+    __builtin_prefetch(this->Out.NeighborCount + i, 1);
+    __builtin_prefetch(this->Out.ValidDirections + i, 1);
+  }
+
+  /// Back from the working unit to the input's: curvatures scale like
+  /// 1 / length.
+  void ToInputUnit(std::int64_t numberOfPoints, const WorkingUnit& unit) const
+  {
+    const double lengthScale = unit.Scale;
+    if (lengthScale == 1.0)
+    {
+      return;
+    }
+    for (std::int64_t i = 0; i < numberOfPoints; ++i)
+    {
+      for (double* curvature :
+        { this->Out.Minimum, this->Out.Maximum, this->Out.Mean, this->Out.SineFitRms })
+      {
+        curvature[i] = curvature[i] * lengthScale;
+      }
+      this->Out.Gauss[i] = this->Out.Gauss[i] * lengthScale * lengthScale;
+      for (double* length : { this->Out.Surroundings, this->Out.PlaneDistance })
+      {
+        length[i] = unit.ToInputLength(length[i]);
+      }
+    }
+  }
+
+  std::int64_t CountUnestimated(std::int64_t numberOfPoints) const
+  {
+    std::int64_t count = 0;
+    for (std::int64_t i = 0; i < numberOfPoints; ++i)
+    {
+      count += this->Out.Valid[i] == 0;
+    }
+    return count;
+  }
+
+private:
+  CurvatureBuffers Out;
+};
+
+/// Estimates the work items; one instance is shared by all threads, each
+/// point written by one thread.
+class ItemEstimator
+{
+public:
+  ItemEstimator(const CloudPoints& cloud,
+    const PointGrid& grid,
+    const ProcessingOrder& order,
+    const NeighborhoodRule& rule,
+    const FitSettings& settings,
+    const ResultWriter& out,
+    ProgressMonitor* monitor)
+    : Cloud(cloud)
+    , Grid(grid)
+    , Order(order)
+    , Rule(rule)
+    , Settings(settings)
+    , Out(out)
+    , Monitor(monitor)
+  {
+  }
+
+  void Estimate(std::int64_t begin, std::int64_t end, EstimationScratch& scratch, bool reports)
+  {
+    const bool reportsProgress = reports && this->Monitor;
+    for (std::int64_t item = begin; item < end; ++item)
+    {
+      if (this->Aborted.load(std::memory_order_relaxed))
+      {
+        return;
+      }
+      if (reportsProgress)
+      {
+        this->ReportProgress(item);
+      }
+      if (this->Rule.Adjusted)
+      {
+        this->EstimateBlock(item, scratch);
+      }
+      else
+      {
+        this->PrefetchAhead(item, end);
+        this->EstimateFixed(this->Order.Points[item], scratch);
+      }
+    }
+  }
+
+  bool WasAborted() const { return this->Aborted.load(); }
+
+private:
+  /// Points are processed in grid order, their data and results sit in
+  /// input order: where that is random, each point's reads and writes miss
+  /// the cache. Fetching a few points ahead hides it; two steps, since the
+  /// output position itself has to be read first.
+  void PrefetchAhead(std::int64_t item, std::int64_t end) const
+  {
+    constexpr std::int64_t Inputs = 16, Outputs = 8;
+    if (item + Inputs < end)
+    {
+      const std::int64_t point = this->Order.Points[item + Inputs];
+      __builtin_prefetch(&this->Cloud.InputIds[point]);
+      __builtin_prefetch(&this->Cloud.Coordinates[3 * point]);
+      __builtin_prefetch(&this->Cloud.Normals[3 * point]);
+    }
+    if (item + Outputs < end)
+    {
+      this->Out.Prefetch(this->Cloud.InputIds[this->Order.Points[item + Outputs]]);
+    }
+  }
+
+  bool HasNormal(std::int64_t point) const
+  {
+    const double* n = &this->Cloud.Normals[3 * point];
+    return n[0] != 0.0 || n[1] != 0.0 || n[2] != 0.0;
+  }
+
+  void EstimateFixed(std::int64_t point, EstimationScratch& scratch)
+  {
+    if (!this->HasNormal(point))
+    {
+      this->Out.StoreUnestimated(this->Cloud.InputIds[point]);
+      return;
+    }
+    const double* x = &this->Cloud.Coordinates[3 * point];
+    double s = this->Rule.Radius;
+    if (this->Rule.KNearest)
+    {
+      // k + 1: the point itself is found too (and then ignored).
+      s = std::sqrt(this->Grid.SquaredDistanceToKth(x, this->Rule.K + 1, scratch.Distances));
+      s = std::nextafter(s, HUGE_VAL); // the query keeps distances < s
+    }
+    this->Grid.GatherOffsetsWithinRadius(x, s, scratch.Neighbors);
+    // A fixed p of 0 stays 0: every point is then flagged, never silently
+    // estimated with some other p.
+    const double p =
+      this->Rule.FixedPlaneDistance ? this->Rule.PlaneDistance : this->Rule.Ratio * s;
+    this->EstimateGathered(point, s, p, scratch);
+  }
+
+  /// The paper's sequence within one block: s carries over from point to
+  /// point; the block's first point repeats its search with the adjusted s.
+  /// Halo points take part in the sequence (their neighbour counts steer s)
+  /// but are not estimated: another process outputs them.
+  void EstimateBlock(std::int64_t block, EstimationScratch& scratch)
+  {
+    DynamicAdjustment& adjustment = scratch.Adjustment;
+    adjustment = DynamicAdjustment(this->Rule.Adjustment);
+    bool firstPoint = true;
+    for (std::int64_t k = this->Order.BlockStarts[block]; k < this->Order.BlockStarts[block + 1];
+         ++k)
+    {
+      const std::int64_t point = this->Order.Points[k];
+      if (!this->HasNormal(point))
+      {
+        if (this->Cloud.IsOwn(point))
+        {
+          this->Out.StoreUnestimated(this->Cloud.InputIds[point]);
+        }
+        continue;
+      }
+      const double* x = &this->Cloud.Coordinates[3 * point];
+      double s = adjustment.GetSurroundingsThreshold();
+      this->Grid.GatherOffsetsWithinRadius(x, s, scratch.Neighbors);
+      if (firstPoint)
+      {
+        adjustment.Adjust(NeighborCount(scratch));
+        s = adjustment.GetSurroundingsThreshold();
+        this->Grid.GatherOffsetsWithinRadius(x, s, scratch.Neighbors);
+        firstPoint = false;
+      }
+      const int target = adjustment.GetTargetNeighborCount();
+      const double p = adjustment.Adjust(NeighborCount(scratch));
+      if (this->Cloud.IsOwn(point))
+      {
+        this->EstimateGathered(point, s, p, scratch, target);
+      }
+    }
+  }
+
+  /// Neighbours found, the point itself excluded (as the estimator counts).
+  static int NeighborCount(const EstimationScratch& scratch)
+  {
+    return std::max(0, static_cast<int>(scratch.Neighbors.Count) - 1);
+  }
+
+  void EstimateGathered(std::int64_t point,
+    double s,
+    double p,
+    EstimationScratch& scratch,
+    int target = 0)
+  {
+    const double* x = &this->Cloud.Coordinates[3 * point];
+    const double* n = &this->Cloud.Normals[3 * point];
+    PointCurvatureEstimator& estimator = scratch.Estimator;
+    estimator.Begin({ { x[0], x[1], x[2] } }, { { n[0], n[1], n[2] } }, p, s);
+    const NeighborOffsets& offsets = scratch.Neighbors;
+    estimator.AddNeighborOffsets(
+      offsets.Dx.data(), offsets.Dy.data(), offsets.Dz.data(), offsets.Count);
+    this->Out.Store(this->Cloud.InputIds[point], estimator.Estimate(this->Settings), s, p, target);
+  }
+
+  /// Progress every few thousand points, and the stop request.
+  void ReportProgress(std::int64_t item)
+  {
+    const std::int64_t items = this->Order.GetNumberOfItems();
+    const std::int64_t every = std::max<std::int64_t>(1, this->Rule.Adjusted ? items / 100 : 4096);
+    if (item % every != 0)
+    {
+      return;
+    }
+    if (!this->Monitor->Continue(static_cast<double>(item) / items))
+    {
+      this->Aborted.store(true);
+    }
+  }
+
+  const CloudPoints& Cloud;
+  const PointGrid& Grid;
+  const ProcessingOrder& Order;
+  NeighborhoodRule Rule;
+  FitSettings Settings;
+  const ResultWriter& Out;
+  ProgressMonitor* Monitor;
+  std::atomic<bool> Aborted{ false };
+};
+
+/// The used thresholds of the summary, in the input's unit.
+void SummarizeThresholds(const NeighborhoodRule& rule,
+  const WorkingUnit& unit,
+  EstimationSummary& summary)
+{
+  if (rule.Adjusted)
+  {
+    summary.UsedLengthUnit = unit.ToInputLength(rule.Adjustment.LengthUnit);
+  }
+  else if (!rule.KNearest)
+  {
+    summary.UsedSurroundingsThreshold = unit.ToInputLength(rule.Radius);
+    summary.UsedPlaneDistanceThreshold = unit.ToInputLength(rule.PlaneDistance);
+  }
+}
+} // namespace
+
+void SerialRunner::For(std::int64_t count, std::int64_t, const Work& work)
+{
+  EstimationScratch scratch;
+  work(0, count, scratch, true);
+}
+
+EstimationSummary EstimateCloud(CloudPoints cloud,
+  const EstimationSettings& settings,
+  const Collectives& processes,
+  WorkRunner& runner,
+  ProgressMonitor* monitor,
+  const CurvatureBuffers& out)
+{
+  EstimationSummary summary;
+  const WorkingUnit unit{ WorkingLengthScale(cloud, processes) };
+  cloud.ScaleCoordinates(unit.Scale);
+  const CloudBoxes boxes = MeasureBoxes(cloud, processes);
+  NeighborhoodRule rule = ChooseThresholds(settings, cloud, processes, boxes, unit, summary);
+  SummarizeThresholds(rule, unit, summary);
+
+  const GridLattice lattice = GlobalLattice(boxes, rule.CellRadius);
+  if (processes.IsDistributed())
+  {
+    if (rule.KNearest)
+    {
+      rule.Reach = processes.Max(LargestLocalKthDistance(cloud, lattice, rule.K));
+    }
+    ExchangeHalo(cloud, processes, rule.Reach);
+  }
+  PointGrid grid;
+  grid.Build(cloud.Coordinates.data(), cloud.GetNumberOfPoints(), lattice);
+  ProcessingOrder order;
+  if (rule.Adjusted)
+  {
+    order.MakeBlocks(grid, cloud, lattice, rule.BlockLength);
+  }
+  else
+  {
+    order.MakePointwise(grid, cloud);
+  }
+
+  FitSettings fit;
+  fit.Mode = settings.Mode;
+  fit.MinimumPointsPerDirection = settings.MinimumPointsPerDirection;
+  const ResultWriter writer(out);
+  const std::int64_t numberOfPoints = cloud.GetNumberOfInputPoints();
+  for (std::int64_t i = 0; i < numberOfPoints; ++i)
+  {
+    if (!cloud.FiniteInput[i])
+    {
+      writer.StoreUnestimated(i);
+    }
+  }
+  ItemEstimator estimator(cloud, grid, order, rule, fit, writer, monitor);
+  runner.For(order.GetNumberOfItems(),
+    rule.Adjusted ? 1 : 1024,
+    [&](std::int64_t begin, std::int64_t end, EstimationScratch& scratch, bool reports)
+    { estimator.Estimate(begin, end, scratch, reports); });
+  if (estimator.WasAborted())
+  {
+    summary.Aborted = true;
+    return summary;
+  }
+  summary.NumberOfUnestimatedPoints = writer.CountUnestimated(numberOfPoints);
+  writer.ToInputUnit(numberOfPoints, unit);
+  return summary;
+}
+
+} // namespace pcurv

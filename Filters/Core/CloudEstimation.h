@@ -1,0 +1,155 @@
+/**
+ * @file CloudEstimation.h
+ * @brief The cloud-level entry point of the numeric core: from a cloud with
+ * normals and the settings to the curvatures of every point. No VTK: the
+ * caller provides the output buffers, the collectives of a parallel run and
+ * the threads (WorkRunner), and gets a summary back.
+ *
+ * What happens, in order: the cloud is moved into a power-of-two working
+ * unit (CloudStatistics.h), the thresholds are chosen (fixed, automatic, k
+ * nearest or the dynamic adjustment), the grid lattice is made from global
+ * bounds, a halo is exchanged when distributed, the points are put into a
+ * global processing order (the grid's order; blocks of space with the
+ * dynamic adjustment), each work item is estimated, and the results are
+ * written back in the input's unit.
+ */
+#ifndef CloudEstimation_h
+#define CloudEstimation_h
+
+#include "CloudStatistics.h"
+#include "DynamicAdjustment.h"
+#include "PointGrid.h"
+#include "PrincipalCurvatureCore.h"
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+namespace pcurv
+{
+
+/// How the neighbours of a point are chosen.
+enum class NeighborhoodMode : int
+{
+  Radius = 0,  ///< all points closer than the surroundings-threshold
+  KNearest = 1 ///< the NumberOfNeighbors nearest points
+};
+
+/// Every setting of an estimation, lengths in the input's unit. The
+/// defaults here are the filter's defaults.
+struct EstimationSettings
+{
+  FitMode Mode = FitMode::New01;
+  NeighborhoodMode Neighborhood = NeighborhoodMode::Radius;
+  /// s and p derived from the cloud (s: median distance to the
+  /// NumberOfNeighbors-th neighbour; p = PlaneDistanceRatio s).
+  bool AutomaticThresholds = true;
+  int NumberOfNeighbors = 375;
+  double SurroundingsThreshold = 1.0;  ///< s when not automatic
+  double PlaneDistanceThreshold = 0.1; ///< p when not automatic
+  double PlaneDistanceRatio = 0.1;     ///< p / s when automatic or k nearest
+  int MinimumPointsPerDirection = 3;
+
+  /// The paper's dynamic variable adjustment instead of the above.
+  bool DynamicAdjustment = false;
+  /// L derived from the cloud: InitialSurroundingsThreshold L then holds
+  /// about the first target count at a typical point.
+  bool AutomaticLengthUnit = true;
+  double LengthUnit = 1.0; ///< L when not automatic
+  /// The initial s, target counts, target plane distances and switch
+  /// lengths (lengths in units of L). The paper's constants by default.
+  AdjustmentSettings Adjustment;
+  /// s never exceeds this times the initial s.
+  double MaximumSurroundingsFactor = 4.0;
+  /// Side of an adjustment block, in units of L.
+  double AdjustmentBlockLength = 8.0;
+};
+
+/// Where the results go: one value (or 3 for directions) per input point.
+/// TargetCount may be null (it is written with the dynamic adjustment only).
+struct CurvatureBuffers
+{
+  double* Minimum = nullptr;
+  double* Maximum = nullptr;
+  double* Mean = nullptr;
+  double* Gauss = nullptr;
+  double* MinimumDirection = nullptr;
+  double* MaximumDirection = nullptr;
+  double* SineFitRms = nullptr;
+  double* Surroundings = nullptr;
+  double* PlaneDistance = nullptr;
+  unsigned char* Valid = nullptr;
+  int* NeighborCount = nullptr;
+  int* ValidDirections = nullptr;
+  int* TargetCount = nullptr;
+};
+
+/// What an estimation chose and found, lengths in the input's unit.
+struct EstimationSummary
+{
+  /// The fixed or automatic s and p (0 with k nearest or the adjustment).
+  double UsedSurroundingsThreshold = 0.0;
+  double UsedPlaneDistanceThreshold = 0.0;
+  /// The adjustment's length unit L (0 without the adjustment).
+  double UsedLengthUnit = 0.0;
+  std::int64_t NumberOfUnestimatedPoints = 0;
+  /// The adjustment's target counts as used: within [1, 1e6] (NaN: 1).
+  std::array<double, 3> TargetNeighborCounts{ { 0.0, 0.0, 0.0 } };
+  bool TargetCountsClamped = false;
+  /// The caller asked to stop: the buffers are incomplete.
+  bool Aborted = false;
+};
+
+/// A thread's reusable buffers for the estimation's work items.
+struct EstimationScratch
+{
+  PointCurvatureEstimator Estimator;
+  DynamicAdjustment Adjustment;
+  std::vector<double> Distances;
+  NeighborOffsets Neighbors;
+};
+
+/// Told how far the work is, from one thread; returns false to stop.
+class ProgressMonitor
+{
+public:
+  virtual ~ProgressMonitor() = default;
+  virtual bool Continue(double fraction) = 0;
+};
+
+/// Runs the work items [0, count), possibly on several threads.
+class WorkRunner
+{
+public:
+  /// Estimates the items [begin, end) with a scratch no other thread uses
+  /// meanwhile; `reportsProgress` for the one thread that reports progress.
+  using Work = std::function<
+    void(std::int64_t begin, std::int64_t end, EstimationScratch& scratch, bool reportsProgress)>;
+
+  virtual ~WorkRunner() = default;
+  /// Calls `work` on ranges of at least `grain` items (except the last)
+  /// that together cover [0, count) once.
+  virtual void For(std::int64_t count, std::int64_t grain, const Work& work) = 0;
+};
+
+/// All items in the calling thread.
+class SerialRunner : public WorkRunner
+{
+public:
+  void For(std::int64_t count, std::int64_t grain, const Work& work) override;
+};
+
+/// The curvatures of every input point of `cloud` (consumed: it is scaled
+/// and given a halo), written to `out`. The same results for any runner,
+/// thread count or split of the cloud among processes.
+EstimationSummary EstimateCloud(CloudPoints cloud,
+  const EstimationSettings& settings,
+  const Collectives& processes,
+  WorkRunner& runner,
+  ProgressMonitor* monitor,
+  const CurvatureBuffers& out);
+
+} // namespace pcurv
+
+#endif

@@ -1,0 +1,400 @@
+#include "CloudStatistics.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace pcurv
+{
+namespace
+{
+constexpr int PointRecordSize = 6; // x y z nx ny nz
+constexpr double Pi = 3.141592653589793;
+
+/// Squared distance from x to the box [lower, upper] (0 inside).
+double SquaredDistanceToBox(const double* x, const double lower[3], const double upper[3])
+{
+  double squared = 0.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    const double outside = std::max({ lower[k] - x[k], 0.0, x[k] - upper[k] });
+    squared += outside * outside;
+  }
+  return squared;
+}
+
+double SquaredDistance(const double a[3], const double b[3])
+{
+  double squared = 0.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    squared += (a[k] - b[k]) * (a[k] - b[k]);
+  }
+  return squared;
+}
+
+std::uint64_t Mix(std::uint64_t z)
+{
+  // splitmix64's finaliser: every input bit affects every output bit.
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+  return z ^ (z >> 31);
+}
+
+/// Narrows [lower, upper] per axis to the range of the central 98 % of the
+/// own points of all processes (see CloudBoxes::SampleLower).
+void ZoomOntoCentralPoints(const CloudPoints& cloud,
+  const Collectives& processes,
+  double lower[3],
+  double upper[3])
+{
+  const std::int64_t total = processes.Sum(cloud.NumberOfOwnPoints);
+  // 0-based ranks, in coordinate order, of the points at 1 % and 99 %.
+  const std::int64_t firstRank = total / 100;
+  const std::int64_t lastRank = total - 1 - total / 100;
+  constexpr int Bins = 1024;
+  constexpr int EnoughBins = 64; // the central points span 64 of 1024 bins: no zoom
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    std::int64_t below = 0; // points below lower[axis]
+    for (int level = 0; level < 8 && upper[axis] > lower[axis]; ++level)
+    {
+      const double low = lower[axis];
+      const double width = (upper[axis] - low) / Bins;
+      if (!(width > 0.0))
+      {
+        break; // a range of a few subnormal steps: nothing left to zoom into
+      }
+      std::vector<std::int64_t> counts(Bins, 0);
+      for (std::int64_t i = 0; i < cloud.NumberOfOwnPoints; ++i)
+      {
+        const double x = cloud.Coordinates[3 * i + axis];
+        if (x >= low && x <= upper[axis])
+        {
+          const double bin = std::floor((x - low) / width);
+          ++counts[static_cast<int>(std::min(std::max(bin, 0.0), Bins - 1.0))];
+        }
+      }
+      processes.Sum(counts);
+      int firstBin = -1, lastBin = -1;
+      std::int64_t cumulative = below;
+      for (int b = 0; b < Bins && lastBin < 0; ++b)
+      {
+        if (firstBin < 0 && cumulative + counts[b] > firstRank)
+        {
+          firstBin = b;
+          below = cumulative;
+        }
+        if (cumulative + counts[b] > lastRank)
+        {
+          lastBin = b;
+        }
+        cumulative += counts[b];
+      }
+      if (firstBin < 0 || lastBin < 0 || lastBin - firstBin >= EnoughBins)
+      {
+        break;
+      }
+      const double newUpper = lastBin + 1 < Bins ? low + (lastBin + 1) * width : upper[axis];
+      lower[axis] = low + firstBin * width;
+      upper[axis] = newUpper;
+    }
+  }
+}
+} // namespace
+
+void MakeUnitNormal(double n[3])
+{
+  // Divided by its largest component first, so that the squares neither
+  // overflow (length 1e170) nor underflow (length 1e-170).
+  const double largest = std::max({ std::fabs(n[0]), std::fabs(n[1]), std::fabs(n[2]) });
+  if (!(largest > 0.0 && std::isfinite(largest + n[0] + n[1] + n[2])))
+  {
+    n[0] = n[1] = n[2] = 0.0;
+    return;
+  }
+  for (int k = 0; k < 3; ++k)
+  {
+    n[k] /= largest;
+  }
+  const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  for (int k = 0; k < 3; ++k)
+  {
+    n[k] /= length;
+  }
+}
+
+void CloudPoints::Reset(std::int64_t numberOfInputPoints)
+{
+  this->Coordinates.clear();
+  this->Normals.clear();
+  this->InputIds.clear();
+  this->FiniteInput.assign(numberOfInputPoints, 0);
+  this->Coordinates.reserve(3 * numberOfInputPoints);
+  this->Normals.reserve(3 * numberOfInputPoints);
+  this->InputIds.reserve(numberOfInputPoints);
+  this->NumberOfOwnPoints = 0;
+}
+
+void CloudPoints::AddInputPoint(std::int64_t id, const double x[3], const double normal[3])
+{
+  if (!(std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2])))
+  {
+    return;
+  }
+  double n[3] = { normal[0], normal[1], normal[2] };
+  MakeUnitNormal(n);
+  this->FiniteInput[id] = 1;
+  this->Coordinates.insert(this->Coordinates.end(), x, x + 3);
+  this->Normals.insert(this->Normals.end(), n, n + 3);
+  this->InputIds.push_back(id);
+  this->NumberOfOwnPoints = static_cast<std::int64_t>(this->InputIds.size());
+}
+
+void CloudPoints::OwnBounds(double lower[3], double upper[3]) const
+{
+  for (int k = 0; k < 3; ++k)
+  {
+    lower[k] = std::numeric_limits<double>::infinity();
+    upper[k] = -std::numeric_limits<double>::infinity();
+  }
+  for (std::int64_t i = 0; i < this->NumberOfOwnPoints; ++i)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      lower[k] = std::min(lower[k], this->Coordinates[3 * i + k]);
+      upper[k] = std::max(upper[k], this->Coordinates[3 * i + k]);
+    }
+  }
+}
+
+void CloudPoints::ScaleCoordinates(double factor)
+{
+  for (double& coordinate : this->Coordinates)
+  {
+    coordinate *= factor;
+  }
+}
+
+void CloudPoints::DropHalo()
+{
+  this->Coordinates.resize(3 * this->NumberOfOwnPoints);
+  this->Normals.resize(3 * this->NumberOfOwnPoints);
+}
+
+std::vector<double> Collectives::Gather(const std::vector<double>& values,
+  std::vector<std::int64_t>* lengths) const
+{
+  if (lengths)
+  {
+    lengths->assign(1, static_cast<std::int64_t>(values.size()));
+  }
+  return values;
+}
+
+void ExchangeHalo(CloudPoints& cloud, const Collectives& processes, double reach)
+{
+  cloud.DropHalo();
+  if (!processes.IsDistributed())
+  {
+    return;
+  }
+  const int numberOfProcesses = processes.GetNumberOfProcesses();
+  const int me = processes.GetLocalProcessId();
+  double lower[3], upper[3];
+  cloud.OwnBounds(lower, upper);
+  const std::vector<double> boxes =
+    processes.Gather({ lower[0], lower[1], lower[2], upper[0], upper[1], upper[2] });
+
+  // Own points within reach of another process's box, as records.
+  const double reachSquared = reach * reach;
+  std::vector<double> outgoing;
+  for (std::int64_t i = 0; i < cloud.NumberOfOwnPoints; ++i)
+  {
+    const double* x = &cloud.Coordinates[3 * i];
+    for (int p = 0; p < numberOfProcesses; ++p)
+    {
+      if (p != me && SquaredDistanceToBox(x, &boxes[6 * p], &boxes[6 * p + 3]) <= reachSquared)
+      {
+        outgoing.insert(outgoing.end(), x, x + 3);
+        outgoing.insert(outgoing.end(), &cloud.Normals[3 * i], &cloud.Normals[3 * i] + 3);
+        break;
+      }
+    }
+  }
+  // Every process's records reach every process, which keeps those within
+  // reach of its own box. Simple and deadlock free; the records are only
+  // the points near the boundaries between the pieces.
+  std::vector<std::int64_t> lengths;
+  const std::vector<double> records = processes.Gather(outgoing, &lengths);
+  std::int64_t offset = 0;
+  for (int p = 0; p < numberOfProcesses; ++p)
+  {
+    if (p != me && cloud.NumberOfOwnPoints > 0)
+    {
+      for (std::int64_t r = offset; r < offset + lengths[p]; r += PointRecordSize)
+      {
+        const double* record = &records[r];
+        if (SquaredDistanceToBox(record, lower, upper) <= reachSquared)
+        {
+          cloud.Coordinates.insert(cloud.Coordinates.end(), record, record + 3);
+          cloud.Normals.insert(cloud.Normals.end(), record + 3, record + 6);
+        }
+      }
+    }
+    offset += lengths[p];
+  }
+}
+
+double WorkingLengthScale(const CloudPoints& cloud, const Collectives& processes)
+{
+  double largest = 0.0;
+  for (std::int64_t i = 0; i < 3 * cloud.NumberOfOwnPoints; ++i)
+  {
+    largest = std::max(largest, std::fabs(cloud.Coordinates[i]));
+  }
+  largest = processes.Max(largest);
+  if (!(largest > 0.0) || (largest >= std::ldexp(1.0, -400) && largest <= std::ldexp(1.0, 400)))
+  {
+    return 1.0;
+  }
+  int exponent = 0;
+  std::frexp(largest, &exponent); // largest = m 2^exponent, m in [0.5, 1)
+  return std::ldexp(1.0, 1 - exponent);
+}
+
+bool InSpacingSample(const double x[3],
+  const double lower[3],
+  const double upper[3],
+  std::int64_t stride)
+{
+  std::uint64_t hash = 0;
+  for (int k = 0; k < 3; ++k)
+  {
+    const double extent = upper[k] - lower[k];
+    // Points outside the box (far outliers) share the steps -1 and 2^20.
+    const double step = extent > 0.0
+      ? std::min(std::max(std::floor((x[k] - lower[k]) / extent * 1048576.0), -1.0), 1048576.0)
+      : 0.0;
+    hash = Mix(hash ^ static_cast<std::uint64_t>(static_cast<std::int64_t>(step)));
+  }
+  return hash % static_cast<std::uint64_t>(std::max<std::int64_t>(stride, 1)) == 0;
+}
+
+CloudBoxes MeasureBoxes(const CloudPoints& cloud, const Collectives& processes)
+{
+  double fullLower[3], fullUpper[3];
+  cloud.OwnBounds(fullLower, fullUpper);
+  processes.Bounds(fullLower, fullUpper);
+  CloudBoxes boxes;
+  std::copy_n(fullLower, 3, boxes.SampleLower.begin());
+  std::copy_n(fullUpper, 3, boxes.SampleUpper.begin());
+  ZoomOntoCentralPoints(cloud, processes, boxes.SampleLower.data(), boxes.SampleUpper.data());
+  for (int k = 0; k < 3; ++k)
+  {
+    const double margin = 0.5 * boxes.SampleUpper[k] - 0.5 * boxes.SampleLower[k];
+    boxes.GridLower[k] = std::max(fullLower[k], boxes.SampleLower[k] - margin);
+    boxes.GridUpper[k] = std::min(fullUpper[k], boxes.SampleUpper[k] + margin);
+  }
+  boxes.GlobalCount = processes.Sum(cloud.NumberOfOwnPoints);
+  return boxes;
+}
+
+GridLattice GlobalLattice(const CloudBoxes& boxes, double radius)
+{
+  double lower[3], upper[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    lower[k] = boxes.GridLower[k];
+    upper[k] = boxes.GridUpper[k];
+    if (!(lower[k] <= upper[k]))
+    {
+      lower[k] = upper[k] = 0.0; // no point anywhere
+    }
+  }
+  return GridLattice::Make(lower, upper, boxes.GlobalCount, 0.5 * radius);
+}
+
+double TypicalRadius(const CloudPoints& cloud,
+  const Collectives& processes,
+  const CloudBoxes& boxes,
+  int k)
+{
+  const std::int64_t globalCount = boxes.GlobalCount;
+  if (globalCount < 2)
+  {
+    return 0.0;
+  }
+  // About 512 sample points whatever the size of the cloud.
+  const std::int64_t stride = std::max<std::int64_t>(1, globalCount / 512);
+  const double* sampleLower = boxes.SampleLower.data();
+  const double* sampleUpper = boxes.SampleUpper.data();
+  const double diagonal = std::sqrt(SquaredDistance(sampleLower, sampleUpper));
+  // Cells for a first guess: the points spread over a square as wide as
+  // the (sampling) box's diagonal.
+  const double guess = diagonal * std::sqrt(k / (Pi * globalCount));
+  const GridLattice lattice =
+    GridLattice::Make(boxes.GridLower.data(), boxes.GridUpper.data(), globalCount, 0.5 * guess);
+
+  std::vector<std::int64_t> sample;
+  for (std::int64_t i = 0; i < cloud.NumberOfOwnPoints; ++i)
+  {
+    if (InSpacingSample(&cloud.Coordinates[3 * i], sampleLower, sampleUpper, stride))
+    {
+      sample.push_back(i);
+    }
+  }
+  PointGrid grid;
+  std::vector<double> scratch;
+  auto sampleRadii = [&](const CloudPoints& searched)
+  {
+    grid.Build(searched.Coordinates.data(), searched.GetNumberOfPoints(), lattice);
+    std::vector<double> radii;
+    for (const std::int64_t i : sample)
+    {
+      // k + 1: the sample point itself is among the points found.
+      radii.push_back(
+        std::sqrt(grid.SquaredDistanceToKth(&searched.Coordinates[3 * i], k + 1, scratch)));
+    }
+    return radii;
+  };
+  std::vector<double> radii;
+  if (processes.IsDistributed())
+  {
+    // Radii from this process's points alone can only be too large: reach
+    // that far into the other pieces, then measure again.
+    CloudPoints withHalo = cloud;
+    withHalo.DropHalo();
+    const std::vector<double> bounds = sampleRadii(withHalo);
+    const double reach =
+      processes.Max(bounds.empty() ? 0.0 : *std::max_element(bounds.begin(), bounds.end()));
+    ExchangeHalo(withHalo, processes, reach);
+    radii = processes.Gather(sampleRadii(withHalo));
+  }
+  else
+  {
+    radii = processes.Gather(sampleRadii(cloud));
+  }
+  if (radii.empty())
+  {
+    return 0.0;
+  }
+  std::nth_element(radii.begin(), radii.begin() + radii.size() / 2, radii.end());
+  return radii[radii.size() / 2];
+}
+
+double LargestLocalKthDistance(const CloudPoints& cloud, const GridLattice& lattice, int k)
+{
+  PointGrid grid;
+  grid.Build(cloud.Coordinates.data(), cloud.NumberOfOwnPoints, lattice);
+  std::vector<double> scratch;
+  double largest = 0.0;
+  for (std::int64_t i = 0; i < cloud.NumberOfOwnPoints; ++i)
+  {
+    largest =
+      std::max(largest, grid.SquaredDistanceToKth(&cloud.Coordinates[3 * i], k + 1, scratch));
+  }
+  return std::nextafter(std::sqrt(largest), HUGE_VAL);
+}
+
+} // namespace pcurv

@@ -1,0 +1,298 @@
+// The core's cloud-level entry point alone (no VTK): accuracy on analytic
+// clouds, results independent of the runner's threads and of the cloud's
+// unit, the summary, and the stop request.
+#include "AnalyticSurfaces.h"
+#include "CloudEstimation.h"
+#include "TestChecks.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <thread>
+#include <vector>
+
+namespace
+{
+using namespace pcurv;
+
+/// Every output array of an estimation, owned.
+struct Results
+{
+  explicit Results(std::size_t n, bool adjusted)
+    : Minimum(n)
+    , Maximum(n)
+    , Mean(n)
+    , Gauss(n)
+    , MinimumDirection(3 * n)
+    , MaximumDirection(3 * n)
+    , SineFitRms(n)
+    , Surroundings(n)
+    , PlaneDistance(n)
+    , Valid(n)
+    , NeighborCount(n)
+    , ValidDirections(n)
+    , TargetCount(adjusted ? n : 0)
+  {
+  }
+
+  CurvatureBuffers Buffers()
+  {
+    return CurvatureBuffers{ Minimum.data(),
+      Maximum.data(),
+      Mean.data(),
+      Gauss.data(),
+      MinimumDirection.data(),
+      MaximumDirection.data(),
+      SineFitRms.data(),
+      Surroundings.data(),
+      PlaneDistance.data(),
+      Valid.data(),
+      NeighborCount.data(),
+      ValidDirections.data(),
+      TargetCount.empty() ? nullptr : TargetCount.data() };
+  }
+
+  bool BitIdentical(const Results& other) const
+  {
+    auto same = [](const auto& a, const auto& b) {
+      return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(a[0])) == 0;
+    };
+    return same(Minimum, other.Minimum) && same(Maximum, other.Maximum) && same(Mean, other.Mean) &&
+      same(Gauss, other.Gauss) && same(MinimumDirection, other.MinimumDirection) &&
+      same(MaximumDirection, other.MaximumDirection) && same(SineFitRms, other.SineFitRms) &&
+      same(Surroundings, other.Surroundings) && same(PlaneDistance, other.PlaneDistance) &&
+      same(Valid, other.Valid) && same(NeighborCount, other.NeighborCount) &&
+      same(ValidDirections, other.ValidDirections) && same(TargetCount, other.TargetCount);
+  }
+
+  std::vector<double> Minimum, Maximum, Mean, Gauss, MinimumDirection, MaximumDirection, SineFitRms,
+    Surroundings, PlaneDistance;
+  std::vector<unsigned char> Valid;
+  std::vector<int> NeighborCount, ValidDirections, TargetCount;
+};
+
+CloudPoints MakeCloud(const std::vector<testing::SurfaceSample>& samples, double scale = 1.0)
+{
+  CloudPoints cloud;
+  cloud.Reset(static_cast<std::int64_t>(samples.size()));
+  for (std::size_t i = 0; i < samples.size(); ++i)
+  {
+    const double x[3] = {
+      scale * samples[i].Point[0], scale * samples[i].Point[1], scale * samples[i].Point[2]
+    };
+    cloud.AddInputPoint(static_cast<std::int64_t>(i), x, samples[i].Normal.data());
+  }
+  return cloud;
+}
+
+/// Ranges of `grain` items handed out to `threads` threads in turn, each
+/// with its own scratch.
+class ThreadRunner : public WorkRunner
+{
+public:
+  explicit ThreadRunner(int threads)
+    : Threads(threads)
+  {
+  }
+  void For(std::int64_t count, std::int64_t grain, const Work& work) override
+  {
+    std::vector<std::thread> pool;
+    for (int t = 0; t < this->Threads; ++t)
+    {
+      pool.emplace_back(
+        [&, t]()
+        {
+          EstimationScratch scratch;
+          for (std::int64_t begin = t * grain; begin < count; begin += this->Threads * grain)
+          {
+            work(begin, std::min(count, begin + grain), scratch, t == 0);
+          }
+        });
+    }
+    for (std::thread& thread : pool)
+    {
+      thread.join();
+    }
+  }
+
+private:
+  int Threads;
+};
+
+/// Stops at the first report.
+class StopAtOnce : public ProgressMonitor
+{
+public:
+  bool Continue(double) override { return false; }
+};
+
+EstimationSummary Estimate(const std::vector<testing::SurfaceSample>& samples,
+  const EstimationSettings& settings,
+  Results& results,
+  WorkRunner& runner,
+  double scale = 1.0,
+  ProgressMonitor* monitor = nullptr)
+{
+  return EstimateCloud(
+    MakeCloud(samples, scale), settings, Collectives{}, runner, monitor, results.Buffers());
+}
+
+/// Mean |k - exact| over the points away from the border, both curvatures.
+double MeanError(const std::vector<testing::SurfaceSample>& samples, const Results& r)
+{
+  double sum = 0.0;
+  int count = 0;
+  for (std::size_t i = 0; i < samples.size(); ++i)
+  {
+    if (r.Valid[i])
+    {
+      sum += std::fabs(r.Minimum[i] - samples[i].MinimumCurvature) +
+        std::fabs(r.Maximum[i] - samples[i].MaximumCurvature);
+      count += 2;
+    }
+  }
+  return count ? sum / count : HUGE_VAL;
+}
+
+void TestAccuracyAndSign(Checks& checks)
+{
+  const auto sphere = testing::Sample(testing::Sphere(2.0), 20000, 11);
+  SerialRunner serial;
+  Results r(sphere.size(), false);
+  const EstimationSummary summary = Estimate(sphere, EstimationSettings{}, r, serial);
+  checks.True("sphere: every point estimated", summary.NumberOfUnestimatedPoints == 0);
+  checks.Near("sphere: k = +1/R with outward normals", MeanError(sphere, r), 0.0, 0.01);
+  checks.True("sphere: automatic s reported", summary.UsedSurroundingsThreshold > 0.0);
+  checks.Near("sphere: p = s / 10",
+    summary.UsedPlaneDistanceThreshold,
+    0.1 * summary.UsedSurroundingsThreshold,
+    1e-15);
+
+  const auto torus = testing::Sample(testing::Torus(3.0, 1.0), 30000, 12);
+  for (int mode = 0; mode < 3; ++mode)
+  {
+    EstimationSettings settings;
+    settings.Mode = static_cast<FitMode>(mode);
+    Results t(torus.size(), false);
+    Estimate(torus, settings, t, serial);
+    checks.Near("torus: mean error per fit mode", MeanError(torus, t), 0.0, 0.02);
+    // The maximum direction: a tangent (orthogonal to the exact normal,
+    // which the estimator was given) and along the exact one.
+    double notTangent = 0.0;
+    int samples = 0, within = 0;
+    for (std::size_t i = 0; i < torus.size(); i += 101, ++samples)
+    {
+      const double* d = &t.MaximumDirection[3 * i];
+      notTangent =
+        std::max(notTangent, std::fabs(testing::Dot({ { d[0], d[1], d[2] } }, torus[i].Normal)));
+      within += std::fabs(testing::Dot({ { d[0], d[1], d[2] } }, torus[i].MaximumDirection)) >
+        std::cos(8.0 * 3.141592653589793 / 180.0);
+    }
+    checks.Near("torus: maximum direction orthogonal to the normal", notTangent, 0.0, 1e-9);
+    checks.True("torus: maximum direction within 8 degrees of the exact one at 99 % of points",
+      within >= 0.99 * samples);
+  }
+}
+
+void TestRunnerIndependence(Checks& checks)
+{
+  const auto torus = testing::Sample(testing::Torus(3.0, 1.0), 20000, 13);
+  for (bool adjusted : { false, true })
+  {
+    EstimationSettings settings;
+    settings.DynamicAdjustment = adjusted;
+    settings.Mode = FitMode::New02;
+    SerialRunner serial;
+    ThreadRunner threads(3);
+    Results one(torus.size(), adjusted), three(torus.size(), adjusted);
+    Estimate(torus, settings, one, serial);
+    Estimate(torus, settings, three, threads);
+    checks.True(adjusted ? "adjustment: 3 threads bit-identical to 1"
+                         : "fixed radius: 3 threads bit-identical to 1",
+      one.BitIdentical(three));
+    if (adjusted)
+    {
+      checks.True("adjustment: target counts written", one.TargetCount[0] == 375);
+    }
+  }
+}
+
+void TestWorkingUnit(Checks& checks)
+{
+  const auto sphere = testing::Sample(testing::Sphere(2.0), 5000, 14);
+  SerialRunner serial;
+  const double scale = std::ldexp(1.0, -600);
+  Results unit(sphere.size(), false), tiny(sphere.size(), false);
+  const EstimationSummary a = Estimate(sphere, EstimationSettings{}, unit, serial);
+  const EstimationSummary b = Estimate(sphere, EstimationSettings{}, tiny, serial, scale);
+  bool exact = true;
+  for (std::size_t i = 0; i < sphere.size(); ++i)
+  {
+    exact = exact && tiny.Minimum[i] == unit.Minimum[i] / scale &&
+      tiny.Surroundings[i] == unit.Surroundings[i] * scale;
+  }
+  checks.True("a cloud scaled by 2^-600: curvatures and lengths scale exactly", exact);
+  checks.True("a cloud scaled by 2^-600: s reported in the input's unit",
+    b.UsedSurroundingsThreshold == a.UsedSurroundingsThreshold * scale);
+}
+
+void TestFlaggedAndStopped(Checks& checks)
+{
+  auto sphere = testing::Sample(testing::Sphere(2.0), 5000, 15);
+  sphere[10].Point[0] = std::nan("");
+  sphere[20].Normal = { { 0.0, 0.0, 0.0 } };
+  SerialRunner serial;
+  Results r(sphere.size(), false);
+  const EstimationSummary summary = Estimate(sphere, EstimationSettings{}, r, serial);
+  checks.True("a NaN coordinate and a zero normal: two points flagged",
+    summary.NumberOfUnestimatedPoints == 2 && !r.Valid[10] && !r.Valid[20] &&
+      std::isnan(r.Minimum[10]) && std::isnan(r.Mean[20]));
+  StopAtOnce stop;
+  Results stopped(sphere.size(), false);
+  checks.True("a monitor that says stop: the summary says aborted",
+    Estimate(sphere, EstimationSettings{}, stopped, serial, 1.0, &stop).Aborted);
+
+  EstimationSettings clamped;
+  clamped.DynamicAdjustment = true;
+  clamped.Adjustment.TargetNeighborCounts = { { std::nan(""), 1e300, 100.0 } };
+  Results c(sphere.size(), true);
+  const EstimationSummary s = Estimate(sphere, clamped, c, serial);
+  checks.True("target counts clamped to [1, 1e6] and reported",
+    s.TargetCountsClamped && s.TargetNeighborCounts[0] == 1.0 && s.TargetNeighborCounts[1] == 1e6);
+}
+/// A cloud with no typical radius (one point, or every point at one place)
+/// gives the adjustment a length unit of 0: every point flagged, and no
+/// undefined behaviour on the way (the fuzzer found a NaN block index).
+void TestAdjustmentWithoutSpacing(Checks& checks)
+{
+  for (int copies : { 1, 12 })
+  {
+    std::vector<testing::SurfaceSample> same(copies);
+    for (testing::SurfaceSample& sample : same)
+    {
+      sample.Point = { { 1.0, 2.0, 3.0 } };
+      sample.Normal = { { 0.0, 0.0, 1.0 } };
+    }
+    EstimationSettings settings;
+    settings.DynamicAdjustment = true;
+    SerialRunner serial;
+    Results r(same.size(), true);
+    const EstimationSummary summary = Estimate(same, settings, r, serial);
+    checks.True(copies == 1 ? "adjustment on one point: flagged"
+                            : "adjustment on coincident points: all flagged",
+      summary.NumberOfUnestimatedPoints == copies && summary.UsedLengthUnit == 0.0);
+  }
+}
+} // namespace
+
+int main()
+{
+  Checks checks;
+  TestAccuracyAndSign(checks);
+  TestRunnerIndependence(checks);
+  TestWorkingUnit(checks);
+  TestFlaggedAndStopped(checks);
+  TestAdjustmentWithoutSpacing(checks);
+  return checks.Summary();
+}

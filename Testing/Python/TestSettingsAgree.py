@@ -1,0 +1,94 @@
+"""The settings are defined once, in the numeric core (pcurv::EstimationSettings,
+pcurv::AdjustmentConstants), and read by the filter; the places that cannot
+include C++ are checked against it here:
+
+- every default_values of the plugin XML equals the filter's default;
+- the XML's enumerations equal the filter's enum constants;
+- the XML's ranges equal the filter's clamp ranges where both give one;
+- the command-line tool's --dynamic-adjustment table equals the presets;
+- the XML's documentation quotes the banded ladder's switch lengths.
+
+    pvpython TestSettingsAgree.py PLUGIN.xml estimate_curvatures.py
+(with the wrapped package on PYTHONPATH)
+"""
+
+import importlib.util
+import sys
+import xml.etree.ElementTree as ElementTree
+
+from principal_curvatures import vtkPrincipalCurvatureEstimation
+
+xml_path, cli_path = sys.argv[1], sys.argv[2]
+failures = []
+
+
+def check(condition, message):
+    print(("ok      " if condition else "FAILED  ") + message)
+    if not condition:
+        failures.append(message)
+
+
+def values(text, kind):
+    return [kind(v) for v in text.split()]
+
+
+filter_defaults = vtkPrincipalCurvatureEstimation()
+proxy = next(p for p in ElementTree.parse(xml_path).iter("SourceProxy")
+             if p.get("class") == "vtkPrincipalCurvatureEstimation")
+checked = 0
+for prop in proxy:
+    command = prop.get("command") or ""
+    if not command.startswith("Set") or prop.get("default_values") is None:
+        continue
+    getter = getattr(filter_defaults, "Get" + command[3:], None)
+    if getter is None:
+        continue
+    kind = float if prop.tag == "DoubleVectorProperty" else int
+    expected = getter()
+    expected = list(expected) if isinstance(expected, tuple) else [expected]
+    given = values(prop.get("default_values"), kind)
+    check([kind(v) for v in expected] == given,
+          "%s: XML default %s, filter default %s" % (prop.get("name"), given, expected))
+    checked += 1
+    for domain in prop:
+        if domain.tag in ("IntRangeDomain", "DoubleRangeDomain"):
+            for end in ("min", "max"):
+                clamp = getattr(filter_defaults, "Get%s%sValue" % (command[3:], end.capitalize()), None)
+                if domain.get(end) is not None and clamp is not None:
+                    check(kind(domain.get(end)) == kind(clamp()),
+                          "%s: XML %s %s, clamp %s" % (prop.get("name"), end, domain.get(end), clamp()))
+check(checked >= 15, "%d XML defaults compared" % checked)
+
+enumerations = {
+    "FitMode": {"Previous": filter_defaults.PREVIOUS, "New01": filter_defaults.NEW01,
+                "New02": filter_defaults.NEW02},
+    "NeighborhoodMode": {"Radius": filter_defaults.RADIUS, "K Nearest": filter_defaults.K_NEAREST},
+}
+for prop in proxy:
+    if prop.get("name") in enumerations:
+        entries = {e.get("text"): int(e.get("value")) for e in prop.iter("Entry")}
+        check(entries == enumerations[prop.get("name")],
+              "%s: XML entries %s" % (prop.get("name"), entries))
+
+spec = importlib.util.spec_from_file_location("estimate_curvatures", cli_path)
+cli = importlib.util.module_from_spec(spec)
+spec.loader.exec_module(cli)
+presets = {"paper": filter_defaults.PAPER_CONSTANTS, "ladder": filter_defaults.LADDER,
+           "noisy-ladder": filter_defaults.NOISY_LADDER}
+check(sorted(cli.ADJUSTMENTS) == sorted(presets), "the tool's adjustment names: %s" % sorted(cli.ADJUSTMENTS))
+for name, preset in presets.items():
+    f = vtkPrincipalCurvatureEstimation()
+    f.SetAdjustmentConstantsToPreset(preset)
+    for setting, given in cli.ADJUSTMENTS.get(name, {}).items():
+        expected = list(getattr(f, "Get" + setting)())
+        check([float(v) for v in given] == expected,
+              "--dynamic-adjustment %s: %s %s, filter preset %s" % (name, setting, given, expected))
+
+ladder = vtkPrincipalCurvatureEstimation()
+ladder.SetAdjustmentConstantsToPreset(ladder.LADDER)
+switches = " ".join("%g" % v for v in ladder.GetSwitchLengths())
+documentation = " ".join(" ".join(d.text.split()) for d in proxy.iter("Documentation") if d.text)
+check(switches in documentation, "the XML documentation quotes the ladder's switch lengths %s" % switches)
+
+print("%d failed" % len(failures))
+sys.exit(1 if failures else 0)
