@@ -1,12 +1,22 @@
 #include "PrincipalCurvatureCloud.h"
 
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
 #include "vtkCommunicator.h"
 #include "vtkDataArray.h"
+#include "vtkIdTypeArray.h"
 #include "vtkMultiProcessController.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
 #include "vtkPointSet.h"
+#include "vtkPolyData.h"
 #include "vtkPoints.h"
+#include "vtkSMPThreadLocal.h"
+#include "vtkSMPTools.h"
 
 #include <algorithm>
+#include <cstdlib>
+#include <string>
 
 namespace pcurv
 {
@@ -19,9 +29,12 @@ CloudPoints ReadCloud(vtkPointSet* input, vtkDataArray* normals)
   vtkDataArray* points = numberOfPoints > 0 ? input->GetPoints()->GetData() : nullptr;
   for (vtkIdType i = 0; i < numberOfPoints; ++i)
   {
-    double x[3], n[3];
+    double x[3], n[3] = { 0.0, 0.0, 0.0 };
     points->GetTuple(i, x);
-    normals->GetTuple(i, n);
+    if (normals)
+    {
+      normals->GetTuple(i, n);
+    }
     cloud.AddInputPoint(i, x, n);
   }
   return cloud;
@@ -135,6 +148,71 @@ std::vector<double> ControllerCollectives::Gather(const std::vector<double>& val
     lengthsOut->assign(lengths.begin(), lengths.end());
   }
   return all;
+}
+
+namespace
+{
+/// One vertex cell per point, so that the output shows in a render view.
+vtkNew<vtkCellArray> MakeVertexCells(vtkIdType numberOfPoints)
+{
+  vtkNew<vtkIdTypeArray> offsets;
+  vtkNew<vtkIdTypeArray> connectivity;
+  offsets->SetNumberOfValues(numberOfPoints + 1);
+  connectivity->SetNumberOfValues(numberOfPoints);
+  for (vtkIdType i = 0; i < numberOfPoints; ++i)
+  {
+    offsets->SetValue(i, i);
+    connectivity->SetValue(i, i);
+  }
+  offsets->SetValue(numberOfPoints, numberOfPoints);
+  vtkNew<vtkCellArray> cells;
+  cells->SetData(offsets, connectivity);
+  return cells;
+}
+
+struct RunnerFunctor
+{
+  const WorkRunner::Work& Run;
+  vtkSMPThreadLocal<EstimationScratch> Scratch;
+  /// With no more items than the grain, vtkSMPTools runs the functor in the
+  /// calling thread without a thread pool, and (VTK 9.2, STDThread)
+  /// GetSingleThread() then crashes: that one thread reports progress.
+  bool RunsInline;
+
+  void operator()(vtkIdType begin, vtkIdType end)
+  {
+    this->Run(
+      begin, end, this->Scratch.Local(), this->RunsInline || vtkSMPTools::GetSingleThread());
+  }
+};
+} // namespace
+
+void CopyGeometry(vtkPointSet* input, vtkPolyData* output)
+{
+  vtkPolyData* inputPolyData = vtkPolyData::SafeDownCast(input);
+  if (inputPolyData && inputPolyData->GetNumberOfCells() > 0)
+  {
+    output->CopyStructure(inputPolyData);
+    output->GetCellData()->PassData(inputPolyData->GetCellData());
+  }
+  else
+  {
+    output->SetPoints(input->GetPoints());
+    output->SetVerts(MakeVertexCells(input->GetNumberOfPoints()));
+  }
+  output->GetPointData()->PassData(input->GetPointData());
+}
+
+void SMPToolsRunner::For(std::int64_t count, std::int64_t grain, const Work& work)
+{
+  RunnerFunctor functor{ work, {}, count <= grain };
+  std::string backend = vtkSMPTools::GetBackend();
+  if (backend == "Sequential" && !std::getenv("VTK_SMP_BACKEND_IN_USE"))
+  {
+    backend = "STDThread";
+  }
+  vtkSMPTools::LocalScope(vtkSMPTools::Config{ this->MaximumThreads, backend, false },
+    [&]() { vtkSMPTools::For(0, count, grain, functor); });
 }
 
 } // namespace pcurv

@@ -1,23 +1,27 @@
 /**
  * @file PrincipalCurvatureCloud.h
  * @brief The VTK side of the core's cloud (private to the module): reading a
- * vtkPointSet and its normals into pcurv::CloudPoints, and the collectives
- * of a parallel run implemented with vtkMultiProcessController.
+ * vtkPointSet and its normals into pcurv::CloudPoints, the collectives of a
+ * parallel run implemented with vtkMultiProcessController, and the core's
+ * work run on vtkSMPTools threads.
  */
 #ifndef PrincipalCurvatureCloud_h
 #define PrincipalCurvatureCloud_h
 
+#include "CloudEstimation.h"
 #include "CloudStatistics.h"
 
 class vtkDataArray;
 class vtkMultiProcessController;
 class vtkPointSet;
+class vtkPolyData;
 
 namespace pcurv
 {
 
 /// The input's points and normals (non-unit normals normalised; zero or
-/// non-finite ones become zero: such points are not estimated).
+/// non-finite ones become zero: such points are not estimated). Without
+/// normals (null) every normal is zero, for the core to estimate.
 CloudPoints ReadCloud(vtkPointSet* input, vtkDataArray* normals);
 
 /// The global controller's processes when ParaView runs in parallel (more
@@ -40,6 +44,28 @@ public:
 
 private:
   vtkMultiProcessController* Controller = nullptr;
+};
+
+/// The output's geometry: the input's points, its point data and, for a
+/// vtkPolyData with cells, its cells; otherwise one vertex cell per point,
+/// so that a cloud shows in a render view.
+void CopyGeometry(vtkPointSet* input, vtkPolyData* output);
+
+/// The core's work items on vtkSMPTools threads, each with its own scratch:
+/// all cores unless the user chose otherwise (ParaView's bundled VTK
+/// defaults to the sequential backend; STDThread is used then, unless a
+/// backend was requested through the environment).
+class SMPToolsRunner : public WorkRunner
+{
+public:
+  explicit SMPToolsRunner(int maximumThreads)
+    : MaximumThreads(maximumThreads)
+  {
+  }
+  void For(std::int64_t count, std::int64_t grain, const Work& work) override;
+
+private:
+  int MaximumThreads;
 };
 
 } // namespace pcurv

@@ -3,12 +3,9 @@
 #include "CloudEstimation.h"
 #include "PrincipalCurvatureCloud.h"
 
-#include "vtkCellArray.h"
-#include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkDataSetAttributes.h"
 #include "vtkDoubleArray.h"
-#include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkIntArray.h"
@@ -23,8 +20,11 @@
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
+#include <cctype>
+#include <cmath>
 #include <cstdlib>
 #include <string>
+#include <vector>
 
 vtkStandardNewMacro(vtkPrincipalCurvatureEstimation);
 
@@ -124,50 +124,13 @@ pcurv::EstimationSettings CoreSettings(vtkPrincipalCurvatureEstimation* self)
   std::copy_n(self->GetSwitchLengths(), 3, adjustment.SwitchLengths.begin());
   settings.MaximumSurroundingsFactor = self->GetMaximumSurroundingsFactor();
   settings.AdjustmentBlockLength = self->GetAdjustmentBlockLength();
+  settings.Normals.NumberOfNeighbors = self->GetNormalNeighbors();
+  settings.Normals.Orientation =
+    static_cast<pcurv::NormalOrientation>(self->GetNormalOrientation());
+  std::copy_n(self->GetViewpoint(), 3, settings.Normals.Viewpoint.begin());
+  std::copy_n(self->GetOrientationAxis(), 3, settings.Normals.Axis.begin());
   return settings;
 }
-
-/// The core's work items on vtkSMPTools threads, each with its own scratch.
-class SMPToolsRunner : public pcurv::WorkRunner
-{
-public:
-  explicit SMPToolsRunner(int maximumThreads)
-    : MaximumThreads(maximumThreads)
-  {
-  }
-
-  void For(std::int64_t count, std::int64_t grain, const Work& work) override
-  {
-    Functor functor{ work, {}, count <= grain };
-    // ParaView's bundled VTK defaults to the sequential SMP backend: all
-    // cores unless a backend was requested through the environment.
-    std::string backend = vtkSMPTools::GetBackend();
-    if (backend == "Sequential" && !std::getenv("VTK_SMP_BACKEND_IN_USE"))
-    {
-      backend = "STDThread";
-    }
-    vtkSMPTools::LocalScope(vtkSMPTools::Config{ this->MaximumThreads, backend, false },
-      [&]() { vtkSMPTools::For(0, count, grain, functor); });
-  }
-
-private:
-  struct Functor
-  {
-    const Work& Run;
-    vtkSMPThreadLocal<pcurv::EstimationScratch> Scratch;
-    /// With no more items than the grain, vtkSMPTools runs the functor in
-    /// the calling thread without a thread pool, and (VTK 9.2, STDThread)
-    /// GetSingleThread() then crashes: that one thread reports progress.
-    bool RunsInline;
-
-    void operator()(vtkIdType begin, vtkIdType end)
-    {
-      this->Run(
-        begin, end, this->Scratch.Local(), this->RunsInline || vtkSMPTools::GetSingleThread());
-    }
-  };
-  int MaximumThreads;
-};
 
 /// Progress to the filter, and its abort flag back to the core.
 class FilterProgress : public pcurv::ProgressMonitor
@@ -187,39 +150,6 @@ private:
   vtkAlgorithm* Filter;
 };
 
-/// One vertex cell per point, so that the output shows in a render view.
-vtkNew<vtkCellArray> MakeVertexCells(vtkIdType numberOfPoints)
-{
-  vtkNew<vtkIdTypeArray> offsets;
-  vtkNew<vtkIdTypeArray> connectivity;
-  offsets->SetNumberOfValues(numberOfPoints + 1);
-  connectivity->SetNumberOfValues(numberOfPoints);
-  for (vtkIdType i = 0; i < numberOfPoints; ++i)
-  {
-    offsets->SetValue(i, i);
-    connectivity->SetValue(i, i);
-  }
-  offsets->SetValue(numberOfPoints, numberOfPoints);
-  vtkNew<vtkCellArray> cells;
-  cells->SetData(offsets, connectivity);
-  return cells;
-}
-
-void CopyGeometry(vtkPointSet* input, vtkPolyData* output)
-{
-  vtkPolyData* inputPolyData = vtkPolyData::SafeDownCast(input);
-  if (inputPolyData && inputPolyData->GetNumberOfCells() > 0)
-  {
-    output->CopyStructure(inputPolyData);
-    output->GetCellData()->PassData(inputPolyData->GetCellData());
-  }
-  else
-  {
-    output->SetPoints(input->GetPoints());
-    output->SetVerts(MakeVertexCells(input->GetNumberOfPoints()));
-  }
-  output->GetPointData()->PassData(input->GetPointData());
-}
 } // namespace
 
 vtkPrincipalCurvatureEstimation::vtkPrincipalCurvatureEstimation()
@@ -242,6 +172,7 @@ vtkPrincipalCurvatureEstimation::vtkPrincipalCurvatureEstimation()
   std::copy_n(defaults.Adjustment.SwitchLengths.data(), 3, this->SwitchLengths);
   this->MaximumSurroundingsFactor = defaults.MaximumSurroundingsFactor;
   this->AdjustmentBlockLength = defaults.AdjustmentBlockLength;
+  this->NormalNeighbors = defaults.Normals.NumberOfNeighbors;
   // Default to the active normals, as vtkGlyph3D does, so that plain C++
   // users need not call SetInputArrayToProcess.
   this->SetInputArrayToProcess(
@@ -264,6 +195,7 @@ int vtkPrincipalCurvatureEstimation::RequestData(vtkInformation*,
   this->UsedPlaneDistanceThreshold = 0.0;
   this->UsedLengthUnit = 0.0;
   this->NumberOfUnestimatedPoints = 0;
+  this->UsedEstimatedNormals = false;
   if (!input || !output)
   {
     return 0;
@@ -274,26 +206,39 @@ int vtkPrincipalCurvatureEstimation::RequestData(vtkInformation*,
   const vtkIdType numberOfPoints = input->GetNumberOfPoints();
   if (numberOfPoints == 0 && !processes.IsDistributed())
   {
-    CopyGeometry(input, output);
+    pcurv::CopyGeometry(input, output);
     return 1;
   }
-  vtkDataArray* normals = this->GetInputArrayToProcess(0, inputVector);
-  if (!normals && this->NormalsNotChosen())
-  {
-    normals = input->GetPointData()->GetNormals(); // ParaView's "no selection"
-  }
-  const bool normalsUsable = numberOfPoints == 0 || this->CheckNormals(normals, numberOfPoints);
+  bool estimate = true;
+  vtkDataArray* normals =
+    numberOfPoints > 0 ? this->ChooseNormals(inputVector, input, estimate) : nullptr;
+  const bool normalsUsable =
+    numberOfPoints == 0 || estimate || (normals && this->CheckNormals(normals, numberOfPoints));
   if (!processes.Min(normalsUsable ? 1 : 0))
   {
     return 0;
   }
+  // Every process estimates, or none: a piece without points has no say.
+  this->UsedEstimatedNormals = !processes.Min(numberOfPoints == 0 || !estimate ? 1 : 0);
+  if (this->UsedEstimatedNormals)
+  {
+    normals = nullptr;
+  }
 
   CurvatureArrays arrays(numberOfPoints, this->DynamicAdjustment);
-  SMPToolsRunner runner(this->NumberOfThreads);
+  vtkSmartPointer<vtkDoubleArray> estimatedNormals;
+  if (this->UsedEstimatedNormals)
+  {
+    estimatedNormals = NewArray<vtkDoubleArray>("Normals", 3, numberOfPoints);
+    arrays.Buffers.Normals = estimatedNormals->GetPointer(0);
+  }
+  pcurv::SMPToolsRunner runner(this->NumberOfThreads);
   FilterProgress progress(this);
+  pcurv::EstimationSettings settings = CoreSettings(this);
+  settings.EstimateNormals = this->UsedEstimatedNormals;
   const pcurv::EstimationSummary summary = pcurv::EstimateCloud(
     numberOfPoints > 0 ? pcurv::ReadCloud(input, normals) : pcurv::CloudPoints{},
-    CoreSettings(this),
+    settings,
     processes,
     runner,
     &progress,
@@ -320,8 +265,12 @@ int vtkPrincipalCurvatureEstimation::RequestData(vtkInformation*,
                        "or a bad coordinate or normal); they have Curvature_Valid = 0 and NaN "
                        "curvatures.");
   }
-  CopyGeometry(input, output);
+  pcurv::CopyGeometry(input, output);
   arrays.AddTo(output->GetPointData());
+  if (estimatedNormals)
+  {
+    output->GetPointData()->SetNormals(estimatedNormals);
+  }
   return 1;
 }
 
@@ -355,27 +304,143 @@ void vtkPrincipalCurvatureEstimation::SetAdjustmentConstantsToPreset(int preset)
     this, pcurv::AdjustmentConstants(static_cast<pcurv::AdjustmentPreset>(preset)));
 }
 
-bool vtkPrincipalCurvatureEstimation::NormalsNotChosen()
+namespace
 {
-  vtkInformation* chosen = this->GetInputArrayInformation(0);
-  return chosen && chosen->Has(vtkDataObject::FIELD_NAME()) &&
-    std::string(chosen->Get(vtkDataObject::FIELD_NAME())).empty();
+/// The array is meant as normals: the normals attribute, or a name that
+/// says so ("Normals", "normal", "Normals_PCA"...). Colours, RGB or any other
+/// 3-component array are not.
+bool NamedLikeNormals(vtkDataArray* array, vtkPointSet* input)
+{
+  if (!array)
+  {
+    return false;
+  }
+  if (array == input->GetPointData()->GetNormals())
+  {
+    return true;
+  }
+  std::string name = array->GetName() ? array->GetName() : "";
+  std::transform(
+    name.begin(), name.end(), name.begin(), [](unsigned char c) { return std::tolower(c); });
+  return name.find("normal") != std::string::npos;
+}
+
+/// Why `normals` (3 components) cannot be normals, or empty: an integer
+/// type (colours), all zero, or lengths that vary like colours do (normals
+/// scaled alike, even by 1e-170, are fine: they are normalised).
+std::string NotNormalsReason(vtkDataArray* normals)
+{
+  if (normals->GetDataType() != VTK_FLOAT && normals->GetDataType() != VTK_DOUBLE)
+  {
+    return std::string("is of type ") + normals->GetDataTypeAsString() +
+      ", as colours are; normals are floating-point";
+  }
+  const vtkIdType count = normals->GetNumberOfTuples();
+  const vtkIdType stride = std::max<vtkIdType>(1, count / 4096);
+  std::vector<double> lengths;
+  for (vtkIdType i = 0; i < count; i += stride)
+  {
+    double n[3];
+    normals->GetTuple(i, n);
+    // Scaled by the largest component first: lengths of 1e-170 do not
+    // underflow, nor 1e170 overflow.
+    const double largest = std::max({ std::fabs(n[0]), std::fabs(n[1]), std::fabs(n[2]) });
+    const double length =
+      largest > 0.0 ? largest * std::hypot(n[0] / largest, n[1] / largest, n[2] / largest) : 0.0;
+    if (length > 0.0 && std::isfinite(length))
+    {
+      lengths.push_back(length);
+    }
+  }
+  if (lengths.empty())
+  {
+    return "has no non-zero finite vector (all normals zero)";
+  }
+  std::sort(lengths.begin(), lengths.end());
+  const double low = lengths[lengths.size() / 10], high = lengths[lengths.size() * 9 / 10];
+  const double median = lengths[lengths.size() / 2];
+  if (high > 2.0 * low && (median < 0.5 || median > 2.0))
+  {
+    return "has lengths from " + std::to_string(low) + " to " + std::to_string(high) +
+      " (10th to 90th percentile), as colours or other data have; normals have one length";
+  }
+  return "";
+}
+} // namespace
+
+vtkDataArray* vtkPrincipalCurvatureEstimation::ChooseNormals(vtkInformationVector** inputVector,
+  vtkPointSet* input,
+  bool& estimate)
+{
+  estimate = false;
+  if (this->NormalsSource == ESTIMATED_NORMALS)
+  {
+    estimate = true;
+    return nullptr;
+  }
+  vtkDataArray* chosen = this->GetInputArrayToProcess(0, inputVector);
+  vtkInformation* request = this->GetInputArrayInformation(0);
+  const bool byName = request && request->Has(vtkDataObject::FIELD_NAME()) &&
+    !std::string(request->Get(vtkDataObject::FIELD_NAME())).empty();
+  if (!chosen && byName && this->NormalsSource == AUTOMATIC_NORMALS &&
+    input->GetPointData()->GetNumberOfArrays() > 0)
+  {
+    vtkWarningMacro("No point-data array named '" << request->Get(vtkDataObject::FIELD_NAME())
+                                                  << "'; the normals attribute is used, or normals "
+                                                     "are estimated.");
+  }
+  if (!chosen && (!byName || this->NormalsSource == AUTOMATIC_NORMALS))
+  {
+    // The attribute; also for ParaView's "no selection" (an empty name, or
+    // "0" when the input has no 3-component array at all).
+    chosen = input->GetPointData()->GetNormals();
+  }
+  if (chosen || this->NormalsSource == INPUT_NORMALS)
+  {
+    // ParaView's default choice is the first 3-component array, such as a
+    // PLY's RGB: in automatic mode such an array is not taken for normals.
+    if (chosen && this->NormalsSource == AUTOMATIC_NORMALS && !NamedLikeNormals(chosen, input) &&
+      chosen->GetNumberOfComponents() == 3)
+    {
+      const std::string reason = NotNormalsReason(chosen);
+      if (!reason.empty())
+      {
+        vtkWarningMacro("The array '" << (chosen->GetName() ? chosen->GetName() : "") << "' "
+                                      << reason << "; normals were estimated instead.");
+        estimate = true;
+        return nullptr;
+      }
+    }
+    if (!chosen)
+    {
+      vtkErrorMacro("No normals: the input needs a 3-component point-data normals array (the "
+                    "active normals, or one chosen with SetInputArrayToProcess), or set "
+                    "NormalsSource to estimate them (Normals Source 'Estimated' in ParaView, "
+                    "--estimate-normals in the command-line tool).");
+    }
+    return chosen;
+  }
+  estimate = true; // automatic, and the input has no normals
+  return nullptr;
 }
 
 bool vtkPrincipalCurvatureEstimation::CheckNormals(vtkDataArray* normals, vtkIdType numberOfPoints)
 {
-  if (!normals)
-  {
-    vtkErrorMacro("No normals: the input needs a 3-component point-data normals array "
-                  "(the active normals, or one chosen with SetInputArrayToProcess).");
-    return false;
-  }
+  const std::string name = normals->GetName() ? normals->GetName() : "";
   if (normals->GetNumberOfComponents() != 3 || normals->GetNumberOfTuples() != numberOfPoints)
   {
-    vtkErrorMacro("The normals array '" << (normals->GetName() ? normals->GetName() : "")
-                                        << "' has " << normals->GetNumberOfComponents()
+    vtkErrorMacro("The normals array '" << name << "' has " << normals->GetNumberOfComponents()
                                         << " components and " << normals->GetNumberOfTuples()
                                         << " tuples; 3 components per point are required.");
+    return false;
+  }
+  const std::string reason = NotNormalsReason(normals);
+  if (!reason.empty())
+  {
+    vtkErrorMacro("The array '" << name << "' chosen as normals " << reason
+                                << ". To estimate normals instead, set NormalsSource to "
+                                   "Estimated (Normals Source in ParaView, --estimate-normals "
+                                   "in the command-line tool).");
     return false;
   }
   return true;
@@ -405,6 +470,14 @@ void vtkPrincipalCurvatureEstimation::PrintSelf(ostream& os, vtkIndent indent)
      << " " << this->SwitchLengths[2] << "\n";
   os << indent << "MaximumSurroundingsFactor: " << this->MaximumSurroundingsFactor << "\n";
   os << indent << "AdjustmentBlockLength: " << this->AdjustmentBlockLength << "\n";
+  os << indent << "NormalsSource: " << this->NormalsSource << "\n";
+  os << indent << "NormalOrientation: " << this->NormalOrientation << "\n";
+  os << indent << "Viewpoint: " << this->Viewpoint[0] << " " << this->Viewpoint[1] << " "
+     << this->Viewpoint[2] << "\n";
+  os << indent << "OrientationAxis: " << this->OrientationAxis[0] << " " << this->OrientationAxis[1]
+     << " " << this->OrientationAxis[2] << "\n";
+  os << indent << "NormalNeighbors: " << this->NormalNeighbors << "\n";
+  os << indent << "UsedEstimatedNormals: " << this->UsedEstimatedNormals << "\n";
   os << indent << "UsedLengthUnit: " << this->UsedLengthUnit << "\n";
   os << indent << "UsedSurroundingsThreshold: " << this->UsedSurroundingsThreshold << "\n";
   os << indent << "UsedPlaneDistanceThreshold: " << this->UsedPlaneDistanceThreshold << "\n";

@@ -57,6 +57,7 @@
 #include "vtkPrincipalCurvatureFiltersModule.h" // for export macro
 
 class vtkDataArray;
+class vtkPointSet;
 
 class VTKPRINCIPALCURVATUREFILTERS_EXPORT vtkPrincipalCurvatureEstimation
   : public vtkPolyDataAlgorithm
@@ -65,6 +66,24 @@ public:
   static vtkPrincipalCurvatureEstimation* New();
   vtkTypeMacro(vtkPrincipalCurvatureEstimation, vtkPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /// Where the normals come from.
+  enum NormalsSources
+  {
+    /// The input's normals when it has real ones (the normals attribute, or
+    /// the chosen array when its name says normals), estimated otherwise.
+    AUTOMATIC_NORMALS = 0,
+    INPUT_NORMALS = 1,    ///< the chosen array (or the normals attribute); an error without
+    ESTIMATED_NORMALS = 2 ///< always estimated (PCA, oriented), whatever the input has
+  };
+
+  /// How estimated normals are oriented.
+  enum NormalOrientations
+  {
+    OUTWARD = 0,           ///< away from each connected part's inside (up where undecided)
+    TOWARDS_VIEWPOINT = 1, ///< towards Viewpoint, point by point
+    ALONG_AXIS = 2         ///< a positive component along OrientationAxis, point by point
+  };
 
   /// The osculating-circle fits of the paper.
   enum FitModes
@@ -276,6 +295,34 @@ public:
 
   ///@{
   /**
+   * Where the normals come from (default AUTOMATIC_NORMALS: real input
+   * normals when there are some, estimated otherwise). A chosen array that
+   * is not normals (an integer type such as RGB colours, all zero, or
+   * lengths that vary like colours do) is an error that says how to
+   * estimate normals instead. Estimated normals are fitted by PCA to the
+   * NormalNeighbors nearest points, oriented consistently over a minimum
+   * spanning tree, signed by NormalOrientation, and written to the output
+   * as the "Normals" array (the active normals).
+   */
+  vtkSetClampMacro(NormalsSource, int, AUTOMATIC_NORMALS, ESTIMATED_NORMALS);
+  vtkGetMacro(NormalsSource, int);
+  void SetNormalsSourceToAutomatic() { this->SetNormalsSource(AUTOMATIC_NORMALS); }
+  void SetNormalsSourceToInput() { this->SetNormalsSource(INPUT_NORMALS); }
+  void SetNormalsSourceToEstimated() { this->SetNormalsSource(ESTIMATED_NORMALS); }
+  vtkSetClampMacro(NormalOrientation, int, OUTWARD, ALONG_AXIS);
+  vtkGetMacro(NormalOrientation, int);
+  vtkSetVector3Macro(Viewpoint, double);
+  vtkGetVector3Macro(Viewpoint, double);
+  vtkSetVector3Macro(OrientationAxis, double);
+  vtkGetVector3Macro(OrientationAxis, double);
+  vtkSetClampMacro(NormalNeighbors, int, 3, 100000);
+  vtkGetMacro(NormalNeighbors, int);
+  /// True when the last execution estimated the normals.
+  vtkGetMacro(UsedEstimatedNormals, bool);
+  ///@}
+
+  ///@{
+  /**
    * What the last execution used and found: the surroundings-threshold and
    * plane-distance-threshold in RADIUS mode (0 in K_NEAREST mode, where they
    * vary per point), the length unit L of the dynamic adjustment, and the
@@ -292,11 +339,14 @@ protected:
   ~vtkPrincipalCurvatureEstimation() override = default;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
-  /// True when the normals were chosen by an empty name (ParaView's
-  /// property before its array list is filled): the active normals are used.
-  bool NormalsNotChosen();
-  /// One error (and false) unless `normals` has 3 components per point.
+  /// One error (and false) unless `normals` has 3 components per point
+  /// and looks like normals (see SetNormalsSource).
   bool CheckNormals(vtkDataArray* normals, vtkIdType numberOfPoints);
+  /// The input normals to use; null with `estimate` set to estimate them,
+  /// or null after an error.
+  vtkDataArray* ChooseNormals(vtkInformationVector** inputVector,
+    vtkPointSet* input,
+    bool& estimate);
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   // Defaults: pcurv::EstimationSettings (Filters/Core/CloudEstimation.h),
@@ -319,6 +369,12 @@ protected:
   double SwitchLengths[3];
   double MaximumSurroundingsFactor;
   double AdjustmentBlockLength;
+  int NormalsSource = AUTOMATIC_NORMALS;
+  int NormalOrientation = OUTWARD;
+  double Viewpoint[3] = { 0.0, 0.0, 0.0 };
+  double OrientationAxis[3] = { 0.0, 0.0, 1.0 };
+  int NormalNeighbors;
+  bool UsedEstimatedNormals = false;
 
   double UsedLengthUnit = 0.0;
   double UsedSurroundingsThreshold = 0.0;

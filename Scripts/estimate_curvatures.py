@@ -2,7 +2,7 @@
 
 Run with ParaView's Python:
 
-    pvpython Scripts/estimate_curvatures.py INPUT OUTPUT.vtp
+    pvpython Scripts/estimate_curvatures.py INPUT OUTPUT(.vtp|.ply|.csv)
         [--fit-mode Previous|New01|New02] [--neighbors N] [--k-nearest]
         [--radius S [--plane-distance P]]
         [--dynamic-adjustment [paper|ladder|noisy-ladder]]
@@ -14,16 +14,25 @@ INPUT may be:
                   array (or scalar arrays nx ny nz, combined into one);
   .ply            PLY, normals as the vertex properties nx ny nz (or
                   normal_x normal_y normal_z);
-  .xyz .pwn .txt .csv
-                  text, one point per line: x y z nx ny nz, separated by
-                  white space or commas; '#' starts a comment; an optional
-                  first line of column names (x, y, z, nx, ny, nz or
-                  normal_x, ...) picks the columns;
+  .xyz .pwn .txt .pts .csv
+                  text, one point per line: x y z nx ny nz [more columns],
+                  separated by white space, commas or semicolons; '#' or '//'
+                  starts a comment; a first line holding only the point
+                  count (PTS) is skipped; an optional first line of column
+                  names (x, y, z, nx, ny, nz or normal_x, ...) picks the
+                  columns. Read by the plugin's Point Cloud Text Reader
+                  (vtkTextPointCloudReader: its class documentation has the
+                  rules for colours and further columns);
   .off            a triangle mesh: its vertices, with normals computed from
                   the triangles and turned outwards.
 
-Writes OUTPUT (.vtp, VTK XML inline binary) with the curvature arrays and
-prints a summary: point counts, the thresholds used, percentiles of the
+Writes OUTPUT with the input's arrays and the curvature arrays, in the
+format of its extension: .vtp (VTK XML, inline binary); .ply (binary little
+endian: x y z, nx ny nz, red green blue for an RGB array, every scalar array
+as a float or double property of its name and every vector array as
+<name>_x <name>_y <name>_z, which CloudCompare and MeshLab read as scalar
+fields); .csv (a header line of the same column names, one row per point).
+It prints a summary: point counts, the thresholds used, percentiles of the
 curvatures over the estimated points, and the time the filter took.
 
 The plugin is loaded from --plugin, else $PRINCIPAL_CURVATURES_PLUGIN, else
@@ -42,8 +51,9 @@ from paraview import servermanager, simple
 REPOSITORY = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 DEFAULT_PLUGIN = os.path.join(
     REPOSITORY, "build", "lib", "paraview-plugins", "PrincipalCurvatures", "PrincipalCurvatures.so")
-TEXT_EXTENSIONS = (".xyz", ".pwn", ".txt", ".csv")
+TEXT_EXTENSIONS = (".xyz", ".pwn", ".txt", ".pts", ".csv")
 INPUT_EXTENSIONS = (".vtp", ".vtu", ".ply", ".off") + TEXT_EXTENSIONS
+OUTPUT_EXTENSIONS = (".vtp", ".ply", ".csv")
 FIT_MODES = ("Previous", "New01", "New02")
 
 # Names of normal components stored as separate scalars (matched ignoring case).
@@ -68,7 +78,7 @@ def parse_arguments(argv):
         prog="pvpython estimate_curvatures.py", description=__doc__.split("\n\n")[0],
         epilog="\n\n".join(__doc__.split("\n\n")[3:]), formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("input", help="point cloud with normals (%s)" % " ".join(INPUT_EXTENSIONS))
-    parser.add_argument("output", help="result (.vtp)")
+    parser.add_argument("output", help="result (%s, by the extension)" % " ".join(OUTPUT_EXTENSIONS))
     parser.add_argument("--fit-mode", choices=FIT_MODES, default="New01",
                         help="circle fit per direction (default: New01)")
     parser.add_argument("--neighbors", type=int, metavar="N",
@@ -103,8 +113,8 @@ def parse_arguments(argv):
         parser.error("--dynamic-adjustment replaces --neighbors, --k-nearest and --radius")
     if arguments.threads < 0:
         parser.error("--threads must be 0 (all cores) or positive")
-    if os.path.splitext(arguments.output)[1].lower() != ".vtp":
-        parser.error("OUTPUT must be a .vtp file (got %s)" % arguments.output)
+    if os.path.splitext(arguments.output)[1].lower() not in OUTPUT_EXTENSIONS:
+        parser.error("OUTPUT must be a %s file (got %s)" % ("/".join(OUTPUT_EXTENSIONS), arguments.output))
     return arguments
 
 
@@ -168,40 +178,11 @@ def normal_columns(names):
     return position, None
 
 
-def is_number(word):
-    try:
-        float(word)
-        return True
-    except ValueError:
-        return False
-
-
 def read_text_cloud(path):
-    """A source holding the points of a text file: x y z nx ny nz per line,
-    white space or comma separated, with an optional header line of names."""
-    import numpy
-
-    with open(path) as handle:
-        lines = [line.split("#")[0].replace(",", " ").replace(";", " ") for line in handle]
-    first = next((i for i, line in enumerate(lines) if line.strip()), None)
-    if first is None:
-        fail("%s: no points (expected 'x y z nx ny nz' per line)" % path)
-    columns = [0, 1, 2], [3, 4, 5]
-    words = lines[first].split()
-    if not is_number(words[0]):  # a header line
-        columns = normal_columns(words)
-        if None in columns[0] or columns[1] is None:
-            fail("%s: the header names no x, y, z, nx, ny, nz columns (%s)" % (path, " ".join(words)))
-        lines = lines[first + 1:]
-    if not any(line.strip() for line in lines):
-        fail("%s: no points (expected 'x y z nx ny nz' per line)" % path)
-    try:
-        values = numpy.loadtxt(lines, dtype=numpy.float64, ndmin=2)
-    except ValueError as error:
-        fail("%s: not 'x y z nx ny nz' per line: %s" % (path, str(error).split(";")[0]))
-    if values.shape[1] <= max(columns[0] + columns[1]):
-        fail("%s: no normals: %d columns, expected x y z nx ny nz" % (path, values.shape[1]))
-    return producer_of(polydata_cloud(values[:, columns[0]], values[:, columns[1]]))
+    """A source reading a text cloud (x y z nx ny nz ... per line) with the
+    plugin's Point Cloud Text Reader (vtkTextPointCloudReader); it reports
+    a bad line with its number and then gives no points."""
+    return simple.PointCloudTextReader(FileName=path)
 
 
 PLY_TYPES = {"char": "i1", "int8": "i1", "uchar": "u1", "uint8": "u1", "short": "i2", "int16": "i2",
@@ -368,7 +349,7 @@ def open_cloud(path):
         fail("unknown input type '%s' of %s (use %s)" % (extension, path, " ".join(INPUT_EXTENSIONS)))
     source.UpdatePipeline()  # fills the array lists the filter's Normals domain reads
     if source.GetDataInformation().GetNumberOfPoints() == 0:
-        fail("%s: no points (unreadable or empty file)" % path)
+        fail("%s: no points (unreadable or empty file; see the messages above)" % path)
     if extension == ".ply" and not has_normals(source):
         source = read_ply_with_named_normals(path) or source
         source.UpdatePipeline()
@@ -503,6 +484,137 @@ def summarize(output, seconds, description):
             numpy.abs(array("Maximum_Curvature")[valid] - exact_max[valid]).mean() / scale))
 
 
+# ---------------------------------------------------------------------------
+# Writing results
+
+
+def write_vtp(curvatures, path):
+    """The filter's output as VTK XML polydata."""
+    # Inline binary, not the default appended data: ParaView 5.11 with a
+    # current Debian 12 libexpat (2.5.0-1+deb12u2 and later) cannot read
+    # appended data (VTK issue 19258).
+    written = time.time()
+    writer = simple.XMLPolyDataWriter(Input=curvatures, FileName=path, DataMode="Binary")
+    writer.UpdatePipeline()  # the writer reports failures only as VTK errors: check the file
+    if not os.path.isfile(path) or os.path.getmtime(path) < written - 1.0:
+        fail("could not write %s (see the messages above)" % path)
+
+
+def column_name(name, used):
+    """name as a PLY property and CSV column name: printable ASCII without
+    white space, commas or quotes, and not one of the names in used."""
+    import re
+
+    name = re.sub(r"[^!-~]|[,\"']", "_", name) or "Array"
+    unique, suffix = name, 2
+    while unique in used:
+        unique, suffix = "%s_%d" % (name, suffix), suffix + 1
+    used.add(unique)
+    return unique
+
+
+def output_columns(cloud, normals):
+    """The cloud as columns (name, values, PLY type) for PLY and CSV: x y z;
+    nx ny nz from the normals array; red green blue (uchar) from a
+    3-component unsigned char array named RGB; every other array with one
+    component under its name, with 3 as <name>_x <name>_y <name>_z, with
+    other counts as <name>_0, <name>_1, ...: float if stored as float, else
+    double. Non-numeric arrays are left out."""
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    from vtkmodules.vtkCommonCore import VTK_FLOAT, VTK_UNSIGNED_CHAR
+
+    used = set()
+    points = vtk_to_numpy(cloud.GetPoints().GetData()).reshape(-1, 3)
+    point_type = "float" if cloud.GetPoints().GetDataType() == VTK_FLOAT else "double"
+    columns = [(column_name(axis, used), points[:, i], point_type) for i, axis in enumerate("xyz")]
+    data = cloud.GetPointData()
+    normal_array = data.GetArray(normals) if normals else None
+    if normal_array is not None and normal_array.GetNumberOfComponents() == 3:
+        values = vtk_to_numpy(normal_array).reshape(-1, 3)
+        kind = "float" if normal_array.GetDataType() == VTK_FLOAT else "double"
+        columns += [(column_name(axis, used), values[:, i], kind) for i, axis in enumerate(("nx", "ny", "nz"))]
+    else:
+        normals = None
+    for index in range(data.GetNumberOfArrays()):
+        array = data.GetArray(index)  # None for string arrays
+        if array is None or (normals and array.GetName() == normals):
+            continue
+        name = array.GetName() or "Array_%d" % index
+        values = vtk_to_numpy(array)
+        count = array.GetNumberOfComponents()
+        kind = "float" if array.GetDataType() == VTK_FLOAT else "double"
+        if count == 3 and name == "RGB" and array.GetDataType() == VTK_UNSIGNED_CHAR:
+            columns += [(column_name(c, used), values[:, i], "uchar") for i, c in enumerate(("red", "green", "blue"))]
+        elif count == 1:
+            columns.append((column_name(name, used), values.reshape(-1), kind))
+        else:
+            values = values.reshape(-1, count)
+            suffixes = ("x", "y", "z") if count == 3 else [str(i) for i in range(count)]
+            columns += [(column_name("%s_%s" % (name, suffix), used), values[:, i], kind)
+                        for i, suffix in enumerate(suffixes)]
+    return columns
+
+
+NUMPY_OF_PLY = {"uchar": "u1", "float": "<f4", "double": "<f8"}
+
+
+def column_records(columns):
+    """The columns as one numpy record array."""
+    import numpy
+
+    records = numpy.empty(len(columns[0][1]), dtype=[(name, NUMPY_OF_PLY[kind]) for name, _, kind in columns])
+    for name, values, _ in columns:
+        records[name] = values
+    return records
+
+
+def write_ply(cloud, normals, path):
+    """The points and their arrays as a binary little-endian PLY vertex
+    element (no faces), one property per column."""
+    columns = output_columns(cloud, normals)
+    header = ["ply", "format binary_little_endian 1.0",
+              "comment principal curvatures by Scripts/estimate_curvatures.py",
+              "element vertex %d" % cloud.GetNumberOfPoints()]
+    header += ["property %s %s" % (kind, name) for name, _, kind in columns]
+    header.append("end_header")
+    with open(path, "wb") as handle:
+        handle.write(("\n".join(header) + "\n").encode("ascii"))
+        handle.write(column_records(columns).tobytes())
+
+
+def write_csv(cloud, normals, path):
+    """The points and their arrays as comma-separated text: a header line of
+    the column names, one row per point (round-trip precision, integers
+    without a fraction)."""
+    import numpy
+
+    columns = output_columns(cloud, normals)
+    formats = []
+    for _, values, kind in columns:
+        if kind == "uchar" or (values.dtype.kind in "iub"):
+            formats.append("%d")
+        else:
+            formats.append("%.9g" if kind == "float" else "%.17g")
+    numpy.savetxt(path, column_records(columns), fmt=formats, delimiter=",",
+                  header=",".join(name for name, _, _ in columns), comments="")
+
+
+def write_output(curvatures, result, normals, path):
+    """Writes the filter's output (result, fetched) in the format of path's
+    extension (.vtp, .ply, .csv); exits with a message if that fails."""
+    extension = os.path.splitext(path)[1].lower()
+    if extension == ".vtp":
+        write_vtp(curvatures, path)
+        return
+    try:
+        if extension == ".ply":
+            write_ply(result, normals, path)
+        else:
+            write_csv(result, normals, path)
+    except (OSError, ValueError) as error:
+        fail("could not write %s: %s" % (path, error))
+
+
 def main(argv):
     arguments = parse_arguments(argv)
     output_folder = os.path.dirname(os.path.abspath(arguments.output))
@@ -522,14 +634,7 @@ def main(argv):
     result = servermanager.Fetch(curvatures)
     if result is None or result.GetPointData().GetArray("Curvature_Valid") is None:
         fail("the filter produced no curvatures (see the messages above)")
-    # Inline binary, not the default appended data: ParaView 5.11 with a
-    # current Debian 12 libexpat (2.5.0-1+deb12u2 and later) cannot read
-    # appended data (VTK issue 19258).
-    written = time.time()
-    writer = simple.XMLPolyDataWriter(Input=curvatures, FileName=arguments.output, DataMode="Binary")
-    writer.UpdatePipeline()  # the writer reports failures only as VTK errors: check the file
-    if not os.path.isfile(arguments.output) or os.path.getmtime(arguments.output) < written - 1.0:
-        fail("could not write %s (see the messages above)" % arguments.output)
+    write_output(curvatures, result, normals, arguments.output)
 
     summarize(result, seconds, [
         ("input", arguments.input),

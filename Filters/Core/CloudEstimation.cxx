@@ -517,6 +517,66 @@ void SummarizeThresholds(const NeighborhoodRule& rule,
 }
 } // namespace
 
+namespace
+{
+/// Replaces the normals of the own points of `cloud` by estimated ones
+/// (writing them to out.Normals too). Distributed, every process estimates
+/// the whole cloud, gathered, and keeps its own part: the grid's order, not
+/// the split, decides the result.
+NormalSummary ReplaceNormals(CloudPoints& cloud,
+  const NormalSettings& settings,
+  const Collectives& processes,
+  WorkRunner& runner,
+  double* out)
+{
+  CloudPoints whole;
+  std::int64_t first = 0;
+  if (processes.IsDistributed())
+  {
+    std::vector<std::int64_t> lengths;
+    whole.Coordinates = processes.Gather(std::vector<double>(cloud.Coordinates.begin(),
+                                           cloud.Coordinates.begin() + 3 * cloud.NumberOfOwnPoints),
+      &lengths);
+    whole.NumberOfOwnPoints = static_cast<std::int64_t>(whole.Coordinates.size() / 3);
+    for (int p = 0; p < processes.GetLocalProcessId(); ++p)
+    {
+      first += lengths[p] / 3;
+    }
+  }
+  std::vector<double> normals;
+  const NormalSummary summary =
+    EstimateNormals(processes.IsDistributed() ? whole : cloud, settings, runner, normals);
+  cloud.DropHalo();
+  std::copy_n(normals.begin() + 3 * first, 3 * cloud.NumberOfOwnPoints, cloud.Normals.begin());
+  if (out)
+  {
+    std::fill_n(out, 3 * cloud.GetNumberOfInputPoints(), 0.0);
+    for (std::int64_t i = 0; i < cloud.NumberOfOwnPoints; ++i)
+    {
+      std::copy_n(&cloud.Normals[3 * i], 3, out + 3 * cloud.InputIds[i]);
+    }
+  }
+  return summary;
+}
+
+} // namespace
+
+NormalSummary EstimateCloudNormals(CloudPoints cloud,
+  const NormalSettings& settings,
+  const Collectives& processes,
+  WorkRunner& runner,
+  double* out)
+{
+  const double scale = WorkingLengthScale(cloud, processes);
+  cloud.ScaleCoordinates(scale);
+  NormalSettings scaled = settings;
+  for (double& c : scaled.Viewpoint)
+  {
+    c *= scale;
+  }
+  return ReplaceNormals(cloud, scaled, processes, runner, out);
+}
+
 void SerialRunner::For(std::int64_t count, std::int64_t, const Work& work)
 {
   EstimationScratch scratch;
@@ -533,6 +593,15 @@ EstimationSummary EstimateCloud(CloudPoints cloud,
   EstimationSummary summary;
   const WorkingUnit unit{ WorkingLengthScale(cloud, processes) };
   cloud.ScaleCoordinates(unit.Scale);
+  if (settings.EstimateNormals)
+  {
+    NormalSettings normals = settings.Normals;
+    for (double& c : normals.Viewpoint)
+    {
+      c *= unit.Scale;
+    }
+    summary.Normals = ReplaceNormals(cloud, normals, processes, runner, out.Normals);
+  }
   const CloudBoxes boxes = MeasureBoxes(cloud, processes);
   NeighborhoodRule rule = ChooseThresholds(settings, cloud, processes, boxes, unit, summary);
   SummarizeThresholds(rule, unit, summary);

@@ -18,12 +18,14 @@
 
 #include "CloudStatistics.h"
 #include "DynamicAdjustment.h"
+#include "NormalEstimation.h"
 #include "PointGrid.h"
 #include "PrincipalCurvatureCore.h"
 
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <utility>
 #include <vector>
 
 namespace pcurv
@@ -64,6 +66,11 @@ struct EstimationSettings
   double MaximumSurroundingsFactor = 4.0;
   /// Side of an adjustment block, in units of L.
   double AdjustmentBlockLength = 8.0;
+
+  /// Estimate the normals (NormalEstimation.h) instead of using the
+  /// cloud's; they are written to CurvatureBuffers::Normals.
+  bool EstimateNormals = false;
+  NormalSettings Normals;
 };
 
 /// Where the results go: one value (or 3 for directions) per input point.
@@ -83,6 +90,9 @@ struct CurvatureBuffers
   int* NeighborCount = nullptr;
   int* ValidDirections = nullptr;
   int* TargetCount = nullptr;
+  /// With EstimateNormals only (may be null): the normals estimated, 3 per
+  /// input point (zero where undetermined or the coordinates not finite).
+  double* Normals = nullptr;
 };
 
 /// What an estimation chose and found, lengths in the input's unit.
@@ -97,6 +107,9 @@ struct EstimationSummary
   /// The adjustment's target counts as used: within [1, 1e6] (NaN: 1).
   std::array<double, 3> TargetNeighborCounts{ { 0.0, 0.0, 0.0 } };
   bool TargetCountsClamped = false;
+  /// With EstimateNormals: connected parts oriented, and points whose
+  /// normal could not be determined.
+  NormalSummary Normals;
   /// The caller asked to stop: the buffers are incomplete.
   bool Aborted = false;
 };
@@ -108,6 +121,7 @@ struct EstimationScratch
   DynamicAdjustment Adjustment;
   std::vector<double> Distances;
   NeighborOffsets Neighbors;
+  std::vector<std::pair<double, std::int64_t>> Ranked;
 };
 
 /// Told how far the work is, from one thread; returns false to stop.
@@ -149,6 +163,15 @@ EstimationSummary EstimateCloud(CloudPoints cloud,
   WorkRunner& runner,
   ProgressMonitor* monitor,
   const CurvatureBuffers& out);
+
+/// The normals of every input point of `cloud` alone (NormalEstimation.h),
+/// written to `out` (3 per input point, zero where undetermined or the
+/// coordinates are not finite); the same for any runner or split.
+NormalSummary EstimateCloudNormals(CloudPoints cloud,
+  const NormalSettings& settings,
+  const Collectives& processes,
+  WorkRunner& runner,
+  double* out);
 
 } // namespace pcurv
 

@@ -10,6 +10,7 @@
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
+#include "vtkUnsignedCharArray.h"
 
 #include <array>
 #include <cmath>
@@ -29,11 +30,68 @@ void TestConfigurationErrors(Checks& checks)
     Row(row);
     vtkNew<vtkPolyData> bare;
     bare->SetPoints(cloud->GetPoints());
-    const Outcome o = Run(bare);
-    checks.True(Label(row, "an error").c_str(), o.Errors >= 1);
-    checks.True(Label(row, "the error says what is missing").c_str(),
-      o.Saw("No normals: the input needs a 3-component point-data normals array"));
+    const Outcome o =
+      Run(bare, [](vtkPrincipalCurvatureEstimation* f) { f->SetNormalsSourceToInput(); });
+    checks.True(Label(row, "with NormalsSource Input: an error").c_str(), o.Errors >= 1);
+    checks.True(Label(row, "the error says what is missing and how to estimate").c_str(),
+      o.Saw("No normals: the input needs a 3-component point-data normals array") &&
+        o.Saw("NormalsSource"));
     checks.Equal(Label(row, "no warning").c_str(), o.Warnings, 0);
+    checks.Equal(Label(row, "empty output").c_str(), o.Points(), 0);
+    const Outcome automatic = Run(bare);
+    checks.Equal(Label(row, "by default: no error").c_str(), automatic.Errors, 0);
+    checks.True(Label(row, "by default: normals estimated, 90 % of the points estimated").c_str(),
+      automatic.Unestimated <= bare->GetNumberOfPoints() / 10);
+    checks.True(Label(row, "by default: the estimated normals are the output's Normals").c_str(),
+      automatic.Output->GetPointData()->GetNormals() &&
+        automatic.Output->GetPointData()->GetNormals()->GetNumberOfTuples() ==
+          bare->GetNumberOfPoints());
+  }
+  {
+    // A PLY's colours: ParaView offers the first 3-component array as the
+    // normals, and RGB was taken for normals (5 % of the points estimated,
+    // all nonsense).
+    const std::string row = "colours (unsigned char RGB) chosen as normals";
+    Row(row);
+    auto input = PointsOnly(cloud);
+    input->GetPointData()->SetActiveNormals(nullptr);
+    input->GetPointData()->RemoveArray("Normals");
+    vtkNew<vtkUnsignedCharArray> rgb;
+    rgb->SetName("RGB");
+    rgb->SetNumberOfComponents(3);
+    rgb->SetNumberOfTuples(input->GetNumberOfPoints());
+    for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
+    {
+      rgb->SetTuple3(i, (7 * i) % 256, (13 * i) % 256, (29 * i) % 256);
+    }
+    input->GetPointData()->AddArray(rgb);
+    auto chooseRgb = [](vtkPrincipalCurvatureEstimation* f)
+    { f->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "RGB"); };
+    const Outcome automatic = Run(input, chooseRgb);
+    checks.Equal(Label(row, "by default: no error").c_str(), automatic.Errors, 0);
+    checks.True(Label(row, "by default: a warning says normals were estimated instead").c_str(),
+      automatic.Saw("'RGB'") && automatic.Saw("normals were estimated instead"));
+    checks.True(Label(row, "by default: 90 % of the points estimated").c_str(),
+      automatic.Unestimated <= input->GetNumberOfPoints() / 10);
+    const Outcome strict = Run(input,
+      [&](vtkPrincipalCurvatureEstimation* f)
+      {
+        chooseRgb(f);
+        f->SetNormalsSourceToInput();
+      });
+    checks.True(Label(row, "as input normals: an error naming the array and the way out").c_str(),
+      strict.Errors >= 1 && strict.Saw("'RGB'") && strict.Saw("unsigned char") &&
+        strict.Saw("To estimate normals instead"));
+    checks.Equal(Label(row, "as input normals: empty output").c_str(), strict.Points(), 0);
+  }
+  {
+    const std::string row = "all-zero normals";
+    Row(row);
+    auto input = PointsOnly(cloud);
+    input->GetPointData()->GetNormals()->Fill(0.0);
+    const Outcome o = Run(input);
+    checks.True(Label(row, "an error of its own").c_str(),
+      o.Errors >= 1 && o.Saw("all normals zero") && o.Saw("To estimate normals instead"));
     checks.Equal(Label(row, "empty output").c_str(), o.Points(), 0);
   }
   for (const int components : { 1, 2, 4 })
@@ -80,12 +138,21 @@ void TestConfigurationErrors(Checks& checks)
   {
     const std::string row = "normals asked for by a name that is not there";
     Row(row);
+    auto chooseMissing = [](vtkPrincipalCurvatureEstimation* f)
+    { f->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "NoSuchArray"); };
     const Outcome o = Run(cloud,
-      [](vtkPrincipalCurvatureEstimation* f) {
-        f->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "NoSuchArray");
+      [&](vtkPrincipalCurvatureEstimation* f)
+      {
+        chooseMissing(f);
+        f->SetNormalsSourceToInput();
       });
-    checks.True(Label(row, "an error").c_str(), o.Errors >= 1 && o.Saw("No normals"));
-    checks.Equal(Label(row, "empty output").c_str(), o.Points(), 0);
+    checks.True(
+      Label(row, "as input normals: an error").c_str(), o.Errors >= 1 && o.Saw("No normals"));
+    checks.Equal(Label(row, "as input normals: empty output").c_str(), o.Points(), 0);
+    const Outcome automatic = Run(cloud, chooseMissing);
+    checks.True(Label(row, "by default: a warning naming it, the normals attribute used").c_str(),
+      automatic.Errors == 0 && automatic.Saw("'NoSuchArray'") &&
+        automatic.Points() == cloud->GetNumberOfPoints());
   }
   {
     const std::string row = "vtkImageData (not a point set)";

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -284,6 +285,90 @@ void TestAdjustmentWithoutSpacing(Checks& checks)
       summary.NumberOfUnestimatedPoints == copies && summary.UsedLengthUnit == 0.0);
   }
 }
+/// Normals estimated by the core: close to the exact ones, outward on closed
+/// surfaces, the same for any threads or input order, and signed as asked.
+void TestNormalEstimation(Checks& checks)
+{
+  struct Case
+  {
+    const char* Name;
+    testing::Surface Surface;
+  };
+  const Case cases[] = { { "sphere", testing::Sphere(2.0) },
+    { "torus", testing::Torus(3.0, 1.0) },
+    { "ellipsoid", testing::Ellipsoid(3.0, 2.0, 1.5) } };
+  for (const Case& c : cases)
+  {
+    const auto samples = testing::Sample(c.Surface, 20000, 21);
+    SerialRunner serial;
+    std::vector<double> normals(3 * samples.size());
+    const NormalSummary summary = EstimateCloudNormals(
+      MakeCloud(samples), NormalSettings{}, Collectives{}, serial, normals.data());
+    std::vector<double> angles;
+    int outward = 0;
+    for (std::size_t i = 0; i < samples.size(); ++i)
+    {
+      const double dot = testing::Dot(
+        { { normals[3 * i], normals[3 * i + 1], normals[3 * i + 2] } }, samples[i].Normal);
+      outward += dot > 0.0;
+      angles.push_back(std::acos(std::min(1.0, std::fabs(dot))) * 180.0 / 3.141592653589793);
+    }
+    std::nth_element(angles.begin(), angles.begin() + angles.size() / 2, angles.end());
+    const std::string name = c.Name;
+    checks.Near((name + ": median angle to the exact normal (degrees)").c_str(),
+      angles[angles.size() / 2],
+      0.0,
+      1.0);
+    checks.Equal(
+      (name + ": every normal outward").c_str(), outward, static_cast<int>(samples.size()));
+    checks.Equal((name + ": one connected part").c_str(), summary.Components, 1);
+
+    // Threads and input order: the same normal for the same point.
+    ThreadRunner threads(3);
+    std::vector<double> threaded(normals.size());
+    EstimateCloudNormals(
+      MakeCloud(samples), NormalSettings{}, Collectives{}, threads, threaded.data());
+    checks.True((name + ": 3 threads bit-identical to 1").c_str(), threaded == normals);
+    std::vector<testing::SurfaceSample> reversed(samples.rbegin(), samples.rend());
+    std::vector<double> backwards(normals.size());
+    EstimateCloudNormals(
+      MakeCloud(reversed), NormalSettings{}, Collectives{}, serial, backwards.data());
+    bool same = true;
+    for (std::size_t i = 0; i < samples.size(); ++i)
+    {
+      const std::size_t j = samples.size() - 1 - i;
+      same = same && std::equal(&normals[3 * i], &normals[3 * i] + 3, &backwards[3 * j]);
+    }
+    checks.True((name + ": the same normals for the input reversed").c_str(), same);
+  }
+
+  const auto plane = testing::Sample(testing::Plane(2.0), 4000, 22);
+  for (const NormalOrientation orientation : { NormalOrientation::TowardsViewpoint,
+         NormalOrientation::AlongAxis,
+         NormalOrientation::Outward })
+  {
+    NormalSettings settings;
+    settings.Orientation = orientation;
+    settings.Viewpoint = { { 0.5, 0.0, -10.0 } }; // below the plane z = 0
+    settings.Axis = { { 0.0, 0.0, -1.0 } };
+    SerialRunner serial;
+    std::vector<double> normals(3 * plane.size());
+    EstimateCloudNormals(MakeCloud(plane), settings, Collectives{}, serial, normals.data());
+    int down = 0;
+    for (std::size_t i = 0; i < plane.size(); ++i)
+    {
+      down += normals[3 * i + 2] < -0.999;
+    }
+    const int expected =
+      orientation == NormalOrientation::Outward ? 0 : static_cast<int>(plane.size());
+    checks.Equal(orientation == NormalOrientation::TowardsViewpoint
+        ? "plane, viewpoint below: every normal down"
+        : orientation == NormalOrientation::AlongAxis ? "plane, axis -z: every normal down"
+                                                      : "plane, outward: an open part points up",
+      down,
+      expected);
+  }
+}
 } // namespace
 
 int main()
@@ -294,5 +379,6 @@ int main()
   TestWorkingUnit(checks);
   TestFlaggedAndStopped(checks);
   TestAdjustmentWithoutSpacing(checks);
+  TestNormalEstimation(checks);
   return checks.Summary();
 }

@@ -32,37 +32,50 @@ def values(text, kind):
     return [kind(v) for v in text.split()]
 
 
+import principal_curvatures
+
+checked = 0
+for proxy in ElementTree.parse(xml_path).iter("SourceProxy"):
+    cls = getattr(principal_curvatures, proxy.get("class"), None)
+    if cls is None:
+        continue
+    defaults = cls()
+    for prop in proxy:
+        command = prop.get("command") or ""
+        if not command.startswith("Set") or prop.get("default_values") is None:
+            continue
+        getter = getattr(defaults, "Get" + command[3:], None)
+        if getter is None:
+            continue
+        kind = float if prop.tag == "DoubleVectorProperty" else int
+        expected = getter()
+        expected = list(expected) if isinstance(expected, tuple) else [expected]
+        given = values(prop.get("default_values"), kind)
+        check([kind(v) for v in expected] == given, "%s.%s: XML default %s, filter default %s" % (
+            proxy.get("name"), prop.get("name"), given, expected))
+        checked += 1
+        for domain in prop:
+            if domain.tag in ("IntRangeDomain", "DoubleRangeDomain"):
+                for end in ("min", "max"):
+                    clamp = getattr(defaults, "Get%s%sValue" % (command[3:], end.capitalize()), None)
+                    if domain.get(end) is not None and clamp is not None:
+                        check(kind(domain.get(end)) == kind(clamp()), "%s.%s: XML %s %s, clamp %s" % (
+                            proxy.get("name"), prop.get("name"), end, domain.get(end), clamp()))
+check(checked >= 25, "%d XML defaults compared" % checked)
+
 filter_defaults = vtkPrincipalCurvatureEstimation()
 proxy = next(p for p in ElementTree.parse(xml_path).iter("SourceProxy")
              if p.get("class") == "vtkPrincipalCurvatureEstimation")
-checked = 0
-for prop in proxy:
-    command = prop.get("command") or ""
-    if not command.startswith("Set") or prop.get("default_values") is None:
-        continue
-    getter = getattr(filter_defaults, "Get" + command[3:], None)
-    if getter is None:
-        continue
-    kind = float if prop.tag == "DoubleVectorProperty" else int
-    expected = getter()
-    expected = list(expected) if isinstance(expected, tuple) else [expected]
-    given = values(prop.get("default_values"), kind)
-    check([kind(v) for v in expected] == given,
-          "%s: XML default %s, filter default %s" % (prop.get("name"), given, expected))
-    checked += 1
-    for domain in prop:
-        if domain.tag in ("IntRangeDomain", "DoubleRangeDomain"):
-            for end in ("min", "max"):
-                clamp = getattr(filter_defaults, "Get%s%sValue" % (command[3:], end.capitalize()), None)
-                if domain.get(end) is not None and clamp is not None:
-                    check(kind(domain.get(end)) == kind(clamp()),
-                          "%s: XML %s %s, clamp %s" % (prop.get("name"), end, domain.get(end), clamp()))
-check(checked >= 15, "%d XML defaults compared" % checked)
-
 enumerations = {
     "FitMode": {"Previous": filter_defaults.PREVIOUS, "New01": filter_defaults.NEW01,
                 "New02": filter_defaults.NEW02},
     "NeighborhoodMode": {"Radius": filter_defaults.RADIUS, "K Nearest": filter_defaults.K_NEAREST},
+    "NormalsSource": {"Automatic": filter_defaults.AUTOMATIC_NORMALS,
+                      "Input Array": filter_defaults.INPUT_NORMALS,
+                      "Estimated": filter_defaults.ESTIMATED_NORMALS},
+    "NormalOrientation": {"Outward": filter_defaults.OUTWARD,
+                          "Towards Viewpoint": filter_defaults.TOWARDS_VIEWPOINT,
+                          "Along Axis": filter_defaults.ALONG_AXIS},
 }
 for prop in proxy:
     if prop.get("name") in enumerations:

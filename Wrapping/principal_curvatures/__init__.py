@@ -2,6 +2,8 @@
 conformal geometric algebra (Getto & Hildenbrand 2011), for VTK Python.
 
     from principal_curvatures import vtkPrincipalCurvatureEstimation
+    from principal_curvatures import vtkPointCloudNormalEstimation
+    from principal_curvatures import vtkTextPointCloudReader
 
 Needs the VTK that ParaView bundles (run it in pvpython or pvbatch).
 """
@@ -9,6 +11,10 @@ Needs the VTK that ParaView bundles (run it in pvpython or pvbatch).
 # The wrapped classes need VTK's Python modules of their dependencies.
 import vtkmodules.vtkCommonExecutionModel  # noqa: F401
 
-from .vtkPrincipalCurvatureFilters import vtkPrincipalCurvatureEstimation  # noqa: F401
+from .vtkPrincipalCurvatureFilters import (  # noqa: F401
+    vtkPointCloudNormalEstimation,
+    vtkPrincipalCurvatureEstimation,
+    vtkTextPointCloudReader,
+)
 
-__all__ = ["vtkPrincipalCurvatureEstimation"]
+__all__ = ["vtkPointCloudNormalEstimation", "vtkPrincipalCurvatureEstimation", "vtkTextPointCloudReader"]

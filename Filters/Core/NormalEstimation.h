@@ -1,0 +1,69 @@
+/**
+ * @file NormalEstimation.h
+ * @brief Normals of a cloud that has none (no VTK): a plane fitted by PCA to
+ * each point's nearest neighbours, the signs made consistent by propagation
+ * along a minimum spanning tree of normal agreement (Hoppe et al. 1992), one
+ * tree per connected part, then the sign of each part chosen globally:
+ * outward, towards a viewpoint, or along an axis.
+ *
+ * Deterministic: points are handled in the neighbour grid's order, which
+ * depends only on the coordinates, and ties in the tree are broken by that
+ * order; so the normals do not depend on the input order, the threads, or
+ * how the cloud is split among processes (the caller gathers the cloud).
+ */
+#ifndef NormalEstimation_h
+#define NormalEstimation_h
+
+#include "CloudStatistics.h"
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace pcurv
+{
+class WorkRunner;
+
+/// How the sign of each connected part's normals is chosen.
+enum class NormalOrientation : int
+{
+  /// Away from the part's inside: the sign for which the normals point away
+  /// from the part's centroid on the whole (sum of n . (x - c) positive);
+  /// where that sum is too small to tell (an open, nearly flat part, as an
+  /// aerial scan), the normals point up (+z) on the whole.
+  Outward = 0,
+  /// Each normal towards Viewpoint (where the scanner was), point by point.
+  TowardsViewpoint = 1,
+  /// Each normal with a positive component along Axis, point by point.
+  AlongAxis = 2
+};
+
+struct NormalSettings
+{
+  /// Neighbours of the PCA plane fit (the point itself not counted).
+  int NumberOfNeighbors = 30;
+  /// Nearest neighbours each point is joined to in the orientation graph.
+  int GraphNeighbors = 8;
+  NormalOrientation Orientation = NormalOrientation::Outward;
+  std::array<double, 3> Viewpoint{ { 0.0, 0.0, 0.0 } };
+  std::array<double, 3> Axis{ { 0.0, 0.0, 1.0 } };
+};
+
+struct NormalSummary
+{
+  /// Connected parts of the orientation graph (Outward only).
+  std::int64_t Components = 0;
+  /// Points with too few neighbours for a plane (their normal is zero).
+  std::int64_t Undetermined = 0;
+};
+
+/// Unit normals of the own points of `cloud` (coordinates only are read),
+/// 3 per point, zero where undetermined.
+NormalSummary EstimateNormals(const CloudPoints& cloud,
+  const NormalSettings& settings,
+  WorkRunner& runner,
+  std::vector<double>& normals);
+
+} // namespace pcurv
+
+#endif

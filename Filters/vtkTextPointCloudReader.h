@@ -1,0 +1,100 @@
+/**
+ * @class   vtkTextPointCloudReader
+ * @brief   reads a point cloud stored as text, one point per line:
+ *          x y z [nx ny nz] [more columns] (.xyz .pwn .txt .pts .csv)
+ *
+ * The file is read into memory at once and its numbers are parsed with
+ * std::from_chars (locale independent; a million 6-column lines take well
+ * under a second).
+ *
+ * Lines:
+ * - Numbers are separated by white space, commas or semicolons (runs of
+ *   separators count as one, as in `x, y, z`).
+ * - Blank lines are skipped; `#` or `//` starts a comment that runs to the
+ *   end of the line (whole-line and trailing comments).
+ * - A first line holding a single non-negative integer is a point count (the
+ *   Leica PTS header) and is skipped; in a `.pts` file every such line is
+ *   skipped (PTS files that concatenate scans repeat it).
+ * - The first remaining line may be a header of column names (it is one when
+ *   its first word is not a number), as the command-line tool
+ *   Scripts/estimate_curvatures.py has always accepted.
+ * - Every other line must hold the same number of numbers, at least 3.
+ *
+ * Columns (the rules the command-line tool applied before it used this
+ * reader, extended by colours and extra columns):
+ * - Points (double): the columns named x, y, z in a header (ignoring case),
+ *   else the first three.
+ * - `Normals` (double, 3 components, the active normals attribute): the
+ *   columns named nx ny nz, normal_x normal_y normal_z, normalx normaly
+ *   normalz or n_x n_y n_z in a header; without a header, columns 4-6 of any
+ *   file with 6 or more columns (the command-line tool took columns 4-6 as
+ *   normals without further test, and so does this reader: `x y z r g b`
+ *   gives Normals too), except a `.pts` file in the Leica layout
+ *   `x y z intensity r g b` (7 columns, the last 3 integers in 0..255). A
+ *   header that names no normals gives none.
+ * - The remaining columns, in file order: with a header, named by it
+ *   (double), except that three columns named r g b or red green blue with
+ *   integer values in 0..255 become `RGB`; without a header, exactly three
+ *   remaining columns with integer values in 0..255 become `RGB` (unsigned
+ *   char, 3 components, the active scalars); in a `.pts` file of 4 columns
+ *   or the 7-column layout above, column 4 is `Intensity` and columns 5-7
+ *   `RGB`; any other column i (counted from 0 in the file) is `Column_<i>`
+ *   (double). So `x y z nx ny nz r g b` gives Normals and RGB,
+ *   `x y z nx ny nz` Normals, `x y z nx ny nz q` Normals and Column_6.
+ *
+ * Output: a vtkPolyData with the points (double), one vertex cell per point
+ * (so that it renders) and the arrays above. Piece requests are honoured: piece
+ * p of n gets the p-th of n consecutive ranges of the points.
+ *
+ * Errors (a missing or unreadable file, a non-numeric word, a line with a
+ * different number of columns than the first, fewer than 3 columns, no
+ * points) are reported with vtkErrorMacro naming the file and the line
+ * number; the output is then empty and GetErrorCode() is not
+ * vtkErrorCode::NoError (CannotOpenFileError, FileFormatError, ...).
+ * RequestData still returns success, so that the pipeline adds no second,
+ * unhelpful message; check the point count or the error code.
+ *
+ * @sa vtkSimplePointsReader vtkDelimitedTextReader
+ */
+#ifndef vtkTextPointCloudReader_h
+#define vtkTextPointCloudReader_h
+
+#include "vtkPolyDataAlgorithm.h"
+#include "vtkPrincipalCurvatureFiltersModule.h" // for export macro
+
+class VTKPRINCIPALCURVATUREFILTERS_EXPORT vtkTextPointCloudReader : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkTextPointCloudReader* New();
+  vtkTypeMacro(vtkTextPointCloudReader, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /// The file to read.
+  vtkSetStringMacro(FileName);
+  vtkGetStringMacro(FileName);
+  ///@}
+
+  /**
+   * 1 if the file exists and its first data line (after comments, a point
+   * count and a header of names) holds at least 3 numbers, else 0. Reads only
+   * the start of the file. ParaView's reader factory asks it before choosing
+   * this reader.
+   */
+  int CanReadFile(const char* fileName);
+
+protected:
+  vtkTextPointCloudReader();
+  ~vtkTextPointCloudReader() override;
+
+  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  char* FileName = nullptr;
+
+private:
+  vtkTextPointCloudReader(const vtkTextPointCloudReader&) = delete;
+  void operator=(const vtkTextPointCloudReader&) = delete;
+};
+
+#endif

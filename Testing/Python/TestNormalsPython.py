@@ -1,0 +1,122 @@
+"""Clouds without normals through the plugin, as a new user has them:
+
+    pvpython TestNormalsPython.py PLUGIN.so
+
+* a sphere of radius 2 with points only: PrincipalCurvatures(Input=...) with
+  defaults estimates the normals (output array Normals, outward), and gives
+  k = +1/2 at every point;
+* the same sphere with colours (unsigned char RGB, the first 3-component
+  array, which the Normals property picks by default): the colours are not
+  used, the normals are estimated; with Normals Source 'Input Array' the
+  filter fails and says how to estimate normals instead;
+* Point Cloud Normals on the sphere: unit, outward, within a degree of the
+  exact normals (median); towards a viewpoint inside: all inward;
+* a sphere whose normals are all zero: an error of its own.
+
+Every check prints one line; the exit code is 0 when all pass, 1 otherwise.
+"""
+
+import math
+import sys
+
+import numpy
+from paraview import servermanager, simple
+from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
+from vtkmodules.vtkCommonCore import vtkPoints
+from vtkmodules.vtkCommonDataModel import vtkPolyData
+
+failures = []
+
+
+def check(condition, message):
+    print(("ok     " if condition else "FAILED ") + message, flush=True)
+    if not condition:
+        failures.append(message)
+    return condition
+
+
+def sphere(count=20000, radius=2.0):
+    """Fibonacci sphere: points and their exact outward normals."""
+    i = numpy.arange(count)
+    z = 1.0 - 2.0 * (i + 0.5) / count
+    r = numpy.sqrt(1.0 - z * z)
+    angle = math.pi * (3.0 - math.sqrt(5.0)) * i
+    normals = numpy.column_stack([r * numpy.cos(angle), r * numpy.sin(angle), z])
+    return radius * normals, normals
+
+
+def cloud(points, arrays=()):
+    data = vtkPolyData()
+    vtk_points = vtkPoints()
+    vtk_points.SetData(numpy_to_vtk(numpy.ascontiguousarray(points), deep=True))
+    data.SetPoints(vtk_points)
+    for name, values in arrays:
+        array = numpy_to_vtk(numpy.ascontiguousarray(values), deep=True)
+        array.SetName(name)
+        data.GetPointData().AddArray(array)
+    source = simple.TrivialProducer()
+    source.GetClientSideObject().SetOutput(data)
+    source.UpdatePipeline()
+    return source
+
+
+def fetch(proxy):
+    proxy.UpdatePipeline()
+    return servermanager.Fetch(proxy)
+
+
+def array(output, name):
+    found = output.GetPointData().GetArray(name)
+    return vtk_to_numpy(found) if found is not None else None
+
+
+simple.LoadPlugin(sys.argv[1], remote=False, ns=globals())
+points, exact = sphere()
+
+# Points only.
+bare = cloud(points)
+result = fetch(PrincipalCurvatures(Input=bare))  # noqa: F821 (from LoadPlugin)
+normals = array(result, "Normals")
+check(normals is not None and normals.shape == (20000, 3), "points only: Normals estimated and output")
+if normals is not None:
+    dots = numpy.sum(normals * exact, axis=1)
+    check(numpy.all(dots > 0.0), "points only: every estimated normal outward")
+kmin, kmax = array(result, "Minimum_Curvature"), array(result, "Maximum_Curvature")
+check(kmin is not None and numpy.all(numpy.isfinite(kmin)), "points only: every point estimated")
+check(kmin is not None and abs(numpy.mean(kmin) - 0.5) < 0.01 and abs(numpy.mean(kmax) - 0.5) < 0.01,
+      "points only: k_min = k_max = +1/2 (%.4f, %.4f)" % (numpy.mean(kmin), numpy.mean(kmax)))
+
+# Colours only.
+rgb = ((points - points.min(axis=0)) / numpy.ptp(points, axis=0) * 255).astype(numpy.uint8)
+coloured = cloud(points, [("RGB", rgb)])
+curvatures = PrincipalCurvatures(Input=coloured)  # noqa: F821
+check(list(curvatures.Normals)[-1] == "RGB", "colours: the Normals property offers RGB (%s)" % list(curvatures.Normals))
+result = fetch(curvatures)
+kmean = array(result, "Mean_Curvature")
+check(kmean is not None and abs(numpy.nanmean(kmean) - 0.5) < 0.01 and numpy.all(numpy.isfinite(kmean)),
+      "colours: not used as normals; normals estimated, k = +1/2 everywhere")
+strict = PrincipalCurvatures(Input=coloured, NormalsSource="Input Array")  # noqa: F821
+result = fetch(strict)
+check(result.GetNumberOfPoints() == 0, "colours as 'Input Array': the filter fails (empty output)")
+
+# The normals filter alone.
+normals_filter = PointCloudNormals(Input=bare)  # noqa: F821
+result = fetch(normals_filter)
+normals = array(result, "Normals")
+lengths = numpy.linalg.norm(normals, axis=1)
+dots = numpy.sum(normals * exact, axis=1)
+angles = numpy.degrees(numpy.arccos(numpy.clip(numpy.abs(dots), 0.0, 1.0)))
+check(numpy.allclose(lengths, 1.0), "Point Cloud Normals: unit normals")
+check(numpy.all(dots > 0.0), "Point Cloud Normals: outward")
+check(numpy.median(angles) < 1.0, "Point Cloud Normals: median angle %.3f degrees < 1" % numpy.median(angles))
+inward = fetch(PointCloudNormals(Input=bare, Orientation="Towards Viewpoint", Viewpoint=[0.0, 0.0, 0.0]))  # noqa: F821
+check(numpy.all(numpy.sum(array(inward, "Normals") * exact, axis=1) < 0.0),
+      "Point Cloud Normals towards the centre: all inward")
+
+# All-zero normals.
+zero = cloud(points, [("Normals", numpy.zeros_like(points))])
+result = fetch(PrincipalCurvatures(Input=zero, Normals=["POINTS", "Normals"]))  # noqa: F821
+check(result.GetNumberOfPoints() == 0, "all-zero normals: the filter fails (its own error message)")
+
+print("%d failed" % len(failures))
+sys.exit(1 if failures else 0)

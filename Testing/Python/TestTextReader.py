@@ -1,0 +1,351 @@
+"""pvpython test of the plugin's Point Cloud Text Reader
+(vtkTextPointCloudReader) and of the command-line tool's text input and its
+.ply and .csv output.
+
+    pvpython TestTextReader.py PLUGIN.so|--autoload CLOUDS_DIR [PVPYTHON CLI_SCRIPT]
+
+PLUGIN.so is loaded with LoadPlugin; with --autoload the plugin must already
+be loaded (PV_PLUGIN_CONFIG_FILE). CLOUDS_DIR holds torus.xyz (6 columns,
+from GenerateAnalyticCloud). With PVPYTHON and CLI_SCRIPT
+(Scripts/estimate_curvatures.py) the tool is run on a copy of torus.xyz to
+.ply and .csv outputs, on a copy with colours to .ply, and on a 3-column file (which must either work or
+exit with status 2 and a message, never crash).
+
+The reader checks write small files into a temporary folder and read them
+with OpenDataFile (the reader factory must choose this reader for .xyz .pwn
+.txt .pts: ParaView also offers PLOT3D and the molecule reader for .xyz, the
+CSV reader for .txt, its PTS reader for .pts): 3 columns with comments and
+blank lines, 6 columns (Normals), 6 columns and colours (Normals, RGB), a PTS
+file with its count line (Intensity, RGB), comma and semicolon separated
+files, a header of names, CRLF line ends, number syntax, pieces, and bad
+files (a non-numeric word, a line with another column count, too few
+columns, no points, a missing file), which must report the file and line
+and give no points.
+
+Every check prints one line; the exit code is 0 when all pass, 1 otherwise.
+"""
+
+import os
+import shutil
+import subprocess
+import struct
+import sys
+import tempfile
+
+from paraview import servermanager, simple
+from vtkmodules.util.misc import calldata_type
+from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkCommonCore import VTK_DOUBLE, VTK_STRING, VTK_UNSIGNED_CHAR
+
+READER_NAME = "ASCIIPointCloudReader"
+failures = []
+
+
+def check(condition, message):
+    """Prints one result line and remembers a failure."""
+    print(("ok     " if condition else "FAILED ") + message, flush=True)
+    if not condition:
+        failures.append(message)
+    return condition
+
+
+def write(folder, name, text, mode="w"):
+    path = os.path.join(folder, name)
+    with open(path, mode) as handle:
+        handle.write(text)
+    return path
+
+
+class Errors:
+    """Collects the error messages of a reader's VTK object (builtin
+    session: the client-side object is the reader)."""
+
+    def __init__(self, proxy):
+        self.messages = []
+        proxy.GetClientSideObject().AddObserver("ErrorEvent", self.on_error)
+
+    @calldata_type(VTK_STRING)
+    def on_error(self, caller, event, message):
+        self.messages.append(message)
+
+    def text(self):
+        return " ".join(self.messages)
+
+
+def open_file(path, direct=False):
+    """A reader for path (OpenDataFile, or the reader's proxy itself with
+    direct), its collected errors, and its output, fetched."""
+    reader = simple.PointCloudTextReader(FileName=path) if direct else simple.OpenDataFile(path)
+    errors = Errors(reader)
+    reader.UpdatePipeline()
+    return reader, errors, servermanager.Fetch(reader)
+
+
+def arrays_of(cloud):
+    data = cloud.GetPointData()
+    return sorted(data.GetArrayName(i) for i in range(data.GetNumberOfArrays()))
+
+
+def points_of(cloud):
+    return vtk_to_numpy(cloud.GetPoints().GetData()).tolist() if cloud.GetNumberOfPoints() else []
+
+
+def check_read(folder, name, text, points, arrays, label, direct=False, mode="w"):
+    """Reads the file name made of text; checks its points (exactly) and
+    point arrays; returns the output."""
+    path = write(folder, name, text, mode)
+    reader, errors, cloud = open_file(path, direct)
+    if not direct:
+        check(reader.GetXMLName() == READER_NAME,
+              "%s: OpenDataFile('%s') chose %s" % (label, name, reader.GetXMLName()))
+    check(not errors.messages, "%s: no error (%s)" % (label, errors.text() or "none"))
+    check(cloud.GetNumberOfPoints() == len(points), "%s: %d points (expected %d)"
+          % (label, cloud.GetNumberOfPoints(), len(points)))
+    check(cloud.GetPoints() is not None and cloud.GetPoints().GetDataType() == VTK_DOUBLE,
+          "%s: double points" % label)
+    check(points_of(cloud) == points, "%s: coordinates %s" % (label, points_of(cloud)[:4]))
+    check(cloud.GetNumberOfVerts() == len(points) and cloud.GetNumberOfCells() == len(points),
+          "%s: one vertex cell per point (%d)" % (label, cloud.GetNumberOfVerts()))
+    check(arrays_of(cloud) == sorted(arrays), "%s: point arrays %s (expected %s)"
+          % (label, arrays_of(cloud), sorted(arrays)))
+    return cloud
+
+
+def check_normals(cloud, expected, label):
+    normals = cloud.GetPointData().GetNormals()
+    check(normals is not None and normals.GetName() == "Normals", "%s: Normals is the normals attribute" % label)
+    if normals is not None:
+        check(normals.GetDataType() == VTK_DOUBLE and normals.GetNumberOfComponents() == 3,
+              "%s: Normals double, 3 components" % label)
+        values = vtk_to_numpy(normals).tolist()
+        check(values == expected, "%s: normals %s%s" % (label, values[:3], " ..." if len(values) > 3 else ""))
+
+
+def check_rgb(cloud, expected, label):
+    rgb = cloud.GetPointData().GetArray("RGB")
+    check(rgb is not None and rgb.GetDataType() == VTK_UNSIGNED_CHAR and rgb.GetNumberOfComponents() == 3,
+          "%s: RGB unsigned char, 3 components" % label)
+    if rgb is not None:
+        check(vtk_to_numpy(rgb).tolist() == expected, "%s: colours %s" % (label, vtk_to_numpy(rgb).tolist()))
+        scalars = cloud.GetPointData().GetScalars()
+        check(scalars is not None and scalars.GetName() == "RGB", "%s: RGB is the scalars attribute" % label)
+
+
+def check_bad(folder, name, text, expected, label, direct=False):
+    """A bad file: an error naming the file and the expected words, no points."""
+    path = write(folder, name, text) if text is not None else os.path.join(folder, name)
+    reader, errors, cloud = open_file(path, direct)
+    message = errors.text()
+    check(name in message and all(word in message for word in expected),
+          "%s: error names the file and %s: %s" % (label, " ".join(expected), message.strip().splitlines()[-1:]))
+    check(cloud.GetNumberOfPoints() == 0, "%s: no points (%d)" % (label, cloud.GetNumberOfPoints()))
+    check(reader.GetClientSideObject().GetErrorCode() != 0, "%s: error code set" % label)
+
+
+def check_reader(folder):
+    cloud = check_read(folder, "three.xyz",
+                       "# a comment line\n\n   \n1 2 3\n// another comment\n4 5 6 # trailing\n7\t8\t9 // trailing\n\n",
+                       [[1, 2, 3], [4, 5, 6], [7, 8, 9]], [], "3 columns")
+    check(cloud.GetPointData().GetNormals() is None, "3 columns: no normals")
+
+    cloud = check_read(folder, "six.xyz", "0 0 1 0 0 1\n1 0 0 1 0 0\n0 2 0 0 -1 0\n",
+                       [[0, 0, 1], [1, 0, 0], [0, 2, 0]], ["Normals"], "6 columns")
+    check_normals(cloud, [[0, 0, 1], [1, 0, 0], [0, -1, 0]], "6 columns")
+
+    cloud = check_read(folder, "colour.xyz", "1 2 3 0 0 1 255 0 10\n4 5 6 0 1 0 0 128 255\n",
+                       [[1, 2, 3], [4, 5, 6]], ["Normals", "RGB"], "6 columns + RGB")
+    check_normals(cloud, [[0, 0, 1], [0, 1, 0]], "6 columns + RGB")
+    check_rgb(cloud, [[255, 0, 10], [0, 128, 255]], "6 columns + RGB")
+
+    cloud = check_read(folder, "oriented.pwn", "1 2 3 0.6 0 0.8\n-1 -2 -3 -0.6 0 -0.8\n",
+                       [[1, 2, 3], [-1, -2, -3]], ["Normals"], ".pwn")
+    check_normals(cloud, [[0.6, 0, 0.8], [-0.6, 0, -0.8]], ".pwn")
+
+    # Leica PTS: the point count, then x y z intensity r g b.
+    cloud = check_read(folder, "scan.pts", "2\n1.5 2.5 3.5 -120 10 20 30\n4 5 6 300 40 50 60\n",
+                       [[1.5, 2.5, 3.5], [4, 5, 6]], ["Intensity", "RGB"], ".pts with its count line")
+    check(cloud.GetPointData().GetNormals() is None, ".pts: no normals")
+    check_rgb(cloud, [[10, 20, 30], [40, 50, 60]], ".pts")
+    intensity = cloud.GetPointData().GetArray("Intensity")
+    check(intensity is not None and vtk_to_numpy(intensity).tolist() == [-120, 300], ".pts: intensity")
+
+    check_read(folder, "comma.txt", "1.0, 2.0, 3.0\n4.0,5.0,6.0\n7;8;9\n",
+               [[1, 2, 3], [4, 5, 6], [7, 8, 9]], [], "comma and semicolon separated .txt")
+
+    cloud = check_read(folder, "four.xyz", "1 2 3 0.5\n4 5 6 -0.25\n", [[1, 2, 3], [4, 5, 6]], ["Column_3"],
+                       "4 columns")
+    values = cloud.GetPointData().GetArray("Column_3")
+    check(values is not None and vtk_to_numpy(values).tolist() == [0.5, -0.25], "4 columns: Column_3 values")
+
+    cloud = check_read(folder, "seven.xyz", "1 2 3 0 0 1 7.5\n4 5 6 0 1 0 8.5\n", [[1, 2, 3], [4, 5, 6]],
+                       ["Column_6", "Normals"], "7 columns")
+    check_normals(cloud, [[0, 0, 1], [0, 1, 0]], "7 columns")
+
+    # A header of names picks the columns (the command-line tool's rule);
+    # .csv is not offered to the reader factory, so the proxy is used itself.
+    cloud = check_read(folder, "named.csv", "nz,ny,nx,z,y,x,quality\n1,0,0,3,2,1,0.5\n0,1,0,6,5,4,0.75\n",
+                       [[1, 2, 3], [4, 5, 6]], ["Normals", "quality"], "header of names", direct=True)
+    check_normals(cloud, [[0, 0, 1], [0, 1, 0]], "header of names")
+
+    check_read(folder, "clash.csv", "x y z nx ny nz Normals\n1 2 3 0 0 1 9\n", [[1, 2, 3]],
+               ["Normals", "Normals_6"], "a header column named like an array gets its index", direct=True)
+
+    check_read(folder, "crlf.xyz", b"1 2 3\r\n4 5 6\r\n", [[1, 2, 3], [4, 5, 6]], [], "CRLF line ends", mode="wb")
+
+    cloud = check_read(folder, "syntax.xyz", "+4 -2.5E+3 1e-300\n0.1 .5 -0.\n1e400 -1e400 7\n",
+                       [[4, -2500, 1e-300], [0.1, 0.5, -0.0], [float("inf"), float("-inf"), 7]], [],
+                       "number syntax (sign, exponent, beyond the double range)")
+
+    # Pieces: piece p of n gets the p-th of n consecutive ranges.
+    reader = simple.PointCloudTextReader(FileName=os.path.join(folder, "three.xyz"))
+    vtk_reader = reader.GetClientSideObject()
+    counts = []
+    for piece in range(2):
+        vtk_reader.UpdatePiece(piece, 2, 0)
+        counts.append(vtk_reader.GetOutputDataObject(0).GetNumberOfPoints())
+    check(counts == [1, 2], "pieces: 3 points in 2 pieces as %s" % counts)
+
+    check_bad(folder, "malformed.xyz", "1 2 3\n4 5 6\n# comment\n7 8 x9\n", ["line 4", "x9"],
+              "a non-numeric word")
+    check_bad(folder, "ragged.xyz", "1 2 3 0 0 1\n\n4 5 6 0 1\n", ["line 3", "5 columns", "line 1"],
+              "a line with another column count")
+    check_bad(folder, "flat.xyz", "1 2\n3 4\n", ["line 1", "at least"], "2 columns", direct=True)
+    check_bad(folder, "empty.xyz", "# only a comment\n\n", ["no points"], "no points", direct=True)
+    check_bad(folder, "missing.xyz", None, ["cannot read"], "a missing file (reader itself)", direct=True)
+    try:
+        simple.OpenDataFile(os.path.join(folder, "missing.xyz"))
+        check(False, "a missing file: OpenDataFile raises")
+    except RuntimeError as error:
+        check("not readable" in str(error), "a missing file: OpenDataFile raises (%s)" % error)
+
+    # Files that are not clouds of numbers stay with ParaView's readers.
+    path = write(folder, "table.txt", "name,value\nfirst,1\nsecond,2\n")
+    reader = simple.OpenDataFile(path)
+    check(reader.GetXMLName() == "CSVReader", "a text table .txt goes to %s (CSVReader)" % reader.GetXMLName())
+
+
+def check_generated(clouds):
+    """torus.xyz (GenerateAnalyticCloud: x y z nx ny nz, 20000 lines)."""
+    path = os.path.join(clouds, "torus.xyz")
+    with open(path) as handle:
+        rows = [[float(w) for w in line.split()] for line in handle if line.strip()]
+    reader, errors, cloud = open_file(path)
+    check(reader.GetXMLName() == READER_NAME, "torus.xyz: OpenDataFile chose %s" % reader.GetXMLName())
+    check(cloud.GetNumberOfPoints() == len(rows) == 20000, "torus.xyz: %d points" % cloud.GetNumberOfPoints())
+    check(points_of(cloud) == [row[:3] for row in rows], "torus.xyz: coordinates as Python parses them")
+    check_normals(cloud, [row[3:] for row in rows], "torus.xyz")
+    return rows
+
+
+def read_ply(path):
+    """Header lines and the vertex records (as lists) of a binary
+    little-endian PLY file with scalar double/float/uchar properties."""
+    with open(path, "rb") as handle:
+        data = handle.read()
+    end = data.index(b"end_header\n") + len(b"end_header\n")
+    header = data[:end].decode("ascii").splitlines()
+    properties = [line.split()[1:] for line in header if line.startswith("property ")]
+    count = int(next(line.split()[2] for line in header if line.startswith("element vertex")))
+    code = "<" + "".join({"double": "d", "float": "f", "uchar": "B"}[kind] for kind, _ in properties)
+    size = struct.calcsize(code)
+    records = [struct.unpack_from(code, data, end + i * size) for i in range(count)]
+    return header, [name for _, name in properties], records, len(data) - end - count * size
+
+
+def check_command_line(folder, clouds, pvpython, script, plugin, rows):
+    """The tool on a 6-column .xyz (a copy of torus.xyz) to .ply and .csv;
+    on a 3-column .xyz to .ply."""
+    source = os.path.join(folder, "torus_copy.xyz")
+    shutil.copy(os.path.join(clouds, "torus.xyz"), source)
+    plugin_arguments = ["--plugin", plugin] if plugin else []
+    scalars = ["Minimum_Curvature", "Maximum_Curvature", "Mean_Curvature", "Gauss_Curvature", "Curvature_Valid"]
+    vectors = ["Minimum_Curvature_Direction", "Maximum_Curvature_Direction"]
+    for extension in (".ply", ".csv"):
+        output = os.path.join(folder, "torus_curvatures" + extension)
+        run = subprocess.run([pvpython, script] + plugin_arguments + [source, output],
+                             stdout=subprocess.PIPE, stderr=subprocess.STDOUT, universal_newlines=True)
+        check(run.returncode == 0 and ("wrote %s" % output) in run.stdout,
+              "command line to %s: exit %d %s" % (extension, run.returncode, run.stdout.strip().splitlines()[-1:]))
+        if not os.path.isfile(output):
+            check(False, "command line wrote %s" % output)
+            continue
+        if extension == ".ply":
+            header, names, records, rest = read_ply(output)
+            check(header[:2] == ["ply", "format binary_little_endian 1.0"], "ply: binary little endian header")
+            check("element vertex 20000" in header, "ply: element vertex 20000")
+            check(names[:6] == ["x", "y", "z", "nx", "ny", "nz"], "ply: properties x y z nx ny nz first")
+            check(all(name in names for name in scalars), "ply: scalar properties %s" % " ".join(scalars))
+            check(all("%s_%s" % (name, axis) in names for name in vectors for axis in "xyz"),
+                  "ply: vector properties <name>_x _y _z")
+            check("property double Mean_Curvature" in header, "ply: Mean_Curvature a double property")
+            check(rest == 0 and len(records) == 20000, "ply: 20000 records, nothing after them")
+            check([list(r[:6]) for r in records[:100]] == [row for row in rows[:100]],
+                  "ply: x y z nx ny nz of the first 100 points are the input's")
+            ply = simple.PLYReader(FileNames=[output])
+            ply.UpdatePipeline()
+            check(ply.GetDataInformation().GetNumberOfPoints() == 20000 and "Normals" in ply.PointData.keys(),
+                  "ply: ParaView's PLY reader reads it: 20000 points, normals (%s)" % " ".join(ply.PointData.keys()))
+            mean = names.index("Mean_Curvature")
+            valid = names.index("Curvature_Valid")
+            check(all(r[valid] == 1 for r in records) and all(-2 < r[mean] < 2 for r in records),
+                  "ply: every point estimated, mean curvature finite and plausible")
+        else:
+            with open(output) as handle:
+                lines = handle.read().splitlines()
+            names = lines[0].split(",")
+            check(names[:6] == ["x", "y", "z", "nx", "ny", "nz"] and all(n in names for n in scalars)
+                  and all("%s_%s" % (n, a) in names for n in vectors for a in "xyz"),
+                  "csv: header %s..." % ",".join(names[:8]))
+            check(len(lines) == 20001, "csv: header and 20000 rows (%d lines)" % len(lines))
+            values = [[float(v) for v in line.split(",")] for line in lines[1:]]
+            check(all(len(v) == len(names) for v in values), "csv: every row has %d values" % len(names))
+            check([v[:6] for v in values] == rows, "csv: x y z nx ny nz are the input's, exactly")
+
+    # Colours (x y z nx ny nz r g b) go to the PLY file as red green blue.
+    coloured = write(folder, "coloured.xyz", "".join("%r %r %r %r %r %r %d %d %d\n" % (
+        tuple(row) + (i % 256, (7 * i) % 256, 255)) for i, row in enumerate(rows)))
+    output = os.path.join(folder, "coloured.ply")
+    run = subprocess.run([pvpython, script] + plugin_arguments + [coloured, output],
+                         stdout=subprocess.PIPE, stderr=subprocess.STDOUT, universal_newlines=True)
+    check(run.returncode == 0, "command line with colours: exit %d" % run.returncode)
+    if os.path.isfile(output):
+        header, names, records, rest = read_ply(output)
+        check(all("property uchar %s" % c in header for c in ("red", "green", "blue")),
+              "ply: colours as uchar red green blue")
+        red, green = names.index("red"), names.index("green")
+        check(all(r[red] == i % 256 and r[green] == (7 * i) % 256 for i, r in enumerate(records)),
+              "ply: colour values are the input's")
+
+    three = write(folder, "three_columns.xyz", "".join("%r %r %r\n" % tuple(row[:3]) for row in rows[:2000]))
+    output = os.path.join(folder, "three_columns.ply")
+    run = subprocess.run([pvpython, script] + plugin_arguments + [three, output],
+                         stdout=subprocess.PIPE, stderr=subprocess.STDOUT, universal_newlines=True)
+    tail = run.stdout.strip().splitlines()[-1:]
+    check(run.returncode == 0 or (run.returncode == 2 and "estimate_curvatures: error" in run.stdout),
+          "command line on 3 columns: works or exits 2 with a message (exit %d, %s)" % (run.returncode, tail))
+
+
+def main(argv):
+    plugin, clouds = argv[0], argv[1]
+    pvpython, script = (argv[2], argv[3]) if len(argv) >= 4 else (None, None)
+    if plugin == "--autoload":
+        plugin = None
+        check(hasattr(simple, "PointCloudTextReader"), "the reader is autoloaded")
+    else:
+        simple.LoadPlugin(plugin, remote=False)  # without ns: adds to paraview.simple
+        check(hasattr(simple, "PointCloudTextReader"), "LoadPlugin provides simple.PointCloudTextReader")
+    folder = tempfile.mkdtemp(prefix="text_reader_")
+    try:
+        if not failures:
+            check_reader(folder)
+            rows = check_generated(clouds)
+            if script:
+                check_command_line(folder, clouds, pvpython, script, plugin, rows)
+    finally:
+        shutil.rmtree(folder, ignore_errors=True)
+    print("%d failed" % len(failures))
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
