@@ -330,6 +330,25 @@ bool IsByteColumn(const TextCloud& cloud, std::size_t column)
   return true;
 }
 
+/// Integers in 0..255, some above 1: colours (`x y z r g b`), never
+/// normals. Axis-aligned unit normals (0 and 1 only) stay normals.
+bool AreColours(const TextCloud& cloud, const std::vector<std::size_t>& columns)
+{
+  bool aboveOne = false;
+  for (std::size_t column : columns)
+  {
+    if (!IsByteColumn(cloud, column))
+    {
+      return false;
+    }
+    for (std::size_t row = 0; row < cloud.Rows() && !aboveOne; ++row)
+    {
+      aboveOne = cloud.Values[row * cloud.Columns + column] > 1.0;
+    }
+  }
+  return aboveOne;
+}
+
 Layout ChooseLayout(const TextCloud& cloud, bool pts)
 {
   Layout layout;
@@ -361,7 +380,7 @@ Layout ChooseLayout(const TextCloud& cloud, bool pts)
       }
     }
   }
-  else if (cloud.Columns >= 6 && !(pts && ptsLayout))
+  else if (cloud.Columns >= 6 && !(pts && ptsLayout) && !AreColours(cloud, { 3, 4, 5 }))
   {
     layout.Normal = { 3, 4, 5 };
   }

@@ -27,11 +27,11 @@
  * - `Normals` (double, 3 components, the active normals attribute): the
  *   columns named nx ny nz, normal_x normal_y normal_z, normalx normaly
  *   normalz or n_x n_y n_z in a header; without a header, columns 4-6 of any
- *   file with 6 or more columns (the command-line tool took columns 4-6 as
- *   normals without further test, and so does this reader: `x y z r g b`
- *   gives Normals too), except a `.pts` file in the Leica layout
- *   `x y z intensity r g b` (7 columns, the last 3 integers in 0..255). A
- *   header that names no normals gives none.
+ *   file with 6 or more columns, unless they are colours (integers in
+ *   0..255, some above 1: `x y z r g b` gives RGB and no normals; the
+ *   curvature filter then estimates normals) or the file is a `.pts` in the
+ *   Leica layout `x y z intensity r g b` (7 columns, the last 3 integers in
+ *   0..255). A header that names no normals gives none.
  * - The remaining columns, in file order: with a header, named by it
  *   (double), except that three columns named r g b or red green blue with
  *   integer values in 0..255 become `RGB`; without a header, exactly three

@@ -1,4 +1,4 @@
-"""Estimate the principal curvatures of a point cloud with normals.
+"""Estimate the principal curvatures of a point cloud, with or without normals.
 
 Run with ParaView's Python:
 
@@ -6,7 +6,12 @@ Run with ParaView's Python:
         [--fit-mode Previous|New01|New02] [--neighbors N] [--k-nearest]
         [--radius S [--plane-distance P]]
         [--dynamic-adjustment [paper|ladder|noisy-ladder]]
-        [--normals NAME] [--threads T] [--plugin PATH]
+        [--normals NAME | --estimate-normals] [--orientation outward|viewpoint|axis]
+        [--viewpoint X Y Z] [--axis X Y Z] [--threads T] [--plugin PATH]
+
+Without normals in the input (an x y z scan), the normals are estimated and
+oriented (outward by default) and written to OUTPUT as Normals; colours are
+never taken for normals.
 
 INPUT may be:
 
@@ -93,7 +98,17 @@ def parse_arguments(argv):
                              "with the paper's constants (the default), or the banded ladder of docs/dynamic-adjustment.md "
                              "for noise-free or noisy clouds")
     parser.add_argument("--normals", metavar="NAME",
-                        help="point-data normals array (default: the normals attribute, or an array named like normals)")
+                        help="point-data normals array to use; an error if it is not normals (default: the "
+                             "normals attribute, or an array named like normals, or else estimated normals)")
+    parser.add_argument("--estimate-normals", action="store_true",
+                        help="estimate the normals even if the input has some")
+    parser.add_argument("--orientation", choices=["outward", "viewpoint", "axis"], default="outward",
+                        help="how estimated normals are signed: outward (default; up where a part's inside "
+                             "cannot be told), towards --viewpoint, or along --axis")
+    parser.add_argument("--viewpoint", type=float, nargs=3, metavar=("X", "Y", "Z"), default=[0.0, 0.0, 0.0],
+                        help="where the scanner was, with --orientation viewpoint (default: the origin)")
+    parser.add_argument("--axis", type=float, nargs=3, metavar=("X", "Y", "Z"), default=[0.0, 0.0, 1.0],
+                        help="the direction estimated normals point along, with --orientation axis (default: +z)")
     parser.add_argument("--threads", type=int, default=0, metavar="T", help="at most T threads (default 0: all cores)")
     parser.add_argument("--plugin", metavar="PATH",
                         default=os.environ.get("PRINCIPAL_CURVATURES_PLUGIN") or DEFAULT_PLUGIN,
@@ -360,21 +375,35 @@ def open_cloud(path):
 
 def choose_normals(source, requested):
     """The normals array to use: the requested one; else the array flagged
-    as the normals attribute; else a 3-component array named like normals.
-    Exits with a message if there is none."""
+    as the normals attribute; else a 3-component array named like normals;
+    else None (the filter estimates them). Exits with a message if the
+    requested one is not there."""
     arrays = point_arrays(source)
     listing = ", ".join("%s (%d)" % item for item in sorted(arrays.items())) or "none"
     if requested:
         if requested not in arrays:
-            fail("no point-data array named '%s' (have: %s)" % (requested, listing))
+            fail("no point-data array named '%s' (have: %s); leave out --normals, or give "
+                 "--estimate-normals, to estimate normals" % (requested, listing))
         if arrays[requested] != 3:
-            fail("the array '%s' has %d components, normals need 3" % (requested, arrays[requested]))
+            fail("the array '%s' has %d components, normals need 3; leave out --normals, or give "
+                 "--estimate-normals, to estimate normals" % (requested, arrays[requested]))
         return requested
-    found = normals_attribute(source) or next(iter(named_normals(source)), None)
-    if found is None:
-        fail("no normals: no 3-component point-data normals array and no nx ny nz "
-             "(point arrays: %s); name one with --normals" % listing)
-    return found
+    return normals_attribute(source) or next(iter(named_normals(source)), None)
+
+
+def configure_normals(curvatures, arguments, normals):
+    """Sets where the normals come from; returns how the summary names them."""
+    orientation = {"outward": "Outward", "viewpoint": "Towards Viewpoint", "axis": "Along Axis"}
+    curvatures.NormalOrientation = orientation[arguments.orientation]
+    curvatures.Viewpoint = arguments.viewpoint
+    curvatures.OrientationAxis = arguments.axis
+    if arguments.estimate_normals or normals is None:
+        curvatures.NormalsSource = "Estimated"
+        return "estimated (%s)" % arguments.orientation
+    curvatures.Normals = ["POINTS", normals]
+    # A named array must be normals: an error, not a silent estimate.
+    curvatures.NormalsSource = "Input Array" if arguments.normals else "Automatic"
+    return normals
 
 
 # ---------------------------------------------------------------------------
@@ -622,10 +651,12 @@ def main(argv):
         fail("the output's folder does not exist: %s" % output_folder)
     load_plugin(arguments.plugin)
     source = open_cloud(arguments.input)
-    normals = choose_normals(source, arguments.normals)
+    if arguments.normals and arguments.estimate_normals:
+        fail("--normals and --estimate-normals exclude each other")
+    normals = None if arguments.estimate_normals else choose_normals(source, arguments.normals)
 
     curvatures = simple.PrincipalCurvatures(Input=source)
-    curvatures.Normals = ["POINTS", normals]
+    normals_description = configure_normals(curvatures, arguments, normals)
     configure(curvatures, arguments)
     start = time.perf_counter()
     curvatures.UpdatePipeline()
@@ -634,11 +665,12 @@ def main(argv):
     result = servermanager.Fetch(curvatures)
     if result is None or result.GetPointData().GetArray("Curvature_Valid") is None:
         fail("the filter produced no curvatures (see the messages above)")
-    write_output(curvatures, result, normals, arguments.output)
+    used = "Normals" if normals is None or arguments.estimate_normals else normals
+    write_output(curvatures, result, used, arguments.output)
 
     summarize(result, seconds, [
         ("input", arguments.input),
-        ("normals", normals),
+        ("normals", normals_description),
         ("fit mode", arguments.fit_mode),
         ("neighbourhood", neighbourhood_description(curvatures)),
     ])

@@ -157,6 +157,14 @@ def check_reader(folder):
     check_normals(cloud, [[0, 0, 1], [0, 1, 0]], "6 columns + RGB")
     check_rgb(cloud, [[255, 0, 10], [0, 128, 255]], "6 columns + RGB")
 
+    cloud = check_read(folder, "rgb.xyz", "1 2 3 255 0 10\n4 5 6 0 128 255\n",
+                       [[1, 2, 3], [4, 5, 6]], ["RGB"], "x y z r g b")
+    check(cloud.GetPointData().GetNormals() is None, "x y z r g b: colours, not normals")
+    check_rgb(cloud, [[255, 0, 10], [0, 128, 255]], "x y z r g b")
+    cloud = check_read(folder, "axes.xyz", "1 2 3 0 0 1\n4 5 6 1 0 0\n",
+                       [[1, 2, 3], [4, 5, 6]], ["Normals"], "axis-aligned normals (0 and 1)")
+    check_normals(cloud, [[0, 0, 1], [1, 0, 0]], "axis-aligned normals (0 and 1)")
+
     cloud = check_read(folder, "oriented.pwn", "1 2 3 0.6 0 0.8\n-1 -2 -3 -0.6 0 -0.8\n",
                        [[1, 2, 3], [-1, -2, -3]], ["Normals"], ".pwn")
     check_normals(cloud, [[0.6, 0, 0.8], [-0.6, 0, -0.8]], ".pwn")
@@ -321,8 +329,32 @@ def check_command_line(folder, clouds, pvpython, script, plugin, rows):
     run = subprocess.run([pvpython, script] + plugin_arguments + [three, output],
                          stdout=subprocess.PIPE, stderr=subprocess.STDOUT, universal_newlines=True)
     tail = run.stdout.strip().splitlines()[-1:]
-    check(run.returncode == 0 or (run.returncode == 2 and "estimate_curvatures: error" in run.stdout),
-          "command line on 3 columns: works or exits 2 with a message (exit %d, %s)" % (run.returncode, tail))
+    check(run.returncode == 0 and "estimated (outward)" in run.stdout,
+          "command line on 3 columns: normals estimated, curvatures written (exit %d, %s)" % (run.returncode, tail))
+    if os.path.isfile(output):
+        header, names, records, rest = read_ply(output)
+        check(names[3:6] == ["nx", "ny", "nz"] and len(records) == 2000,
+              "ply from 3 columns: the estimated normals are written")
+        mean, valid = names.index("Mean_Curvature"), names.index("Curvature_Valid")
+        estimated = [r[mean] for r in records if r[valid] == 1]
+        # The torus (R 3, r 1) has mean curvature (1 + r/(R + r cos v)) / 2 > 0
+        # with outward normals: a sign error would make it negative.
+        check(len(estimated) > 1800 and sum(1 for m in estimated if m > 0) > 0.99 * len(estimated),
+              "3 columns: outward normals, positive mean curvature at %d of %d points"
+              % (sum(1 for m in estimated if m > 0), len(estimated)))
+
+    # x y z r g b: the colours are colours, never normals.
+    rgb_only = write(folder, "rgb_only.xyz", "".join("%r %r %r %d %d %d\n" % (
+        tuple(row[:3]) + (i % 256, (7 * i) % 256, 200)) for i, row in enumerate(rows[:2000])))
+    output = os.path.join(folder, "rgb_only.ply")
+    run = subprocess.run([pvpython, script] + plugin_arguments + [rgb_only, output],
+                         stdout=subprocess.PIPE, stderr=subprocess.STDOUT, universal_newlines=True)
+    check(run.returncode == 0 and "estimated (outward)" in run.stdout,
+          "x y z r g b: colours not taken for normals, normals estimated (exit %d)" % run.returncode)
+    run = subprocess.run([pvpython, script] + plugin_arguments + ["--normals", "RGB", rgb_only, output],
+                         stdout=subprocess.PIPE, stderr=subprocess.STDOUT, universal_newlines=True)
+    check(run.returncode != 0 and "To estimate normals instead" in run.stdout,
+          "--normals RGB: refused, with the way to estimate normals (exit %d)" % run.returncode)
 
 
 def main(argv):
