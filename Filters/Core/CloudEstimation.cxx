@@ -300,6 +300,36 @@ public:
     }
   }
 
+  /// Point `to` gets every result of point `from` (an exact repeat of it).
+  void Copy(std::int64_t from, std::int64_t to) const
+  {
+    for (double* values : { this->Out.Minimum,
+           this->Out.Maximum,
+           this->Out.Mean,
+           this->Out.Gauss,
+           this->Out.SineFitRms,
+           this->Out.Surroundings,
+           this->Out.PlaneDistance })
+    {
+      values[to] = values[from];
+    }
+    for (double* vectors :
+      { this->Out.MinimumDirection, this->Out.MaximumDirection, this->Out.Normals })
+    {
+      if (vectors)
+      {
+        std::copy_n(vectors + 3 * from, 3, vectors + 3 * to);
+      }
+    }
+    this->Out.Valid[to] = this->Out.Valid[from];
+    this->Out.NeighborCount[to] = this->Out.NeighborCount[from];
+    this->Out.ValidDirections[to] = this->Out.ValidDirections[from];
+    if (this->Out.TargetCount)
+    {
+      this->Out.TargetCount[to] = this->Out.TargetCount[from];
+    }
+  }
+
   std::int64_t CountUnestimated(std::int64_t numberOfPoints) const
   {
     std::int64_t count = 0;
@@ -567,6 +597,7 @@ NormalSummary EstimateCloudNormals(CloudPoints cloud,
   WorkRunner& runner,
   double* out)
 {
+  const std::vector<RepeatedPoint> repeats = RemoveRepeatedPoints(cloud);
   const double scale = WorkingLengthScale(cloud, processes);
   cloud.ScaleCoordinates(scale);
   NormalSettings scaled = settings;
@@ -574,7 +605,15 @@ NormalSummary EstimateCloudNormals(CloudPoints cloud,
   {
     c *= scale;
   }
-  return ReplaceNormals(cloud, scaled, processes, runner, out);
+  const NormalSummary summary = ReplaceNormals(cloud, scaled, processes, runner, out);
+  for (const RepeatedPoint& repeat : repeats)
+  {
+    if (out)
+    {
+      std::copy_n(out + 3 * repeat.Original, 3, out + 3 * repeat.Copy);
+    }
+  }
+  return summary;
 }
 
 void SerialRunner::For(std::int64_t count, std::int64_t, const Work& work)
@@ -591,6 +630,8 @@ EstimationSummary EstimateCloud(CloudPoints cloud,
   const CurvatureBuffers& out)
 {
   EstimationSummary summary;
+  const std::vector<RepeatedPoint> repeats = RemoveRepeatedPoints(cloud);
+  summary.NumberOfRepeatedPoints = static_cast<std::int64_t>(repeats.size());
   const WorkingUnit unit{ WorkingLengthScale(cloud, processes) };
   cloud.ScaleCoordinates(unit.Scale);
   if (settings.EstimateNormals)
@@ -614,6 +655,7 @@ EstimationSummary EstimateCloud(CloudPoints cloud,
       rule.Reach = processes.Max(LargestLocalKthDistance(cloud, lattice, rule.K));
     }
     ExchangeHalo(cloud, processes, rule.Reach);
+    RemoveRepeatedHalo(cloud);
   }
   PointGrid grid;
   grid.Build(cloud.Coordinates.data(), cloud.GetNumberOfPoints(), lattice);
@@ -648,6 +690,10 @@ EstimationSummary EstimateCloud(CloudPoints cloud,
   {
     summary.Aborted = true;
     return summary;
+  }
+  for (const RepeatedPoint& repeat : repeats)
+  {
+    writer.Copy(repeat.Original, repeat.Copy);
   }
   summary.NumberOfUnestimatedPoints = writer.CountUnestimated(numberOfPoints);
   writer.ToInputUnit(numberOfPoints, unit);

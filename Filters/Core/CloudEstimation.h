@@ -104,6 +104,9 @@ struct EstimationSummary
   /// The adjustment's length unit L (0 without the adjustment).
   double UsedLengthUnit = 0.0;
   std::int64_t NumberOfUnestimatedPoints = 0;
+  /// Points that repeat another exactly (coordinates and normal): estimated
+  /// once, every copy given the same results, counted once as a neighbour.
+  std::int64_t NumberOfRepeatedPoints = 0;
   /// The adjustment's target counts as used: within [1, 1e6] (NaN: 1).
   std::array<double, 3> TargetNeighborCounts{ { 0.0, 0.0, 0.0 } };
   bool TargetCountsClamped = false;

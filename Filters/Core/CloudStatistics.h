@@ -61,6 +61,26 @@ struct CloudPoints
   void DropHalo();
 };
 
+/// An own point that repeats an earlier one exactly (coordinates and
+/// normal), by input id.
+struct RepeatedPoint
+{
+  std::int64_t Copy = 0;
+  std::int64_t Original = 0;
+};
+
+/// Removes the own points that repeat an earlier own point exactly, and
+/// returns them: copies of one point (a lidar's no-return points, merged
+/// scans) then count once in every neighbourhood, and cost once, instead of
+/// every copy gathering every other. A cloud without repeats is left as it
+/// is.
+std::vector<RepeatedPoint> RemoveRepeatedPoints(CloudPoints& cloud);
+
+/// Removes the halo points that repeat an own point or an earlier halo
+/// point exactly, so that each distinct point counts once whatever the split
+/// among processes.
+void RemoveRepeatedHalo(CloudPoints& cloud);
+
 /// n scaled to unit length, or zero when it has no direction (zero, NaN or
 /// Inf components), without overflow or underflow for any finite length.
 void MakeUnitNormal(double n[3]);

@@ -285,6 +285,51 @@ void TestAdjustmentWithoutSpacing(Checks& checks)
       summary.NumberOfUnestimatedPoints == copies && summary.UsedLengthUnit == 0.0);
   }
 }
+/// Exact copies of one point (a lidar's no-return points at the origin,
+/// merged scans) are estimated once: the other points keep their results
+/// bit for bit, every copy gets the copied point's, and (with the copies
+/// counted once) neither the cost nor the automatic radius depends on how
+/// many there are.
+void TestRepeatedPoints(Checks& checks)
+{
+  const auto torus = testing::Sample(testing::Torus(3.0, 1.0), 20000, 23);
+  std::vector<testing::SurfaceSample> withCopies = torus;
+  withCopies.insert(withCopies.end(), 20000, torus[5]);
+  for (bool estimateNormals : { false, true })
+  {
+    EstimationSettings settings;
+    settings.EstimateNormals = estimateNormals;
+    SerialRunner serial;
+    Results alone(torus.size(), false), copied(withCopies.size(), false);
+    std::vector<double> aloneNormals(3 * torus.size()), copiedNormals(3 * withCopies.size());
+    CurvatureBuffers a = alone.Buffers(), c = copied.Buffers();
+    a.Normals = estimateNormals ? aloneNormals.data() : nullptr;
+    c.Normals = estimateNormals ? copiedNormals.data() : nullptr;
+    EstimateCloud(MakeCloud(torus), settings, Collectives{}, serial, nullptr, a);
+    const EstimationSummary summary =
+      EstimateCloud(MakeCloud(withCopies), settings, Collectives{}, serial, nullptr, c);
+    const std::string label = estimateNormals ? "estimated normals: " : "";
+    checks.Equal((label + "20000 copies reported").c_str(), summary.NumberOfRepeatedPoints, 20000);
+    bool same = true, copiesSame = true;
+    for (std::size_t i = 0; i < torus.size(); ++i)
+    {
+      same = same && copied.Minimum[i] == alone.Minimum[i] &&
+        copied.Maximum[i] == alone.Maximum[i] &&
+        copied.NeighborCount[i] == alone.NeighborCount[i] &&
+        copied.Surroundings[i] == alone.Surroundings[i];
+    }
+    for (std::size_t i = torus.size(); i < withCopies.size(); ++i)
+    {
+      copiesSame = copiesSame && copied.Minimum[i] == alone.Minimum[5] &&
+        copied.MaximumDirection[3 * i] == alone.MaximumDirection[15] &&
+        (!estimateNormals || copiedNormals[3 * i + 2] == aloneNormals[17]);
+    }
+    checks.True(
+      (label + "the other points bit-identical to the cloud without copies").c_str(), same);
+    checks.True((label + "every copy gets the copied point's results").c_str(), copiesSame);
+  }
+}
+
 /// Normals estimated by the core: close to the exact ones, outward on closed
 /// surfaces, the same for any threads or input order, and signed as asked.
 void TestNormalEstimation(Checks& checks)
@@ -380,5 +425,6 @@ int main()
   TestFlaggedAndStopped(checks);
   TestAdjustmentWithoutSpacing(checks);
   TestNormalEstimation(checks);
+  TestRepeatedPoints(checks);
   return checks.Summary();
 }
