@@ -45,9 +45,20 @@ int main(int argc, char* argv[])
   {
     std::fprintf(stderr,
       "usage: %s <torus|sphere|cylinder|saddle|ellipsoid|plane|paraboloid|wave> <points> "
-      "<output.vtp> [seed] [noise in spacings]\n",
+      "<output.vtp|output.xyz> [seed] [noise in spacings] [--points-only]\n"
+      "  (--points-only: a .xyz of x y z alone, as most scans come)\n",
       argv[0]);
     return EXIT_FAILURE;
+  }
+  bool pointsOnly = false;
+  for (int a = 4; a < argc; ++a)
+  {
+    if (std::string(argv[a]) == "--points-only")
+    {
+      pointsOnly = true;
+      argc = a; // the optional numbers come before it
+      break;
+    }
   }
   const int count = std::atoi(argv[2]);
   const unsigned long long seed = argc > 4 ? std::strtoull(argv[4], nullptr, 10) : 1;
@@ -82,6 +93,11 @@ int main(int argc, char* argv[])
     }
     for (const auto& s : samples)
     {
+      if (pointsOnly)
+      {
+        std::fprintf(file, "%.17g %.17g %.17g\n", s.Point[0], s.Point[1], s.Point[2]);
+        continue;
+      }
       std::fprintf(file,
         "%.17g %.17g %.17g %.17g %.17g %.17g\n",
         s.Point[0],

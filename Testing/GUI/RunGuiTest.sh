@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# The real ParaView GUI under Xvfb: load the plugin, apply the filter, colour
-# by Mean_Curvature, capture the whole screen, and check (by OCR) that the
-# filter's Properties panel is showing.
+# The real ParaView GUI under Xvfb: load the plugin, open a normals-less
+# .xyz, apply the filter, colour by Mean_Curvature, capture the whole screen,
+# and check (by OCR) that the filter's Properties panel is showing and (by
+# counting colours) that the view shows the coloured cloud.
 #   RunGuiTest.sh PARAVIEW PLUGIN CLOUD SCREENSHOT.png
 set -u
 paraview=$1 plugin=$2 cloud=$3 screenshot=$4
@@ -28,6 +29,9 @@ status=0
 marker=$(cat "$GUI_TEST_MARKER" 2>/dev/null || echo "no marker: the GUI script did not run")
 echo "GUI script: $marker"
 case "$marker" in ok*) ;; *) status=1; tail -n 20 "$work/paraview.log" ;; esac
+# A normals-less .xyz: read by the plugin's reader, normals estimated.
+case "$marker" in *"reader ASCIIPointCloudReader, normals estimated True"*) ;;
+  *) echo "FAILED: the .xyz was not read by the plugin's reader with estimated normals"; status=1 ;; esac
 if [ ! -s "$screenshot" ]; then
   echo "FAILED: no screenshot"
   exit 1
@@ -46,5 +50,14 @@ for label in "Fit Mode" "Dynamic Adjustment" "Automatic Thresholds" "Neighbourho
 done
 grep -q "PrincipalCurvatures1" <<< "$text" && echo "pipeline browser shows PrincipalCurvatures1" ||
   { echo "FAILED: no PrincipalCurvatures1 in the pipeline browser"; status=1; }
+# The render view (right of the panels): the cloud coloured by curvature
+# shows many colours; an uncoloured or empty view has a handful.
+colours=$(convert "$screenshot" -crop 1000x700+500+150 +repage -unique-colors -format "%w" info: 2>/dev/null || echo 0)
+if [ "${colours:-0}" -gt 50 ]; then
+  echo "render view shows $colours colours"
+else
+  echo "FAILED: the render view shows $colours colours (no coloured cloud?)"
+  status=1
+fi
 echo "screenshot: $screenshot"
 exit $status

@@ -1,19 +1,20 @@
 """Runs inside the ParaView GUI (paraview --script=...): loads the plugin,
-applies Principal Curvatures to a cloud, colours by Mean_Curvature, and
-writes a marker file with what it found (read by RunGuiTest.sh)."""
+opens a cloud as File > Open would (OpenDataFile: a normals-less .xyz goes
+to the plugin's text reader), applies Principal Curvatures with its
+defaults (the normals are estimated), colours by Mean_Curvature, and writes
+a marker file with what it found (read by RunGuiTest.sh)."""
 
 import os
 
 from paraview import servermanager
 from paraview.simple import (ColorBy, GetActiveViewOrCreate, GetColorTransferFunction, Hide,
-                             LoadPlugin, Render, ResetCamera, SetActiveSource, Show,
-                             XMLPolyDataReader)
+                             LoadPlugin, Render, ResetCamera, SetActiveSource, Show)
 from paraview import simple
 
 marker = os.environ["GUI_TEST_MARKER"]
 try:
     LoadPlugin(os.environ["GUI_TEST_PLUGIN"], remote=False)
-    cloud = XMLPolyDataReader(FileName=[os.environ["GUI_TEST_CLOUD"]])
+    cloud = simple.OpenDataFile(os.environ["GUI_TEST_CLOUD"])
     cloud.UpdatePipeline()
     curvatures = simple.PrincipalCurvatures(Input=cloud)
     SetActiveSource(curvatures)  # its properties fill the Properties panel
@@ -28,9 +29,13 @@ try:
     view.CameraViewUp = [0, 0, 1]
     ResetCamera(view)
     Render(view)
-    mean = servermanager.Fetch(curvatures).GetPointData().GetArray("Mean_Curvature").GetRange()
+    output = servermanager.Fetch(curvatures)
+    mean = output.GetPointData().GetArray("Mean_Curvature").GetRange()
+    valid = output.GetPointData().GetArray("Curvature_Valid").GetRange()
+    estimated = output.GetPointData().GetNormals() is not None
     with open(marker, "w") as handle:
-        handle.write("ok %g %g\n" % mean)
+        handle.write("ok reader %s, normals estimated %s, mean curvature %g %g, valid %g %g\n"
+                     % (cloud.GetXMLName(), estimated, mean[0], mean[1], valid[0], valid[1]))
 except Exception as error:  # report to the driver instead of a silent GUI
     with open(marker, "w") as handle:
         handle.write("error %s\n" % error)
