@@ -243,37 +243,41 @@ std::vector<std::int64_t> OrientPart(const Graph& graph,
   return part;
 }
 
-/// Turns a part's normals outward (see NormalOrientation::Outward).
+/// Turns a part's normals outward (see NormalOrientation::Outward). A
+/// closed surface's normals sum to about zero (the integral of n over a
+/// closed surface vanishes), and outward is where they agree with x - c;
+/// an open part whose normals share a side (a height field, an aerial scan,
+/// a bowl) points up, unless its normals are about horizontal, where up
+/// says nothing and x - c decides again (a wall, an open cylinder).
 void TurnPartOutward(const std::vector<std::int64_t>& part,
   const PointGrid& grid,
   const CloudPoints& cloud,
   std::vector<double>& normals)
 {
-  double centroid[3] = { 0.0, 0.0, 0.0 };
+  double centroid[3] = { 0.0, 0.0, 0.0 }, sum[3] = { 0.0, 0.0, 0.0 };
   for (const std::int64_t p : part)
   {
     for (int k = 0; k < 3; ++k)
     {
       centroid[k] += cloud.Coordinates[3 * grid.GetSortedId(p) + k];
+      sum[k] += normals[3 * p + k];
     }
   }
+  const double count = static_cast<double>(part.size());
   for (double& c : centroid)
   {
-    c /= static_cast<double>(part.size());
+    c /= count;
   }
-  double signedSum = 0.0, absoluteSum = 0.0, up = 0.0;
+  double signedSum = 0.0;
   for (const std::int64_t p : part)
   {
     const double* x = &cloud.Coordinates[3 * grid.GetSortedId(p)];
     const double d[3] = { x[0] - centroid[0], x[1] - centroid[1], x[2] - centroid[2] };
-    const double along = Dot(&normals[3 * p], d);
-    signedSum += along;
-    absoluteSum += std::fabs(along);
-    up += normals[3 * p + 2];
+    signedSum += Dot(&normals[3 * p], d);
   }
-  // A closed part's normals agree with x - c on the whole; an open, nearly
-  // flat one's barely: a tenth of the absolute sum tells the two apart.
-  const bool flip = std::fabs(signedSum) > 0.1 * absoluteSum ? signedSum < 0.0 : up < 0.0;
+  const double meanLength = std::sqrt(Dot(sum, sum)) / count;
+  const bool open = meanLength > 0.3 && std::fabs(sum[2]) > 0.3 * std::sqrt(Dot(sum, sum));
+  const bool flip = open ? sum[2] < 0.0 : signedSum < 0.0;
   if (flip)
   {
     for (const std::int64_t p : part)

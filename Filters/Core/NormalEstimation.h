@@ -27,10 +27,12 @@ class WorkRunner;
 /// How the sign of each connected part's normals is chosen.
 enum class NormalOrientation : int
 {
-  /// Away from the part's inside: the sign for which the normals point away
-  /// from the part's centroid on the whole (sum of n . (x - c) positive);
-  /// where that sum is too small to tell (an open, nearly flat part, as an
-  /// aerial scan), the normals point up (+z) on the whole.
+  /// Away from the part's inside: for a closed part (its normals sum to
+  /// about zero) the sign for which the normals point away from its
+  /// centroid on the whole; an open part whose normals share a side (a
+  /// height field, an aerial scan, a bowl) points up (+z) on the whole,
+  /// unless its normals are about horizontal (a wall), where the centroid
+  /// decides again.
   Outward = 0,
   /// Each normal towards Viewpoint (where the scanner was), point by point.
   TowardsViewpoint = 1,

@@ -56,8 +56,11 @@ struct Results
 
   bool BitIdentical(const Results& other) const
   {
-    auto same = [](const auto& a, const auto& b) {
-      return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(a[0])) == 0;
+    auto same = [](const auto& a, const auto& b)
+    {
+      // Bits, so that NaN equals NaN; an empty vector's data() may be null.
+      return a.size() == b.size() &&
+        (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(a[0])) == 0);
     };
     return same(Minimum, other.Minimum) && same(Maximum, other.Maximum) && same(Mean, other.Mean) &&
       same(Gauss, other.Gauss) && same(MinimumDirection, other.MinimumDirection) &&
