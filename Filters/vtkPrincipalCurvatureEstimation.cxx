@@ -65,7 +65,7 @@ struct CurvatureArrays
   std::vector<vtkSmartPointer<vtkDataArray>> InOrder;
   pcurv::CurvatureBuffers Buffers;
 
-  CurvatureArrays(vtkIdType n, bool adjusted)
+  CurvatureArrays(vtkIdType n, bool adjusted, bool standardError)
   {
     pcurv::CurvatureBuffers& b = this->Buffers;
     b.Minimum = this->Add<vtkDoubleArray>("Minimum_Curvature", 1, n);
@@ -83,6 +83,9 @@ struct CurvatureArrays
     // With the dynamic adjustment only: the neighbour count it aimed at for
     // the point, to compare with Neighbor_Count.
     b.TargetCount = adjusted ? this->Add<vtkIntArray>("Target_Neighbor_Count", 1, n) : nullptr;
+    // With the fits that give one: the standard error of the curvatures.
+    b.StandardError =
+      standardError ? this->Add<vtkDoubleArray>("Curvature_Standard_Error", 1, n) : nullptr;
   }
 
   template<typename ArrayT>
@@ -225,7 +228,8 @@ int vtkPrincipalCurvatureEstimation::RequestData(vtkInformation*,
     normals = nullptr;
   }
 
-  CurvatureArrays arrays(numberOfPoints, this->DynamicAdjustment);
+  CurvatureArrays arrays(
+    numberOfPoints, this->DynamicAdjustment, this->FitMode == ORIENTED_CIRCLES);
   vtkSmartPointer<vtkDoubleArray> estimatedNormals;
   if (this->UsedEstimatedNormals)
   {

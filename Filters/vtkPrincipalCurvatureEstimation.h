@@ -90,7 +90,10 @@ public:
   {
     PREVIOUS = 0,
     NEW01 = 1,
-    NEW02 = 2
+    NEW02 = 2,
+    /// Beyond the paper: every neighbour's circle from its position and its
+    /// normal, one sine fitted at the neighbours' own angles.
+    ORIENTED_CIRCLES = 3
   };
 
   /// How the neighbours of a point are chosen.
@@ -107,11 +110,12 @@ public:
    * accurate with noise, and the fastest; NEW02's choice between its two
    * closed forms picks the noise-biased one too often.
    */
-  vtkSetClampMacro(FitMode, int, PREVIOUS, NEW02);
+  vtkSetClampMacro(FitMode, int, PREVIOUS, ORIENTED_CIRCLES);
   vtkGetMacro(FitMode, int);
   void SetFitModeToPrevious() { this->SetFitMode(PREVIOUS); }
   void SetFitModeToNew01() { this->SetFitMode(NEW01); }
   void SetFitModeToNew02() { this->SetFitMode(NEW02); }
+  void SetFitModeToOrientedCircles() { this->SetFitMode(ORIENTED_CIRCLES); }
   ///@}
 
   ///@{

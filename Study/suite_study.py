@@ -62,13 +62,30 @@ def polydata(data, with_normals):
     return cloud
 
 
+FIT_MODES = {"Previous": 0, "New01": 1, "New02": 2, "OrientedCircles": 3}
+
+
 def configure(curvatures, setting):
+    """default; own-normals; or comma-separated key=value: fit=<mode>, k=<neighbours>,
+    p=<plane distance ratio>, normals=own."""
+    if setting == "default":
+        return
     if setting == "own-normals":
         curvatures.SetNormalsSourceToEstimated()
-    elif setting.startswith("k="):
-        parts = dict(part.split("=") for part in setting.split(","))
+        return
+    parts = dict(part.split("=") for part in setting.split(","))
+    if "fit" in parts:
+        curvatures.SetFitMode(FIT_MODES[parts["fit"]])
+    if "k" in parts:
         curvatures.SetNumberOfNeighbors(int(parts["k"]))
-        curvatures.SetPlaneDistanceRatio(float(parts.get("p", 0.1)))
+    if "p" in parts:
+        curvatures.SetPlaneDistanceRatio(float(parts["p"]))
+    if parts.get("normals") == "own":
+        curvatures.SetNormalsSourceToEstimated()
+
+
+def estimates_normals(setting):
+    return setting == "own-normals" or "normals=own" in setting
 
 
 def measure(shape, data, evaluation, output, exact_normals):
@@ -133,17 +150,17 @@ def main(argv):
         for normals in ("exact", "PCA"):
             data, evaluation = load(arguments.suite, cloud, normals)
             for setting in settings:
-                if setting == "own-normals" and normals == "PCA":
+                if estimates_normals(setting) and normals == "PCA":
                     continue  # points only: the same for both
                 curvatures = vtkPrincipalCurvatureEstimation()
                 curvatures.GlobalWarningDisplayOff()
-                curvatures.SetInputData(polydata(data, setting != "own-normals"))
+                curvatures.SetInputData(polydata(data, not estimates_normals(setting)))
                 configure(curvatures, setting)
                 curvatures.Update()
-                result = measure(cloud["shape"], data, evaluation, curvatures.GetOutput(), normals == "exact"
-                                 and setting != "own-normals")
+                result = measure(cloud["shape"], data, evaluation, curvatures.GetOutput(),
+                                 normals == "exact" and not estimates_normals(setting))
                 result.update({"shape": cloud["shape"], "N": cloud["N"], "noise": cloud["noise"],
-                               "normals": "own" if setting == "own-normals" else normals, "setting": setting})
+                               "normals": "own" if estimates_normals(setting) else normals, "setting": setting})
                 rows.append(result)
                 print("%-10s %6d %4.1f %-5s %-12s error %.4f angle %6.3f unestimated %.3f normals %6.3f" % (
                     cloud["shape"], cloud["N"], cloud["noise"], result["normals"], setting, result["error"],

@@ -232,8 +232,17 @@ public:
   }
 
   /// `target`: the adjustment's target count (0 where it has none).
-  void Store(std::int64_t i, const PointCurvature& r, double s, double p, int target = 0) const
+  void Store(std::int64_t i,
+    const PointCurvature& r,
+    double s,
+    double p,
+    int target = 0,
+    double standardError = NaN) const
   {
+    if (this->Out.StandardError)
+    {
+      this->Out.StandardError[i] = r.Valid ? standardError : NaN;
+    }
     const double kMin = r.Valid ? r.MinimumCurvature : NaN;
     const double kMax = r.Valid ? r.MaximumCurvature : NaN;
     this->Out.Minimum[i] = kMin;
@@ -291,6 +300,10 @@ public:
         { this->Out.Minimum, this->Out.Maximum, this->Out.Mean, this->Out.SineFitRms })
       {
         curvature[i] = curvature[i] * lengthScale;
+      }
+      if (this->Out.StandardError)
+      {
+        this->Out.StandardError[i] = this->Out.StandardError[i] * lengthScale;
       }
       this->Out.Gauss[i] = this->Out.Gauss[i] * lengthScale * lengthScale;
       for (double* length : { this->Out.Surroundings, this->Out.PlaneDistance })
@@ -435,11 +448,16 @@ private:
       s = std::sqrt(this->Grid.SquaredDistanceToKth(x, this->Rule.K + 1, scratch.Distances));
       s = std::nextafter(s, HUGE_VAL); // the query keeps distances < s
     }
-    this->Grid.GatherOffsetsWithinRadius(x, s, scratch.Neighbors);
     // A fixed p of 0 stays 0: every point is then flagged, never silently
     // estimated with some other p.
     const double p =
       this->Rule.FixedPlaneDistance ? this->Rule.PlaneDistance : this->Rule.Ratio * s;
+    if (this->Settings.Mode == FitMode::OrientedCircles)
+    {
+      this->EstimateOriented(point, s, p, scratch);
+      return;
+    }
+    this->Grid.GatherOffsetsWithinRadius(x, s, scratch.Neighbors);
     this->EstimateGathered(point, s, p, scratch);
   }
 
@@ -476,7 +494,11 @@ private:
       }
       const int target = adjustment.GetTargetNeighborCount();
       const double p = adjustment.Adjust(NeighborCount(scratch));
-      if (this->Cloud.IsOwn(point))
+      if (this->Cloud.IsOwn(point) && this->Settings.Mode == FitMode::OrientedCircles)
+      {
+        this->EstimateOriented(point, s, p, scratch, target);
+      }
+      else if (this->Cloud.IsOwn(point))
       {
         this->EstimateGathered(point, s, p, scratch, target);
       }
@@ -503,6 +525,31 @@ private:
     estimator.AddNeighborOffsets(
       offsets.Dx.data(), offsets.Dy.data(), offsets.Dz.data(), offsets.Count);
     this->Out.Store(this->Cloud.InputIds[point], estimator.Estimate(this->Settings), s, p, target);
+  }
+
+  /// FitMode::OrientedCircles: every neighbour within s, with its normal.
+  void EstimateOriented(std::int64_t point,
+    double s,
+    double p,
+    EstimationScratch& scratch,
+    int target = 0)
+  {
+    const double* x = &this->Cloud.Coordinates[3 * point];
+    const double* n = &this->Cloud.Normals[3 * point];
+    OrientedCircleEstimator& estimator = scratch.OrientedEstimator;
+    estimator.Begin({ { n[0], n[1], n[2] } }, s);
+    this->Grid.ForEachWithinRadius(x,
+      s,
+      [&](const double* q, std::int64_t id)
+      {
+        const double offset[3] = { q[0] - x[0], q[1] - x[1], q[2] - x[2] };
+        estimator.AddNeighbor(offset, &this->Cloud.Normals[3 * id]);
+      });
+    double standardError = NaN;
+    const PointCurvature result = estimator.Estimate(this->Settings.MinimumPointsPerDirection,
+      this->Settings.MaximumOpposingFraction,
+      standardError);
+    this->Out.Store(this->Cloud.InputIds[point], result, s, p, target, standardError);
   }
 
   /// Progress every few thousand points, and the stop request.
@@ -672,6 +719,7 @@ EstimationSummary EstimateCloud(CloudPoints cloud,
   FitSettings fit;
   fit.Mode = settings.Mode;
   fit.MinimumPointsPerDirection = settings.MinimumPointsPerDirection;
+  fit.MaximumOpposingFraction = settings.MaximumOpposingFraction;
   const ResultWriter writer(out);
   const std::int64_t numberOfPoints = cloud.GetNumberOfInputPoints();
   for (std::int64_t i = 0; i < numberOfPoints; ++i)

@@ -19,6 +19,7 @@
 #include "CloudStatistics.h"
 #include "DynamicAdjustment.h"
 #include "NormalEstimation.h"
+#include "OrientedCircleFit.h"
 #include "PointGrid.h"
 #include "PrincipalCurvatureCore.h"
 
@@ -52,6 +53,10 @@ struct EstimationSettings
   double PlaneDistanceThreshold = 0.1; ///< p when not automatic
   double PlaneDistanceRatio = 0.1;     ///< p / s when automatic or k nearest
   int MinimumPointsPerDirection = 3;
+  /// OrientedCircles: a point whose neighbours' normals oppose its own for
+  /// more than this fraction of them is not estimated (the neighbourhood
+  /// reaches across the surface).
+  double MaximumOpposingFraction = 0.05;
 
   /// The paper's dynamic variable adjustment instead of the above.
   bool DynamicAdjustment = false;
@@ -90,6 +95,9 @@ struct CurvatureBuffers
   int* NeighborCount = nullptr;
   int* ValidDirections = nullptr;
   int* TargetCount = nullptr;
+  /// With FitMode::OrientedCircles only (may be null): the standard error
+  /// of the curvatures, 1/length.
+  double* StandardError = nullptr;
   /// With EstimateNormals only (may be null): the normals estimated, 3 per
   /// input point (zero where undetermined or the coordinates not finite).
   double* Normals = nullptr;
@@ -121,6 +129,7 @@ struct EstimationSummary
 struct EstimationScratch
 {
   PointCurvatureEstimator Estimator;
+  OrientedCircleEstimator OrientedEstimator;
   DynamicAdjustment Adjustment;
   std::vector<double> Distances;
   NeighborOffsets Neighbors;

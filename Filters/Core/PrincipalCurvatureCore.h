@@ -30,12 +30,15 @@ namespace pcurv
 /// Number of half planes around the normal (the paper's 16 directions).
 constexpr int NumberOfDirections = 16;
 
-/// The three osculating-circle fits of the paper.
+/// The three osculating-circle fits of the paper, and one beyond it.
 enum class FitMode : int
 {
   Previous = 0, ///< eigenvector of the smallest eigenvalue of B (Seibert et al.)
   New01 = 1,    ///< closed form from equations (2) and (3)
-  New02 = 2     ///< better of the closed forms from (1)+(2) and (2)+(3)
+  New02 = 2,    ///< better of the closed forms from (1)+(2) and (2)+(3)
+  /// Every neighbour's circle, from its position and its normal, fitted by
+  /// the sine at the neighbours' own angles (OrientedCircleFit.h).
+  OrientedCircles = 3
 };
 
 using Vector3 = std::array<double, 3>;
@@ -157,6 +160,9 @@ struct FitSettings
   /// where there is no surface around it, e.g. points on a line) do not
   /// determine a circle. Default 0.5.
   double MinimumDirectionExtent = 0.5;
+  /// OrientedCircles: a point is not estimated when more of its neighbours
+  /// than this fraction have a normal opposing its own.
+  double MaximumOpposingFraction = 0.05;
 };
 
 /**

@@ -288,6 +288,84 @@ void TestAdjustmentWithoutSpacing(Checks& checks)
       summary.NumberOfUnestimatedPoints == copies && summary.UsedLengthUnit == 0.0);
   }
 }
+/// The fit beyond the paper: accurate where the normals are exact, its
+/// standard error covering its error, and a neighbourhood that reaches
+/// across a thin part flagged instead of estimated.
+void TestOrientedCircles(Checks& checks)
+{
+  SerialRunner serial;
+  EstimationSettings settings;
+  settings.Mode = FitMode::OrientedCircles;
+  settings.NumberOfNeighbors = 60;
+  const auto torus = testing::Sample(testing::Torus(3.0, 1.0), 30000, 31);
+  Results oriented(torus.size(), false), paper(torus.size(), false);
+  std::vector<double> standardError(torus.size());
+  CurvatureBuffers buffers = oriented.Buffers();
+  buffers.StandardError = standardError.data();
+  EstimateCloud(MakeCloud(torus), settings, Collectives{}, serial, nullptr, buffers);
+  settings.Mode = FitMode::New01;
+  EstimateCloud(MakeCloud(torus), settings, Collectives{}, serial, nullptr, paper.Buffers());
+  const double orientedError = MeanError(torus, oriented), paperError = MeanError(torus, paper);
+  checks.Near("oriented circles: torus, mean |k - exact|", orientedError, 0.0, 0.004);
+  checks.True("oriented circles: at least 3x more accurate than New01 with exact normals",
+    3.0 * orientedError < paperError);
+  int finite = 0;
+  for (std::size_t i = 0; i < torus.size(); ++i)
+  {
+    finite += std::isfinite(standardError[i]) && standardError[i] >= 0.0;
+  }
+  checks.Equal(
+    "oriented circles: a standard error at every point", finite, static_cast<int>(torus.size()));
+
+  // With noise (positions, and the normals estimated from them) the
+  // standard error is the error's scale: it covers it most of the time.
+  auto noisy = torus;
+  testing::AddPositionNoise(noisy, 0.01, 32);
+  settings.Mode = FitMode::OrientedCircles;
+  settings.EstimateNormals = true;
+  settings.NumberOfNeighbors = 200;
+  Results withNoise(noisy.size(), false);
+  CurvatureBuffers noisyBuffers = withNoise.Buffers();
+  noisyBuffers.StandardError = standardError.data();
+  EstimateCloud(MakeCloud(noisy), settings, Collectives{}, serial, nullptr, noisyBuffers);
+  int covered = 0, estimated = 0;
+  for (std::size_t i = 0; i < noisy.size(); ++i)
+  {
+    if (withNoise.Valid[i])
+    {
+      ++estimated;
+      covered +=
+        std::fabs(withNoise.Maximum[i] - torus[i].MaximumCurvature) <= 3.0 * standardError[i];
+    }
+  }
+  checks.True("oriented circles, noisy: the error within 3 standard errors at 90 % of the points",
+    covered >= 0.9 * estimated);
+  settings.EstimateNormals = false;
+
+  // Two sheets 0.05 apart with opposite normals (a thin plate), each 40 x 40
+  // points over [-1, 1]^2: a radius that reaches the other sheet.
+  std::vector<testing::SurfaceSample> plate;
+  for (int sheet = 0; sheet < 2; ++sheet)
+  {
+    for (int i = 0; i < 1600; ++i)
+    {
+      testing::SurfaceSample s{};
+      s.Point = { { -1.0 + 2.0 * (i % 40) / 39.0, -1.0 + 2.0 * (i / 40) / 39.0, sheet * 0.05 } };
+      s.Normal = { { 0.0, 0.0, sheet ? 1.0 : -1.0 } };
+      plate.push_back(s);
+    }
+  }
+  settings.Mode = FitMode::OrientedCircles;
+  settings.AutomaticThresholds = false;
+  settings.SurroundingsThreshold = 0.3;
+  Results thin(plate.size(), false);
+  const EstimationSummary summary =
+    EstimateCloud(MakeCloud(plate), settings, Collectives{}, serial, nullptr, thin.Buffers());
+  checks.Equal("oriented circles: a neighbourhood across a thin plate is flagged",
+    summary.NumberOfUnestimatedPoints,
+    static_cast<std::int64_t>(plate.size()));
+}
+
 /// Exact copies of one point (a lidar's no-return points at the origin,
 /// merged scans) are estimated once: the other points keep their results
 /// bit for bit, every copy gets the copied point's, and (with the copies
@@ -429,5 +507,6 @@ int main()
   TestAdjustmentWithoutSpacing(checks);
   TestNormalEstimation(checks);
   TestRepeatedPoints(checks);
+  TestOrientedCircles(checks);
   return checks.Summary();
 }
