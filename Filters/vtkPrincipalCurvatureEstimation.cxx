@@ -38,7 +38,9 @@ static_assert(
 static_assert(
   vtkPrincipalCurvatureEstimation::RADIUS == static_cast<int>(pcurv::NeighborhoodMode::Radius) &&
     vtkPrincipalCurvatureEstimation::K_NEAREST ==
-      static_cast<int>(pcurv::NeighborhoodMode::KNearest),
+      static_cast<int>(pcurv::NeighborhoodMode::KNearest) &&
+    vtkPrincipalCurvatureEstimation::AUTOMATIC_SCALE ==
+      static_cast<int>(pcurv::NeighborhoodMode::Automatic),
   "NeighborhoodModes must match pcurv::NeighborhoodMode");
 static_assert(vtkPrincipalCurvatureEstimation::PAPER_CONSTANTS ==
       static_cast<int>(pcurv::AdjustmentPreset::Paper) &&
@@ -117,6 +119,7 @@ pcurv::EstimationSettings CoreSettings(vtkPrincipalCurvatureEstimation* self)
   settings.PlaneDistanceThreshold = self->GetPlaneDistanceThreshold();
   settings.PlaneDistanceRatio = self->GetPlaneDistanceRatio();
   settings.MinimumPointsPerDirection = self->GetMinimumPointsPerDirection();
+  settings.AutomaticScaleTolerance = self->GetAutomaticScaleTolerance();
   settings.DynamicAdjustment = self->GetDynamicAdjustment();
   settings.AutomaticLengthUnit = self->GetAutomaticLengthUnit();
   settings.LengthUnit = self->GetLengthUnit();
@@ -166,6 +169,7 @@ vtkPrincipalCurvatureEstimation::vtkPrincipalCurvatureEstimation()
   this->PlaneDistanceThreshold = defaults.PlaneDistanceThreshold;
   this->PlaneDistanceRatio = defaults.PlaneDistanceRatio;
   this->MinimumPointsPerDirection = defaults.MinimumPointsPerDirection;
+  this->AutomaticScaleTolerance = defaults.AutomaticScaleTolerance;
   this->DynamicAdjustment = defaults.DynamicAdjustment;
   this->AutomaticLengthUnit = defaults.AutomaticLengthUnit;
   this->LengthUnit = defaults.LengthUnit;
@@ -461,6 +465,7 @@ void vtkPrincipalCurvatureEstimation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "PlaneDistanceThreshold: " << this->PlaneDistanceThreshold << "\n";
   os << indent << "PlaneDistanceRatio: " << this->PlaneDistanceRatio << "\n";
   os << indent << "MinimumPointsPerDirection: " << this->MinimumPointsPerDirection << "\n";
+  os << indent << "AutomaticScaleTolerance: " << this->AutomaticScaleTolerance << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
   os << indent << "DynamicAdjustment: " << (this->DynamicAdjustment ? "On" : "Off") << "\n";
   os << indent << "AutomaticLengthUnit: " << (this->AutomaticLengthUnit ? "On" : "Off") << "\n";

@@ -99,8 +99,12 @@ public:
   /// How the neighbours of a point are chosen.
   enum NeighborhoodModes
   {
-    RADIUS = 0,   ///< all points closer than the surroundings-threshold
-    K_NEAREST = 1 ///< the NumberOfNeighbors nearest points
+    RADIUS = 0,    ///< all points closer than the surroundings-threshold
+    K_NEAREST = 1, ///< the NumberOfNeighbors nearest points
+    /// Per point, from the data (with ORIENTED_CIRCLES; RADIUS otherwise):
+    /// the largest neighbourhood whose estimate agrees with those of the
+    /// smaller ones within AutomaticScaleTolerance standard errors.
+    AUTOMATIC_SCALE = 2
   };
 
   ///@{
@@ -122,10 +126,22 @@ public:
   /**
    * RADIUS (default) or K_NEAREST neighbourhoods.
    */
-  vtkSetClampMacro(NeighborhoodMode, int, RADIUS, K_NEAREST);
+  vtkSetClampMacro(NeighborhoodMode, int, RADIUS, AUTOMATIC_SCALE);
   vtkGetMacro(NeighborhoodMode, int);
   void SetNeighborhoodModeToRadius() { this->SetNeighborhoodMode(RADIUS); }
   void SetNeighborhoodModeToKNearest() { this->SetNeighborhoodMode(K_NEAREST); }
+  void SetNeighborhoodModeToAutomaticScale() { this->SetNeighborhoodMode(AUTOMATIC_SCALE); }
+  ///@}
+
+  ///@{
+  /**
+   * AUTOMATIC_SCALE: how many standard errors the estimates of two radii may
+   * differ by for the larger radius to be kept (default 2). Larger values
+   * smooth more (larger neighbourhoods), smaller values follow small
+   * features more closely.
+   */
+  vtkSetClampMacro(AutomaticScaleTolerance, double, 0.1, 100.0);
+  vtkGetMacro(AutomaticScaleTolerance, double);
   ///@}
 
   ///@{
@@ -363,6 +379,7 @@ protected:
   double PlaneDistanceThreshold;
   double PlaneDistanceRatio;
   int MinimumPointsPerDirection;
+  double AutomaticScaleTolerance;
   int NumberOfThreads = 0;
   bool DynamicAdjustment;
   bool AutomaticLengthUnit;

@@ -80,6 +80,10 @@ def configure(curvatures, setting):
         curvatures.SetNumberOfNeighbors(int(parts["k"]))
     if "p" in parts:
         curvatures.SetPlaneDistanceRatio(float(parts["p"]))
+    if parts.get("mode") == "auto":
+        curvatures.SetNeighborhoodMode(2)
+    if "tol" in parts:
+        curvatures.SetAutomaticScaleTolerance(float(parts["tol"]))
     if parts.get("normals") == "own":
         curvatures.SetNormalsSourceToEstimated()
 
@@ -136,6 +140,8 @@ def main(argv):
     parser.add_argument("--peers")
     parser.add_argument("--setting", action="append", help="default, own-normals, k=N[,p=R] (repeatable)")
     parser.add_argument("--sizes", default="20000,200000")
+    parser.add_argument("--noise", default="0,0.1,0.5", help="noise levels to run (fractions of h)")
+    parser.add_argument("--shapes", default=",".join(LARGEST_CURVATURE), help="shapes to run")
     parser.add_argument("--csv", help="write every measurement to this file")
     arguments = parser.parse_args(argv)
     settings = arguments.setting or ["default", "own-normals"]
@@ -145,7 +151,9 @@ def main(argv):
 
     rows = []
     for cloud in meta["clouds"]:
-        if cloud["N"] not in sizes or cloud["name"].endswith("_pca30"):
+        if (cloud["N"] not in sizes or cloud["name"].endswith("_pca30")
+                or cloud["noise"] not in [float(v) for v in arguments.noise.split(",")]
+                or cloud["shape"] not in arguments.shapes.split(",")):
             continue
         for normals in ("exact", "PCA"):
             data, evaluation = load(arguments.suite, cloud, normals)

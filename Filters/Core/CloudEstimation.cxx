@@ -28,9 +28,23 @@ struct WorkingUnit
   double ToInputLength(double length) const { return length / this->Scale; }
 };
 
+/// NeighborhoodMode::Automatic: the radii tried at each point and the rule
+/// that picks one (ItemEstimator::EstimateAutomaticScale).
+struct AutomaticScaleRule
+{
+  int BaseCount = 16;       // the first radius holds this many neighbours
+  int Levels = 8;           // radii base 2^(i/2), i < Levels: about 2000 neighbours at most
+  double Precision = 1e-3;  // a standard error this small (times the curvature) ends the growth
+  int MinimumCount = 12;    // fewer neighbours give no estimate to compare
+  double Tolerance = 2.0;   // standard errors two estimates may differ by
+  double LargestRadius = 0; // no radius beyond this (a length)
+};
+
 /// How neighbourhoods and thresholds are chosen for every point.
 struct NeighborhoodRule
 {
+  bool AutomaticScale = false; // per point, by AutomaticScaleRule
+  AutomaticScaleRule Automatic;
   bool KNearest = false;
   int K = 0;
   double Radius = 0.0;             // RADIUS mode
@@ -99,6 +113,19 @@ NeighborhoodRule ChooseThresholds(const EstimationSettings& settings,
   rule.K = settings.NumberOfNeighbors;
   rule.Ratio = settings.PlaneDistanceRatio;
   rule.Adjusted = settings.DynamicAdjustment;
+  if (!rule.Adjusted && settings.Neighborhood == NeighborhoodMode::Automatic &&
+    settings.Mode == FitMode::OrientedCircles)
+  {
+    rule.AutomaticScale = true;
+    rule.Automatic.Tolerance = settings.AutomaticScaleTolerance;
+    const double base = TypicalRadius(cloud, processes, boxes, rule.Automatic.BaseCount);
+    rule.Automatic.LargestRadius = base * std::pow(2.0, 0.5 * (rule.Automatic.Levels - 1));
+    rule.Radius = base; // reported as the used s: the typical first radius
+    rule.PlaneDistance = 0.0;
+    rule.CellRadius = 2.0 * base;
+    rule.Reach = rule.Automatic.LargestRadius;
+    return rule;
+  }
   if (rule.Adjusted)
   {
     summary.TargetNeighborCounts =
@@ -440,6 +467,11 @@ private:
       this->Out.StoreUnestimated(this->Cloud.InputIds[point]);
       return;
     }
+    if (this->Rule.AutomaticScale)
+    {
+      this->EstimateAutomaticScale(point, scratch);
+      return;
+    }
     const double* x = &this->Cloud.Coordinates[3 * point];
     double s = this->Rule.Radius;
     if (this->Rule.KNearest)
@@ -545,11 +577,107 @@ private:
         const double offset[3] = { q[0] - x[0], q[1] - x[1], q[2] - x[2] };
         estimator.AddNeighbor(offset, &this->Cloud.Normals[3 * id]);
       });
-    double standardError = NaN;
-    const PointCurvature result = estimator.Estimate(this->Settings.MinimumPointsPerDirection,
-      this->Settings.MaximumOpposingFraction,
-      standardError);
-    this->Out.Store(this->Cloud.InputIds[point], result, s, p, target, standardError);
+    const OrientedCircleResult result = estimator.Estimate(
+      this->Settings.MinimumPointsPerDirection, this->Settings.MaximumOpposingFraction);
+    this->Out.Store(
+      this->Cloud.InputIds[point], result.Curvature, s, p, target, result.StandardError);
+  }
+
+  /// NeighborhoodMode::Automatic (OrientedCircles): the neighbourhood grows
+  /// from the AutomaticScaleBase nearest by a factor of 2 in count (sqrt 2 in
+  /// radius), shell by shell into the same sums, and the largest radius is
+  /// kept whose curvatures agree with those of every smaller radius within
+  /// AutomaticScaleTolerance times their standard errors (Lepski's rule):
+  /// as long as the estimates agree, a larger neighbourhood only averages
+  /// the noise out; once they part, the surface's shape (bias) has begun to
+  /// show. A radius at which too many neighbours' normals oppose the point's
+  /// stops the growth (the neighbourhood would reach across the surface).
+  void EstimateAutomaticScale(std::int64_t point, EstimationScratch& scratch)
+  {
+    const double* x = &this->Cloud.Coordinates[3 * point];
+    const double* n = &this->Cloud.Normals[3 * point];
+    const AutomaticScaleRule& rule = this->Rule.Automatic;
+    // k + 1: the point itself is found too.
+    const double base =
+      std::sqrt(this->Grid.SquaredDistanceToKth(x, rule.BaseCount + 1, scratch.Distances));
+    const double unit = std::nextafter(std::min(base, rule.LargestRadius), HUGE_VAL);
+    const TangentFrame frame = MakeTangentFrame({ { n[0], n[1], n[2] } });
+    OrientedCircleSums sums;
+    OrientedCircleResult chosen;
+    double chosenRadius = NaN;
+    std::vector<OrientedCircleResult>& accepted = scratch.Scales;
+    accepted.clear();
+    double inner = 0.0;
+    for (int level = 0; level < rule.Levels; ++level)
+    {
+      const double r = std::min(unit * std::pow(2.0, 0.5 * level), rule.LargestRadius);
+      const double innerSquared = inner * inner;
+      this->Grid.ForEachWithinRadius(x,
+        r,
+        [&](const double* q, std::int64_t id)
+        {
+          const double d[3] = { (q[0] - x[0]) / unit, (q[1] - x[1]) / unit, (q[2] - x[2]) / unit };
+          const double squared = (q[0] - x[0]) * (q[0] - x[0]) + (q[1] - x[1]) * (q[1] - x[1]) +
+            (q[2] - x[2]) * (q[2] - x[2]);
+          if (squared >= innerSquared)
+          {
+            sums.Add(frame, d, &this->Cloud.Normals[3 * id]);
+          }
+        });
+      inner = r;
+      if (sums.Opposing > this->Settings.MaximumOpposingFraction * sums.Neighbors)
+      {
+        break;
+      }
+      const OrientedCircleResult result = FitOrientedCircles(sums,
+        frame,
+        1.0 / unit,
+        this->Settings.MinimumPointsPerDirection,
+        this->Settings.MaximumOpposingFraction);
+      if (result.Curvature.Valid && sums.Neighbors >= rule.MinimumCount)
+      {
+        if (!AgreesWithSmaller(result, accepted, rule.Tolerance))
+        {
+          break;
+        }
+        accepted.push_back(result);
+        chosen = result;
+        chosenRadius = r;
+        // More neighbours would not change the estimate measurably: done.
+        const double magnitude = std::max({ std::fabs(result.Curvature.MinimumCurvature),
+          std::fabs(result.Curvature.MaximumCurvature), 1.0 / r });
+        if (result.StandardError < rule.Precision * magnitude)
+        {
+          break;
+        }
+      }
+      if (r >= rule.LargestRadius)
+      {
+        break;
+      }
+    }
+    this->Out.Store(
+      this->Cloud.InputIds[point], chosen.Curvature, chosenRadius, 0.0, 0, chosen.StandardError);
+  }
+
+  /// Lepski's test: the principal curvatures agree with each smaller
+  /// radius's within `tolerance` times the sum of their standard errors.
+  static bool AgreesWithSmaller(const OrientedCircleResult& candidate,
+    const std::vector<OrientedCircleResult>& smaller,
+    double tolerance)
+  {
+    for (const OrientedCircleResult& other : smaller)
+    {
+      const double allowed = tolerance * (candidate.StandardError + other.StandardError);
+      if (std::fabs(candidate.Curvature.MinimumCurvature - other.Curvature.MinimumCurvature) >
+          allowed ||
+        std::fabs(candidate.Curvature.MaximumCurvature - other.Curvature.MaximumCurvature) >
+          allowed)
+      {
+        return false;
+      }
+    }
+    return true;
   }
 
   /// Progress every few thousand points, and the stop request.

@@ -35,8 +35,12 @@ namespace pcurv
 /// How the neighbours of a point are chosen.
 enum class NeighborhoodMode : int
 {
-  Radius = 0,  ///< all points closer than the surroundings-threshold
-  KNearest = 1 ///< the NumberOfNeighbors nearest points
+  Radius = 0,   ///< all points closer than the surroundings-threshold
+  KNearest = 1, ///< the NumberOfNeighbors nearest points
+  /// Per point, from the data: the largest neighbourhood whose estimate
+  /// agrees with those of the smaller ones within their standard errors
+  /// (FitMode::OrientedCircles only; the paper's fits use Radius then).
+  Automatic = 2
 };
 
 /// Every setting of an estimation, lengths in the input's unit. The
@@ -57,6 +61,9 @@ struct EstimationSettings
   /// more than this fraction of them is not estimated (the neighbourhood
   /// reaches across the surface).
   double MaximumOpposingFraction = 0.05;
+  /// NeighborhoodMode::Automatic: how many standard errors the estimates of
+  /// two radii may differ by for the larger to be kept.
+  double AutomaticScaleTolerance = 2.0;
 
   /// The paper's dynamic variable adjustment instead of the above.
   bool DynamicAdjustment = false;
@@ -134,6 +141,7 @@ struct EstimationScratch
   std::vector<double> Distances;
   NeighborOffsets Neighbors;
   std::vector<std::pair<double, std::int64_t>> Ranked;
+  std::vector<OrientedCircleResult> Scales;
 };
 
 /// Told how far the work is, from one thread; returns false to stop.

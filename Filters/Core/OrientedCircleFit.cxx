@@ -3,7 +3,6 @@
 #include <Eigen/Dense>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <limits>
 
@@ -17,9 +16,49 @@ using Matrix5 = Eigen::Matrix<double, 5, 5>;
 /// A variance below this (in units of the scale) is taken as this: exact
 /// data would otherwise get an infinite weight.
 constexpr double VarianceFloor = 1e-24;
+constexpr double Pi = 3.141592653589793;
 
-/// The unknowns (C, A, B, tilt u, tilt v) of one fit and its normal
-/// equations' inverse.
+/// Adds weight * row row^T to an upper triangle, weight * target * row to
+/// a right-hand side.
+void AddRow(const double row[5],
+  double target,
+  double weight,
+  std::array<double, 15>& matrix,
+  std::array<double, 5>& right)
+{
+  int k = 0;
+  for (int a = 0; a < 5; ++a)
+  {
+    const double wa = weight * row[a];
+    right[a] += wa * target;
+    for (int b = a; b < 5; ++b)
+    {
+      matrix[k++] += wa * row[b];
+    }
+  }
+}
+
+Matrix5 Full(const std::array<double, 15>& upper)
+{
+  Matrix5 m;
+  int k = 0;
+  for (int a = 0; a < 5; ++a)
+  {
+    for (int b = a; b < 5; ++b)
+    {
+      m(a, b) = m(b, a) = upper[k++];
+    }
+  }
+  return m;
+}
+
+Vector5 Full(const std::array<double, 5>& right)
+{
+  return Vector5(right[0], right[1], right[2], right[3], right[4]);
+}
+
+/// The unknowns (C, A, B, tilt u, tilt v) and the inverse of the normal
+/// matrix; invalid when it is singular to working precision.
 struct Solution
 {
   bool Valid = false;
@@ -27,13 +66,11 @@ struct Solution
   Matrix5 Inverse = Matrix5::Zero();
 };
 
-/// Weighted least squares from normal equations; invalid when they are
-/// singular to working precision.
 Solution Solve(const Matrix5& normal, const Vector5& right)
 {
   Solution solution;
-  Eigen::LDLT<Matrix5> ldlt(normal);
   const double largest = normal.diagonal().maxCoeff();
+  Eigen::LDLT<Matrix5> ldlt(normal);
   if (ldlt.info() != Eigen::Success || !(largest > 0.0) ||
     !(ldlt.vectorD().cwiseAbs().minCoeff() > 1e-12 * largest))
   {
@@ -41,21 +78,166 @@ Solution Solve(const Matrix5& normal, const Vector5& right)
   }
   solution.X = ldlt.solve(right);
   solution.Inverse = ldlt.solve(Matrix5::Identity());
-  solution.Valid = solution.X.allFinite();
+  solution.Valid = solution.X.allFinite() && solution.Inverse.allFinite();
   return solution;
 }
+
+/// The mean squared residual of a least-squares solution from the sums:
+/// sum (row x - y)^2 = sum y^2 - x . b at the solution.
+double ResidualVariance(const Solution& s, const Vector5& right, double targets, int rows)
+{
+  return std::max(0.0, targets - s.X.dot(right)) / std::max(1, rows - 5);
+}
+
+/// The largest circular gap between the occupied eighths of 2 phi is below
+/// a half-turn, and at least three are occupied (the sine fit's rule).
+bool AnglesDetermineSine(std::uint32_t positions)
+{
+  int occupied = 0, largestGap = 0;
+  for (int i = 0; i < 8; ++i)
+  {
+    if (positions & (1u << i))
+    {
+      ++occupied;
+      int gap = 1;
+      while (gap < 8 && !(positions & (1u << ((i + gap) % 8))))
+      {
+        ++gap;
+      }
+      largestGap = std::max(largestGap, gap);
+    }
+  }
+  return occupied >= 3 && largestGap < 4;
+}
+
+int PopCount(std::uint32_t bits)
+{
+  int count = 0;
+  for (; bits; bits &= bits - 1)
+  {
+    ++count;
+  }
+  return count;
+}
 } // namespace
+
+void OrientedCircleSums::Add(const TangentFrame& frame, const double d[3], const double* normal)
+{
+  const double squared = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+  if (!(squared > 0.0))
+  {
+    return; // at the query point: no direction, no curvature
+  }
+  const Vector3& n = frame.Normal;
+  const double u = d[0] * frame.V0[0] + d[1] * frame.V0[1] + d[2] * frame.V0[2];
+  const double v = d[0] * frame.W0[0] + d[1] * frame.W0[1] + d[2] * frame.W0[2];
+  const double h = d[0] * n[0] + d[1] * n[1] + d[2] * n[2];
+  const double rho2 = u * u + v * v;
+  double cos2 = 0.0, sin2 = 0.0;
+  if (rho2 > 0.0) // on the normal line a neighbour has no angle
+  {
+    cos2 = (u * u - v * v) / rho2;
+    sin2 = 2.0 * u * v / rho2;
+    const int sector = static_cast<int>(std::floor((std::atan2(v, u) + Pi) / (2.0 * Pi) * 16.0));
+    this->Sectors |= 1u << std::min(std::max(sector, 0), 15);
+    const int position = static_cast<int>(std::floor((std::atan2(sin2, cos2) + Pi) / (Pi / 4.0)));
+    this->HalfTurnPositions |= 1u << std::min(std::max(position, 0), 7);
+  }
+  double row[5] = { squared, squared * cos2, squared * sin2, 2.0 * u, 2.0 * v };
+  AddRow(row, 2.0 * h, 1.0, this->PositionMatrix, this->PositionRight);
+  this->PositionTargets += 4.0 * h * h;
+  ++this->Neighbors;
+  if (normal && (normal[0] != 0.0 || normal[1] != 0.0 || normal[2] != 0.0))
+  {
+    // The paper's sign: a circle bending towards n has positive curvature.
+    const double t =
+      -((normal[0] - n[0]) * d[0] + (normal[1] - n[1]) * d[1] + (normal[2] - n[2]) * d[2]);
+    row[3] = u;
+    row[4] = v;
+    AddRow(row, t, 1.0 / squared, this->NormalMatrix, this->NormalRight);
+    this->NormalTargets += t * t / squared;
+    ++this->NeighborsWithNormal;
+    this->Opposing += normal[0] * n[0] + normal[1] * n[1] + normal[2] * n[2] < 0.0;
+  }
+}
+
+OrientedCircleResult FitOrientedCircles(const OrientedCircleSums& sums,
+  const TangentFrame& frame,
+  double inverseScale,
+  int minimumNeighbors,
+  double maximumOpposing)
+{
+  OrientedCircleResult result;
+  PointCurvature& out = result.Curvature;
+  result.StandardError = std::numeric_limits<double>::quiet_NaN();
+  out.NeighborCount = sums.Neighbors;
+  out.ValidDirections = PopCount(sums.Sectors);
+  if (sums.Neighbors < std::max(minimumNeighbors, 6) ||
+    sums.Opposing > maximumOpposing * sums.Neighbors ||
+    !AnglesDetermineSine(sums.HalfTurnPositions))
+  {
+    return result;
+  }
+  const Matrix5 positionMatrix = Full(sums.PositionMatrix);
+  const Vector5 positionRight = Full(sums.PositionRight);
+  const Solution positions = Solve(positionMatrix, positionRight);
+  if (!positions.Valid)
+  {
+    return result;
+  }
+  const double positionVariance =
+    std::max(ResidualVariance(positions, positionRight, sums.PositionTargets, sums.Neighbors),
+      VarianceFloor);
+  Solution combined = positions;
+  if (sums.NeighborsWithNormal >= 6)
+  {
+    const Matrix5 normalMatrix = Full(sums.NormalMatrix);
+    const Vector5 normalRight = Full(sums.NormalRight);
+    const Solution normals = Solve(normalMatrix, normalRight);
+    if (normals.Valid)
+    {
+      const double normalVariance = std::max(
+        ResidualVariance(normals, normalRight, sums.NormalTargets, sums.NeighborsWithNormal),
+        VarianceFloor);
+      const Solution both = Solve(positionMatrix / positionVariance + normalMatrix / normalVariance,
+        positionRight / positionVariance + normalRight / normalVariance);
+      combined = both.Valid ? both : combined;
+    }
+  }
+
+  const Matrix5 covariance = positions.Inverse * positionVariance;
+  const double c = combined.X[1], s = combined.X[2];
+  const double amplitude = std::hypot(c, s);
+  const double amplitudeVariance = amplitude > 0.0
+    ? (c * c * covariance(1, 1) + 2.0 * c * s * covariance(1, 2) + s * s * covariance(2, 2)) /
+      (amplitude * amplitude)
+    : std::max(covariance(1, 1), covariance(2, 2));
+  result.StandardError =
+    std::sqrt(std::max(0.0, covariance(0, 0)) + std::max(0.0, amplitudeVariance)) * inverseScale;
+
+  SineFit sine;
+  sine.Valid = true;
+  sine.Offset = combined.X[0] * inverseScale;
+  sine.CosineAmplitude = c * inverseScale;
+  sine.SineAmplitude = s * inverseScale;
+  // The positions' residual (in 2 h) as a curvature: over the RMS of D.
+  const double rmsD = std::sqrt(positionMatrix(0, 0) / sums.Neighbors);
+  sine.RmsResidual = rmsD > 0.0 ? std::sqrt(positionVariance) / rmsD * inverseScale : 0.0;
+  sine.ValidDirections = out.ValidDirections;
+  PrincipalCurvaturesFromSine(sine, frame, out);
+  out.NeighborCount = sums.Neighbors;
+  if (!out.Valid)
+  {
+    result.StandardError = std::numeric_limits<double>::quiet_NaN();
+  }
+  return result;
+}
 
 void OrientedCircleEstimator::Begin(const Vector3& unitNormal, double scale)
 {
   this->Frame = MakeTangentFrame(unitNormal);
   this->InverseScale = 1.0 / scale;
-  this->Opposing = 0;
-  for (std::vector<double>* values : { &this->U, &this->V, &this->H, &this->D, &this->T })
-  {
-    values->clear();
-  }
-  this->HasNormal.clear();
+  this->Sums = OrientedCircleSums{};
 }
 
 void OrientedCircleEstimator::AddNeighbor(const double offset[3], const double normal[3])
@@ -63,199 +245,7 @@ void OrientedCircleEstimator::AddNeighbor(const double offset[3], const double n
   const double d[3] = {
     offset[0] * this->InverseScale, offset[1] * this->InverseScale, offset[2] * this->InverseScale
   };
-  const double squared = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-  if (!(squared > 0.0))
-  {
-    return; // at the query point: no direction, no curvature
-  }
-  const Vector3& n = this->Frame.Normal;
-  this->U.push_back(d[0] * this->Frame.V0[0] + d[1] * this->Frame.V0[1] + d[2] * this->Frame.V0[2]);
-  this->V.push_back(d[0] * this->Frame.W0[0] + d[1] * this->Frame.W0[1] + d[2] * this->Frame.W0[2]);
-  this->H.push_back(d[0] * n[0] + d[1] * n[1] + d[2] * n[2]);
-  this->D.push_back(squared);
-  const bool hasNormal = normal[0] != 0.0 || normal[1] != 0.0 || normal[2] != 0.0;
-  double t = 0.0;
-  if (hasNormal)
-  {
-    // The paper's sign: a circle bending towards n has positive curvature.
-    t = -((normal[0] - n[0]) * d[0] + (normal[1] - n[1]) * d[1] + (normal[2] - n[2]) * d[2]);
-    this->Opposing += normal[0] * n[0] + normal[1] * n[1] + normal[2] * n[2] < 0.0;
-  }
-  this->T.push_back(t);
-  this->HasNormal.push_back(hasNormal);
-}
-
-PointCurvature OrientedCircleEstimator::Estimate(int minimumNeighbors,
-  double maximumOpposing,
-  double& standardError) const
-{
-  PointCurvature out;
-  standardError = std::numeric_limits<double>::quiet_NaN();
-  const std::size_t count = this->U.size();
-  out.NeighborCount = static_cast<int>(count);
-  if (count < static_cast<std::size_t>(std::max(minimumNeighbors, 6)) ||
-    this->Opposing > maximumOpposing * static_cast<double>(count))
-  {
-    return out;
-  }
-  // The angles must not all lie in a closed half-turn of 2 phi (the sine
-  // fit's rule): 8 positions of 2 phi, the largest gap below 4.
-  std::array<bool, NumberOfDirections> sector{};
-  std::array<bool, 8> halfTurn{};
-  std::vector<double> cos2(count), sin2(count);
-  for (std::size_t j = 0; j < count; ++j)
-  {
-    const double rho2 = this->U[j] * this->U[j] + this->V[j] * this->V[j];
-    if (!(rho2 > 0.0))
-    {
-      continue; // on the normal line: no direction (its rows carry no angle)
-    }
-    cos2[j] = (this->U[j] * this->U[j] - this->V[j] * this->V[j]) / rho2;
-    sin2[j] = 2.0 * this->U[j] * this->V[j] / rho2;
-    const double angle = std::atan2(this->V[j], this->U[j]); // (-pi, pi]
-    const int s = static_cast<int>(std::floor((angle + M_PI) / (2.0 * M_PI) * NumberOfDirections));
-    sector[std::min(std::max(s, 0), NumberOfDirections - 1)] = true;
-    const int p =
-      static_cast<int>(std::floor((std::atan2(sin2[j], cos2[j]) + M_PI) / (M_PI / 4.0)));
-    halfTurn[std::min(std::max(p, 0), 7)] = true;
-  }
-  int occupied = 0, largestGap = 0;
-  for (int i = 0; i < 8; ++i)
-  {
-    occupied += halfTurn[i];
-    if (halfTurn[i])
-    {
-      int gap = 1;
-      while (gap < 8 && !halfTurn[(i + gap) % 8])
-      {
-        ++gap;
-      }
-      largestGap = std::max(largestGap, gap);
-    }
-  }
-  out.ValidDirections = static_cast<int>(std::count(sector.begin(), sector.end(), true));
-  if (occupied < 3 || largestGap >= 4)
-  {
-    return out;
-  }
-
-  // Rows: positions [D, D cos, D sin, 2u, 2v] -> 2h; normals [D, D cos,
-  // D sin, u, v] -> t. Weights: wPosition each, wNormal / D each.
-  auto fit = [&](double wPosition, double wNormal)
-  {
-    Matrix5 normal = Matrix5::Zero();
-    Vector5 right = Vector5::Zero();
-    for (std::size_t j = 0; j < count; ++j)
-    {
-      const double dj = this->D[j];
-      Vector5 row;
-      row << dj, dj * cos2[j], dj * sin2[j], 2.0 * this->U[j], 2.0 * this->V[j];
-      if (wPosition > 0.0)
-      {
-        normal.noalias() += wPosition * row * row.transpose();
-        right.noalias() += wPosition * 2.0 * this->H[j] * row;
-      }
-      if (wNormal > 0.0 && this->HasNormal[j])
-      {
-        row[3] = this->U[j];
-        row[4] = this->V[j];
-        normal.noalias() += (wNormal / dj) * row * row.transpose();
-        right.noalias() += (wNormal / dj) * this->T[j] * row;
-      }
-    }
-    return Solve(normal, right);
-  };
-  // Mean squared residuals of each kind under a solution: positions in h,
-  // normals per unit of D (their error grows like |d|).
-  auto residuals = [&](const Solution& s, double& position, double& normal, int& normals)
-  {
-    position = normal = 0.0;
-    normals = 0;
-    for (std::size_t j = 0; j < count; ++j)
-    {
-      const double dj = this->D[j];
-      const double curvature = s.X[0] + s.X[1] * cos2[j] + s.X[2] * sin2[j];
-      const double ep =
-        dj * curvature + 2.0 * (s.X[3] * this->U[j] + s.X[4] * this->V[j]) - 2.0 * this->H[j];
-      position += ep * ep;
-      if (this->HasNormal[j])
-      {
-        const double en = dj * curvature + s.X[3] * this->U[j] + s.X[4] * this->V[j] - this->T[j];
-        normal += en * en / dj;
-        ++normals;
-      }
-    }
-    position /= std::max<double>(1.0, static_cast<double>(count) - 5.0);
-    normal /= std::max(1.0, normals - 5.0);
-  };
-
-  const Solution positionsOnly = fit(1.0, 0.0);
-  if (!positionsOnly.Valid)
-  {
-    return out;
-  }
-  double positionVariance = 0.0, normalVariance = 0.0, unused = 0.0;
-  int normals = 0;
-  residuals(positionsOnly, positionVariance, unused, normals);
-  Solution combined = positionsOnly;
-  if (normals >= 6)
-  {
-    const Solution normalsOnly = fit(0.0, 1.0);
-    if (normalsOnly.Valid)
-    {
-      double unusedPosition = 0.0;
-      residuals(normalsOnly, unusedPosition, normalVariance, normals);
-      const Solution both = fit(1.0 / std::max(positionVariance, VarianceFloor),
-        1.0 / std::max(normalVariance, VarianceFloor));
-      if (both.Valid)
-      {
-        combined = both;
-      }
-    }
-  }
-
-  // The standard error of the positions-only fit: the neighbours' estimated
-  // normals share their neighbourhoods, so their errors are correlated and
-  // the combined fit's covariance would understate its error; the
-  // positions' errors are independent, and the combined fit is at least as
-  // good as the positions alone.
-  const Matrix5 covariance = positionsOnly.Inverse * std::max(positionVariance, VarianceFloor);
-  const double amplitude = std::hypot(combined.X[1], combined.X[2]);
-  const double amplitudeVariance = amplitude > 0.0
-    ? (combined.X[1] * combined.X[1] * covariance(1, 1) +
-        2.0 * combined.X[1] * combined.X[2] * covariance(1, 2) +
-        combined.X[2] * combined.X[2] * covariance(2, 2)) /
-      (amplitude * amplitude)
-    : std::max(covariance(1, 1), covariance(2, 2));
-  standardError = std::sqrt(std::max(0.0, covariance(0, 0)) + std::max(0.0, amplitudeVariance)) *
-    this->InverseScale;
-
-  // RMS of the position rows' residuals as curvatures (residual / D).
-  double rms = 0.0;
-  for (std::size_t j = 0; j < count; ++j)
-  {
-    const double dj = this->D[j];
-    const double curvature = combined.X[0] + combined.X[1] * cos2[j] + combined.X[2] * sin2[j];
-    const double e = curvature +
-      (2.0 * (combined.X[3] * this->U[j] + combined.X[4] * this->V[j]) - 2.0 * this->H[j]) / dj;
-    rms += e * e;
-  }
-  rms = std::sqrt(rms / static_cast<double>(count));
-
-  SineFit sine;
-  sine.Valid = true;
-  sine.Offset = combined.X[0] * this->InverseScale;
-  sine.CosineAmplitude = combined.X[1] * this->InverseScale;
-  sine.SineAmplitude = combined.X[2] * this->InverseScale;
-  sine.RmsResidual = rms * this->InverseScale;
-  sine.ValidDirections = out.ValidDirections;
-  PrincipalCurvaturesFromSine(sine, this->Frame, out);
-  out.NeighborCount = static_cast<int>(count);
-  if (!out.Valid)
-  {
-    standardError = std::numeric_limits<double>::quiet_NaN();
-  }
-  return out;
+  this->Sums.Add(this->Frame, d, normal);
 }
 
 } // namespace pcurv

@@ -8,7 +8,7 @@
  * kappa(phi) = C + A cos 2 phi + B sin 2 phi, is fitted to all of them at the
  * neighbours' own angles phi instead of 16 half planes. No VTK.
  *
- * In the tangent frame of x (paper sign, lengths in units of the scale):
+ * In the tangent frame of x (paper sign, lengths in units of a scale):
  * with d = q - x, D = |d|^2, h = d . n, phi the angle of d's tangential part,
  * - position: the circle through x and q centred on the normal line has
  *   kappa D = 2 h exactly;
@@ -16,22 +16,70 @@
  * A tilt delta of the query normal adds delta . d to -(n_q - n) . d and
  * 2 delta . d to 2 h: two tangential unknowns absorb it, so a noisy query
  * normal (PCA normals) does not bias the curvatures. The two kinds of rows
- * are weighted by the inverse of their own residual variance, measured in
- * a first pass: positions dominate where the normals are poor, normals where
- * the positions are noisy (normals' errors grow like |d|, positions' do
- * not, and the weights follow).
+ * are weighted by the inverse of their own residual variance, each kind
+ * fitted alone first: positions dominate where the normals are poor,
+ * normals where the positions are noisy (normals' errors grow like |d|,
+ * their rows are weighted by 1 / D).
+ *
+ * Everything the fit needs is a sum over the neighbours (OrientedCircleSums),
+ * so that a neighbourhood can grow shell by shell, and the fit of every
+ * radius on the way costs one small solve (the automatic scale).
  */
 #ifndef OrientedCircleFit_h
 #define OrientedCircleFit_h
 
 #include "PrincipalCurvatureCore.h"
 
-#include <cstddef>
-#include <vector>
+#include <array>
+#include <cstdint>
 
 namespace pcurv
 {
 
+/// The least-squares sums of the neighbours added so far, in the frame of
+/// the query point and in units of a fixed scale.
+struct OrientedCircleSums
+{
+  /// Upper triangles (15) and right-hand sides (5) of the positions' and the
+  /// normals' normal equations, and the sums of their squared targets.
+  std::array<double, 15> PositionMatrix{}, NormalMatrix{};
+  std::array<double, 5> PositionRight{}, NormalRight{};
+  double PositionTargets = 0.0, NormalTargets = 0.0;
+  int Neighbors = 0;
+  int NeighborsWithNormal = 0;
+  int Opposing = 0;
+  /// Occupied sixteenths of the turn (phi), and eighths of 2 phi.
+  std::uint32_t Sectors = 0;
+  std::uint32_t HalfTurnPositions = 0;
+
+  /// Adds a neighbour: its offset (in units of the scale), its unit normal
+  /// or null, in the query's frame. At the query point: ignored.
+  void Add(const TangentFrame& frame, const double d[3], const double* normal);
+};
+
+/// What the fit of some sums gives: the curvatures (output sign, in
+/// 1/length after `inverseScale`), and their standard error (1/length): the
+/// positions-only fit's (the neighbours' estimated normals share their
+/// neighbourhoods, so their errors are correlated and a combined
+/// covariance would understate the error; the combined fit is at least as
+/// good as the positions alone).
+struct OrientedCircleResult
+{
+  PointCurvature Curvature;
+  double StandardError = 0.0;
+};
+
+/// Fits the sums; invalid with fewer than `minimumNeighbors` (at least 6)
+/// neighbours, angles within a closed half-turn of 2 phi, or more than the
+/// fraction `maximumOpposing` of the neighbours with a normal opposing the
+/// query's (the neighbourhood reaches across the surface).
+OrientedCircleResult FitOrientedCircles(const OrientedCircleSums& sums,
+  const TangentFrame& frame,
+  double inverseScale,
+  int minimumNeighbors,
+  double maximumOpposing);
+
+/// One query at one scale: Begin, AddNeighbor per neighbour, Estimate.
 class OrientedCircleEstimator
 {
 public:
@@ -40,32 +88,23 @@ public:
   void Begin(const Vector3& unitNormal, double scale);
 
   /// Adds a neighbour by its offset q - x and its unit normal (zero: the
-  /// position alone is used). Neighbours at the query point are ignored.
+  /// position alone is used).
   void AddNeighbor(const double offset[3], const double normal[3]);
 
-  int GetNumberOfNeighbors() const { return static_cast<int>(this->U.size()); }
+  const OrientedCircleSums& GetSums() const { return this->Sums; }
+  const TangentFrame& GetFrame() const { return this->Frame; }
+  double GetInverseScale() const { return this->InverseScale; }
 
-  /// Neighbours whose normal points against the query's (n_q . n < 0): the
-  /// neighbourhood reaches across the surface (a thin part, two sheets).
-  int GetNumberOfOpposingNormals() const { return this->Opposing; }
-
-  /// The principal curvatures and directions (output sign), or an invalid
-  /// result when the neighbours do not determine them (too few, on a line,
-  /// or too many opposing normals: more than `maximumOpposing` of them).
-  /// `standardError` receives the standard error of the curvatures (the
-  /// fit's covariance, 1/length), NaN when invalid.
-  PointCurvature Estimate(int minimumNeighbors,
-    double maximumOpposing,
-    double& standardError) const;
+  OrientedCircleResult Estimate(int minimumNeighbors, double maximumOpposing) const
+  {
+    return FitOrientedCircles(
+      this->Sums, this->Frame, this->InverseScale, minimumNeighbors, maximumOpposing);
+  }
 
 private:
   TangentFrame Frame{};
   double InverseScale = 1.0;
-  int Opposing = 0;
-  // Per neighbour, in units of the scale: tangential coordinates, height,
-  // squared distance, the normal term -(n_q - n) . d, and whether it has one.
-  std::vector<double> U, V, H, D, T;
-  std::vector<unsigned char> HasNormal;
+  OrientedCircleSums Sums;
 };
 
 } // namespace pcurv

@@ -69,7 +69,8 @@ proxy = next(p for p in ElementTree.parse(xml_path).iter("SourceProxy")
 enumerations = {
     "FitMode": {"Previous": filter_defaults.PREVIOUS, "New01": filter_defaults.NEW01,
                 "New02": filter_defaults.NEW02, "OrientedCircles": filter_defaults.ORIENTED_CIRCLES},
-    "NeighborhoodMode": {"Radius": filter_defaults.RADIUS, "K Nearest": filter_defaults.K_NEAREST},
+    "NeighborhoodMode": {"Radius": filter_defaults.RADIUS, "K Nearest": filter_defaults.K_NEAREST,
+                         "Automatic": filter_defaults.AUTOMATIC_SCALE},
     "NormalsSource": {"Automatic": filter_defaults.AUTOMATIC_NORMALS,
                       "Input Array": filter_defaults.INPUT_NORMALS,
                       "Estimated": filter_defaults.ESTIMATED_NORMALS},
