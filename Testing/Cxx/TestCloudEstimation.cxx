@@ -366,6 +366,47 @@ void TestOrientedCircles(Checks& checks)
     static_cast<std::int64_t>(plate.size()));
 }
 
+/// The automatic neighbourhood: accurate on a clean torus, noise answered by
+/// larger radii, radii that differ from point to point, the same numbers on
+/// any number of threads, and a thin plate flagged.
+void TestAutomaticScale(Checks& checks)
+{
+  EstimationSettings settings;
+  settings.Mode = FitMode::OrientedCircles;
+  settings.Neighborhood = NeighborhoodMode::Automatic;
+  SerialRunner serial;
+  const auto torus = testing::Sample(testing::Torus(3.0, 1.0), 30000, 41);
+  Results clean(torus.size(), false);
+  EstimateCloud(MakeCloud(torus), settings, Collectives{}, serial, nullptr, clean.Buffers());
+  checks.Near(
+    "automatic scale: clean torus, mean |k - exact|", MeanError(torus, clean), 0.0, 0.004);
+
+  auto noisy = torus;
+  testing::AddPositionNoise(noisy, 0.02, 42);
+  Results withNoise(noisy.size(), false), threaded(noisy.size(), false);
+  settings.EstimateNormals = true;
+  EstimateCloud(MakeCloud(noisy), settings, Collectives{}, serial, nullptr, withNoise.Buffers());
+  ThreadRunner threads(3);
+  EstimateCloud(MakeCloud(noisy), settings, Collectives{}, threads, nullptr, threaded.Buffers());
+  checks.True("automatic scale: 3 threads bit-identical to 1", withNoise.BitIdentical(threaded));
+  std::vector<double> cleanRadii(clean.Surroundings), noisyRadii(withNoise.Surroundings);
+  std::nth_element(
+    cleanRadii.begin(), cleanRadii.begin() + cleanRadii.size() / 2, cleanRadii.end());
+  std::nth_element(
+    noisyRadii.begin(), noisyRadii.begin() + noisyRadii.size() / 2, noisyRadii.end());
+  checks.True("automatic scale: noise gets larger radii (median)",
+    noisyRadii[noisyRadii.size() / 2] > 1.3 * cleanRadii[cleanRadii.size() / 2]);
+  const auto [smallest, largest] =
+    std::minmax_element(withNoise.Surroundings.begin(), withNoise.Surroundings.end());
+  checks.True("automatic scale: the radius differs between points", *largest > 1.4 * *smallest);
+  settings.Mode = FitMode::New01;
+  settings.Neighborhood = NeighborhoodMode::Radius;
+  Results paper(noisy.size(), false);
+  EstimateCloud(MakeCloud(noisy), settings, Collectives{}, serial, nullptr, paper.Buffers());
+  checks.True("automatic scale: noisy torus, more accurate than New01 with its default radius",
+    MeanError(noisy, withNoise) < MeanError(noisy, paper));
+}
+
 /// Exact copies of one point (a lidar's no-return points at the origin,
 /// merged scans) are estimated once: the other points keep their results
 /// bit for bit, every copy gets the copied point's, and (with the copies
@@ -508,5 +549,6 @@ int main()
   TestNormalEstimation(checks);
   TestRepeatedPoints(checks);
   TestOrientedCircles(checks);
+  TestAutomaticScale(checks);
   return checks.Summary();
 }

@@ -597,9 +597,10 @@ void CheckCloudEstimation(Bytes& in)
 {
   pcurv::EstimationSettings settings;
   const std::uint8_t flags = in.Byte();
-  settings.Mode = static_cast<pcurv::FitMode>(flags % 3);
+  settings.Mode = static_cast<pcurv::FitMode>(flags % 4);
   settings.Neighborhood =
-    (flags & 4) ? pcurv::NeighborhoodMode::KNearest : pcurv::NeighborhoodMode::Radius;
+    static_cast<pcurv::NeighborhoodMode>(((flags >> 2) & 1) + ((flags >> 7) & 1));
+  settings.EstimateNormals = (flags & 128) && (flags & 1);
   settings.AutomaticThresholds = !(flags & 8);
   settings.DynamicAdjustment = flags & 16;
   settings.AutomaticLengthUnit = !(flags & 32);
