@@ -3,7 +3,7 @@
 Run with ParaView's Python:
 
     pvpython Scripts/estimate_curvatures.py INPUT OUTPUT(.vtp|.ply|.csv)
-        [--fit-mode Previous|New01|New02] [--neighbors N] [--k-nearest]
+        [--fit-mode OrientedCircles|Previous|New01|New02] [--neighbors N] [--k-nearest]
         [--radius S [--plane-distance P]]
         [--dynamic-adjustment [paper|ladder|noisy-ladder]]
         [--normals NAME | --estimate-normals] [--orientation outward|viewpoint|axis]
@@ -59,7 +59,7 @@ DEFAULT_PLUGIN = os.path.join(
 TEXT_EXTENSIONS = (".xyz", ".pwn", ".txt", ".pts", ".csv")
 INPUT_EXTENSIONS = (".vtp", ".vtu", ".ply", ".off") + TEXT_EXTENSIONS
 OUTPUT_EXTENSIONS = (".vtp", ".ply", ".csv")
-FIT_MODES = ("Previous", "New01", "New02")
+FIT_MODES = ("Previous", "New01", "New02", "OrientedCircles")
 
 # Names of normal components stored as separate scalars (matched ignoring case).
 NORMAL_COMPONENT_NAMES = (("nx", "ny", "nz"), ("normal_x", "normal_y", "normal_z"),
@@ -84,10 +84,12 @@ def parse_arguments(argv):
         epilog="\n\n".join(__doc__.split("\n\n")[3:]), formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("input", help="point cloud with normals (%s)" % " ".join(INPUT_EXTENSIONS))
     parser.add_argument("output", help="result (%s, by the extension)" % " ".join(OUTPUT_EXTENSIONS))
-    parser.add_argument("--fit-mode", choices=FIT_MODES, default="New01",
-                        help="circle fit per direction (default: New01)")
+    parser.add_argument("--fit-mode", choices=FIT_MODES,
+                        help="the fit (default: OrientedCircles with the automatic neighbourhood; New01, the "
+                             "paper's, with --dynamic-adjustment)")
     parser.add_argument("--neighbors", type=int, metavar="N",
-                        help="target neighbour count of the automatic radius, or k with --k-nearest (default: 375)")
+                        help="a fixed neighbourhood: the radius holding about N neighbours, or k with --k-nearest "
+                             "(default: chosen per point from the data)")
     parser.add_argument("--k-nearest", action="store_true", help="use the N nearest neighbours instead of a radius")
     parser.add_argument("--radius", type=float, metavar="S",
                         help="fixed surroundings-threshold s (turns the automatic thresholds off)")
@@ -124,6 +126,8 @@ def parse_arguments(argv):
             parser.error("--plane-distance needs --radius (automatic thresholds derive it from the radius)")
         if not arguments.plane_distance > 0:
             parser.error("--plane-distance must be positive")
+    if arguments.fit_mode is None:
+        arguments.fit_mode = "New01" if arguments.dynamic_adjustment else "OrientedCircles"
     if arguments.dynamic_adjustment and (arguments.radius or arguments.k_nearest or arguments.neighbors):
         parser.error("--dynamic-adjustment replaces --neighbors, --k-nearest and --radius")
     if arguments.threads < 0:
@@ -426,6 +430,8 @@ def configure(curvatures, arguments):
     """Sets the filter's properties from the command line."""
     curvatures.FitMode = arguments.fit_mode
     curvatures.NumberOfThreads = arguments.threads
+    fixed = arguments.neighbors or arguments.k_nearest or arguments.radius
+    curvatures.NeighborhoodMode = "Radius" if fixed else "Automatic"
     if arguments.dynamic_adjustment:
         curvatures.DynamicAdjustment = 1
         for name, value in ADJUSTMENTS[arguments.dynamic_adjustment].items():
@@ -448,6 +454,8 @@ def neighbourhood_description(curvatures):
             " ".join("%g" % v for v in getattr(curvatures, name))
             for name in ("TargetNeighborCounts", "TargetPlaneDistances", "SwitchLengths"))
     k, automatic = curvatures.NumberOfNeighbors, curvatures.AutomaticThresholds
+    if curvatures.NeighborhoodMode == "Automatic" and curvatures.FitMode == "OrientedCircles":
+        return "automatic: per point, the largest radius whose curvatures agree with the smaller ones'"
     if curvatures.NeighborhoodMode == "K Nearest":
         neighbours = "the %d nearest points" % k
         plane = "p = %g x median distance to the %d-th neighbour" % (curvatures.PlaneDistanceRatio, k) \

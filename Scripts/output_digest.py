@@ -23,6 +23,12 @@ def configure_default(f):
     pass
 
 
+def configure_paper_default(f):
+    """The filter's defaults before the fit beyond the paper became one."""
+    f.SetFitModeToNew01()
+    f.SetNeighborhoodModeToRadius()
+
+
 def configure_previous(f):
     f.SetFitModeToPrevious()
 
@@ -32,21 +38,25 @@ def configure_new02(f):
 
 
 def configure_k_nearest(f):
+    f.SetFitModeToNew01()
     f.SetNeighborhoodModeToKNearest()
     f.SetNumberOfNeighbors(120)
 
 
 def configure_fixed(f):
+    f.SetFitModeToNew01()
     f.AutomaticThresholdsOff()
     f.SetSurroundingsThreshold(0.35)
     f.SetPlaneDistanceThreshold(0.04)
 
 
 def configure_dva_paper(f):
+    f.SetFitModeToNew01()
     f.DynamicAdjustmentOn()
 
 
 def configure_dva_ladder(f):
+    f.SetFitModeToNew01()
     f.DynamicAdjustmentOn()
     f.SetAdjustmentConstantsToBandedLadder(375, 0.2)
 
@@ -58,6 +68,7 @@ def configure_one_thread(f):
 
 SETTINGS = [
     ("default", configure_default),
+    ("paper_default", configure_paper_default),
     ("previous", configure_previous),
     ("new02", configure_new02),
     ("k_nearest", configure_k_nearest),

@@ -113,8 +113,10 @@ NeighborhoodRule ChooseThresholds(const EstimationSettings& settings,
   rule.K = settings.NumberOfNeighbors;
   rule.Ratio = settings.PlaneDistanceRatio;
   rule.Adjusted = settings.DynamicAdjustment;
+  // The automatic neighbourhood is OrientedCircles' (the paper's fits need a
+  // radius and a plane distance), and yields to thresholds the user fixed.
   if (!rule.Adjusted && settings.Neighborhood == NeighborhoodMode::Automatic &&
-    settings.Mode == FitMode::OrientedCircles)
+    settings.Mode == FitMode::OrientedCircles && settings.AutomaticThresholds)
   {
     rule.AutomaticScale = true;
     rule.Automatic.Tolerance = settings.AutomaticScaleTolerance;

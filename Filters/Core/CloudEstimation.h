@@ -39,7 +39,8 @@ enum class NeighborhoodMode : int
   KNearest = 1, ///< the NumberOfNeighbors nearest points
   /// Per point, from the data: the largest neighbourhood whose estimate
   /// agrees with those of the smaller ones within their standard errors
-  /// (FitMode::OrientedCircles only; the paper's fits use Radius then).
+  /// (FitMode::OrientedCircles with automatic thresholds; otherwise, the
+  /// paper's fits or fixed thresholds, Radius).
   Automatic = 2
 };
 
@@ -47,8 +48,8 @@ enum class NeighborhoodMode : int
 /// defaults here are the filter's defaults.
 struct EstimationSettings
 {
-  FitMode Mode = FitMode::New01;
-  NeighborhoodMode Neighborhood = NeighborhoodMode::Radius;
+  FitMode Mode = FitMode::OrientedCircles;
+  NeighborhoodMode Neighborhood = NeighborhoodMode::Automatic;
   /// s and p derived from the cloud (s: median distance to the
   /// NumberOfNeighbors-th neighbour; p = PlaneDistanceRatio s).
   bool AutomaticThresholds = true;

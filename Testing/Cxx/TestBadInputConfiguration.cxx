@@ -246,6 +246,7 @@ void TestSettings(Checks& checks)
     const Outcome o = Run(cloud,
       [](vtkPrincipalCurvatureEstimation* g)
       {
+        g->SetFitModeToNew01(); // the half planes' thickness: the paper's fits
         g->AutomaticThresholdsOff();
         g->SetSurroundingsThreshold(0.8);
         g->SetPlaneDistanceThreshold(0.0);

@@ -137,7 +137,23 @@ void TestTypesAndInputs(Checks& checks)
     }
     grid->SetPoints(points);
     grid->GetPointData()->SetNormals(normals);
-    CheckSphereOfRadius2(checks, row, grid, Run(grid), 0.01);
+    // New01 with its fixed radius estimates every point; the automatic
+    // neighbourhood starts from the 16 nearest, which near the poles lie on
+    // one parallel (no spread of directions), and flags the few points
+    // where no radius up to its largest gives a determined fit.
+    CheckSphereOfRadius2(checks,
+      row + ", New01",
+      grid,
+      Run(grid, [](vtkPrincipalCurvatureEstimation* f) { f->SetFitModeToNew01(); }),
+      0.01);
+    vtkIdType estimated = 0;
+    const Outcome automatic = Run(grid);
+    checks.Below(Label(row, "default: curvature 1/2").c_str(),
+      LargestError(automatic, 0.5, 0.5, &estimated),
+      0.01);
+    checks.True(
+      Label(row, "default: 99 % estimated").c_str(), estimated >= 0.99 * grid->GetNumberOfPoints());
+    CheckContract(checks, row, automatic, grid->GetPointData()->GetNormals());
   }
   {
     const std::string row = "integer coordinates (VTK_INT) and normals (vtkIntArray)";

@@ -164,7 +164,10 @@ void TestAccuracyAndSign(Checks& checks)
   const auto sphere = testing::Sample(testing::Sphere(2.0), 20000, 11);
   SerialRunner serial;
   Results r(sphere.size(), false);
-  const EstimationSummary summary = Estimate(sphere, EstimationSettings{}, r, serial);
+  EstimationSettings paper;
+  paper.Mode = FitMode::New01;
+  paper.Neighborhood = NeighborhoodMode::Radius;
+  const EstimationSummary summary = Estimate(sphere, paper, r, serial);
   checks.True("sphere: every point estimated", summary.NumberOfUnestimatedPoints == 0);
   checks.Near("sphere: k = +1/R with outward normals", MeanError(sphere, r), 0.0, 0.01);
   checks.True("sphere: automatic s reported", summary.UsedSurroundingsThreshold > 0.0);
@@ -296,6 +299,7 @@ void TestOrientedCircles(Checks& checks)
   SerialRunner serial;
   EstimationSettings settings;
   settings.Mode = FitMode::OrientedCircles;
+  settings.Neighborhood = NeighborhoodMode::Radius;
   settings.NumberOfNeighbors = 60;
   const auto torus = testing::Sample(testing::Torus(3.0, 1.0), 30000, 31);
   Results oriented(torus.size(), false), paper(torus.size(), false);
@@ -322,6 +326,7 @@ void TestOrientedCircles(Checks& checks)
   auto noisy = torus;
   testing::AddPositionNoise(noisy, 0.01, 32);
   settings.Mode = FitMode::OrientedCircles;
+  settings.Neighborhood = NeighborhoodMode::Radius; // one fixed scale
   settings.EstimateNormals = true;
   settings.NumberOfNeighbors = 200;
   Results withNoise(noisy.size(), false);

@@ -71,6 +71,7 @@ void TestConstantSetters(Checks& checks)
   checks.True("ladder switch lengths 4.5, 3.2, 7.2",
     switches[0] == 4.5 && switches[1] == 3.2 && switches[2] == 7.2);
   vtkNew<vtkPrincipalCurvatureEstimation> preset;
+  preset->SetFitModeToNew01(); // the paper's fit
   preset->SetAdjustmentConstantsToPreset(vtkPrincipalCurvatureEstimation::NOISY_LADDER);
   bool samePreset = true;
   for (int i = 0; i < 3; ++i)
@@ -190,6 +191,7 @@ double BestFixedRadius(Checks& checks,
     for (const double ratio : ratios)
     {
       vtkNew<vtkPrincipalCurvatureEstimation> fixed;
+      fixed->SetFitModeToNew01(); // the paper's fit
       fixed->AutomaticThresholdsOff();
       fixed->SetSurroundingsThreshold(s);
       fixed->SetPlaneDistanceThreshold(ratio * s);
@@ -226,11 +228,14 @@ void TestVaryingDensity(Checks& checks)
   std::printf("noise-free torus, density varying 10x:\n");
   auto clean = VaryingDensityTorus(0.0);
   vtkNew<vtkPrincipalCurvatureEstimation> byDefault;
+  byDefault->SetFitModeToNew01(); // the paper's fit
   const double defaultError = Run(byDefault, clean, "filter default (fixed, automatic)").Error;
   vtkNew<vtkPrincipalCurvatureEstimation> paper;
+  paper->SetFitModeToNew01(); // the paper's fit
   paper->DynamicAdjustmentOn();
   const Result paperResult = Run(paper, clean, "DVA, paper's targets");
   vtkNew<vtkPrincipalCurvatureEstimation> ladder;
+  ladder->SetFitModeToNew01(); // the paper's fit
   ladder->DynamicAdjustmentOn();
   ladder->SetAdjustmentConstantsToPreset(vtkPrincipalCurvatureEstimation::LADDER);
   const Result ladderResult = Run(ladder, clean, "DVA, banded ladder 375, p = 0.2 L");
@@ -259,15 +264,18 @@ void TestVaryingDensity(Checks& checks)
   std::printf("torus, density varying 10x, noise 0.5 spacing:\n");
   auto noisy = VaryingDensityTorus(0.5);
   vtkNew<vtkPrincipalCurvatureEstimation> noisyDefault;
+  noisyDefault->SetFitModeToNew01(); // the paper's fit
   const double noisyDefaultError =
     Run(noisyDefault, noisy, "filter default (fixed, automatic)").Error;
   vtkNew<vtkPrincipalCurvatureEstimation> thick;
+  thick->SetFitModeToNew01(); // the paper's fit
   thick->DynamicAdjustmentOn();
   thick->SetTargetPlaneDistances(0.4, 0.2, 0.1); // p = s / 10 at the targets
   const Result thickResult = Run(thick, noisy, "DVA, paper's counts, p = s / 10");
   checks.Below(
     "DVA (p = s/10) beats the default fixed radius (noisy)", thickResult.Error, noisyDefaultError);
   vtkNew<vtkPrincipalCurvatureEstimation> noisyLadder;
+  noisyLadder->SetFitModeToNew01(); // the paper's fit
   noisyLadder->DynamicAdjustmentOn();
   noisyLadder->SetAdjustmentConstantsToPreset(vtkPrincipalCurvatureEstimation::NOISY_LADDER);
   const Result noisyLadderResult = Run(noisyLadder, noisy, "DVA, banded ladder 1000, p = 0.6 L");
@@ -290,6 +298,7 @@ void TestVaryingDensity(Checks& checks)
 vtkSmartPointer<vtkPolyData> RunAdjusted(vtkPolyData* cloud, int threads, double blockLength = 8.0)
 {
   vtkNew<vtkPrincipalCurvatureEstimation> filter;
+  filter->SetFitModeToNew01(); // the paper's fit
   filter->DynamicAdjustmentOn();
   filter->SetNumberOfThreads(threads);
   filter->SetAdjustmentBlockLength(blockLength);

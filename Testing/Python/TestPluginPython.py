@@ -41,7 +41,7 @@ from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
 from vtkmodules.vtkCommonCore import vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkPolyData
 
-FIT_MODES = ("Previous", "New01", "New02")  # in the order of their values 0, 1, 2
+FIT_MODES = ("Previous", "New01", "New02", "OrientedCircles")  # in the order of their values 0..3
 POINT_COUNT = 20000
 SPHERE_RADIUS = 2.0
 CYLINDER_RADIUS = 1.0
@@ -250,7 +250,9 @@ def check_property_errors():
     source = cloud_source(points, normals)
     factory = curvature_filter_factory()
     curvatures = factory(Input=source)
-    check(curvatures.FitMode == "New01", "FitMode defaults to 'New01' (is %r)" % curvatures.FitMode)
+    check(curvatures.FitMode == "OrientedCircles", "FitMode defaults to 'OrientedCircles' (is %r)" % curvatures.FitMode)
+    check(curvatures.NeighborhoodMode == "Automatic",
+          "NeighborhoodMode defaults to 'Automatic' (is %r)" % curvatures.NeighborhoodMode)
     for mode in FIT_MODES:
         built = factory(Input=source, FitMode=mode)
         check(built.FitMode == mode, "PrincipalCurvatures(FitMode='%s') keeps the name" % mode)
@@ -270,7 +272,7 @@ def check_property_errors():
     raises(lambda: setattr(curvatures, "NoSuchProperty", 1), "an unknown property", AttributeError)
     raises(lambda: factory(Input=source, FitMode="NoSuchMode"), "PrincipalCurvatures(FitMode='NoSuchMode')",
            ValueError)
-    check(curvatures.FitMode == "New01", "a rejected value leaves FitMode unchanged")
+    check(curvatures.FitMode == "OrientedCircles", "a rejected value leaves FitMode unchanged")
     simple.Delete(curvatures)
     simple.Delete(source)
 
