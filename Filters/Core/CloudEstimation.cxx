@@ -647,7 +647,8 @@ private:
         chosenRadius = r;
         // More neighbours would not change the estimate measurably: done.
         const double magnitude = std::max({ std::fabs(result.Curvature.MinimumCurvature),
-          std::fabs(result.Curvature.MaximumCurvature), 1.0 / r });
+          std::fabs(result.Curvature.MaximumCurvature),
+          1.0 / r });
         if (result.StandardError < rule.Precision * magnitude)
         {
           break;
