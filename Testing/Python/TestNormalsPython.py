@@ -25,14 +25,7 @@ from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
 from vtkmodules.vtkCommonCore import vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkPolyData
 
-failures = []
-
-
-def check(condition, message):
-    print(("ok     " if condition else "FAILED ") + message, flush=True)
-    if not condition:
-        failures.append(message)
-    return condition
+from test_checks import check, failures  # noqa: E402 (the tests' folder is on sys.path)
 
 
 def sphere(count=20000, radius=2.0):

@@ -48,15 +48,7 @@ CYLINDER_RADIUS = 1.0
 CYLINDER_HEIGHT = 8.0
 GOLDEN_ANGLE = math.pi * (3.0 - math.sqrt(5.0))
 
-failures = []
-
-
-def check(condition, message):
-    """Prints one result line and remembers a failure."""
-    print(("ok     " if condition else "FAILED ") + message, flush=True)
-    if not condition:
-        failures.append(message)
-    return condition
+from test_checks import check, failures  # noqa: E402 (the tests' folder is on sys.path)
 
 
 # ---------------------------------------------------------------------------

@@ -38,15 +38,7 @@ from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkCommonCore import VTK_DOUBLE, VTK_STRING, VTK_UNSIGNED_CHAR
 
 READER_NAME = "ASCIIPointCloudReader"
-failures = []
-
-
-def check(condition, message):
-    """Prints one result line and remembers a failure."""
-    print(("ok     " if condition else "FAILED ") + message, flush=True)
-    if not condition:
-        failures.append(message)
-    return condition
+from test_checks import check, failures  # noqa: E402 (the tests' folder is on sys.path)
 
 
 def write(folder, name, text, mode="w"):
