@@ -85,6 +85,8 @@ struct CurvatureArrays
     // With the dynamic adjustment only: the neighbour count it aimed at for
     // the point, to compare with Neighbor_Count.
     b.TargetCount = adjusted ? this->Add<vtkIntArray>("Target_Neighbor_Count", 1, n) : nullptr;
+    b.ShapeIndex = this->Add<vtkDoubleArray>("Shape_Index", 1, n);
+    b.Curvedness = this->Add<vtkDoubleArray>("Curvedness", 1, n);
     // With the fits that give one: the standard error of the curvatures.
     b.StandardError =
       standardError ? this->Add<vtkDoubleArray>("Curvature_Standard_Error", 1, n) : nullptr;

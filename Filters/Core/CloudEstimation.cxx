@@ -250,6 +250,19 @@ struct ProcessingOrder
   }
 };
 
+/// Koenderink and van Doorn's shape index of an estimate (NaN where it has
+/// none or both curvatures are 0: a plane has no shape); scale free.
+double ShapeIndex(const PointCurvature& r)
+{
+  if (!r.Valid || (r.MinimumCurvature == 0.0 && r.MaximumCurvature == 0.0))
+  {
+    return NaN;
+  }
+  constexpr double TwoOverPi = 0.6366197723675814;
+  return TwoOverPi *
+    std::atan2(r.MaximumCurvature + r.MinimumCurvature, r.MaximumCurvature - r.MinimumCurvature);
+}
+
 /// Writes one point's results into the caller's buffers (each point by
 /// exactly one thread), in the working unit until ToInputUnit.
 class ResultWriter
@@ -271,6 +284,10 @@ public:
     if (this->Out.StandardError)
     {
       this->Out.StandardError[i] = r.Valid ? standardError : NaN;
+    }
+    if (this->Out.ShapeIndex)
+    {
+      this->Out.ShapeIndex[i] = ShapeIndex(r);
     }
     const double kMin = r.Valid ? r.MinimumCurvature : NaN;
     const double kMax = r.Valid ? r.MaximumCurvature : NaN;
@@ -351,9 +368,14 @@ public:
            this->Out.Gauss,
            this->Out.SineFitRms,
            this->Out.Surroundings,
-           this->Out.PlaneDistance })
+           this->Out.PlaneDistance,
+           this->Out.StandardError,
+           this->Out.ShapeIndex })
     {
-      values[to] = values[from];
+      if (values)
+      {
+        values[to] = values[from];
+      }
     }
     for (double* vectors :
       { this->Out.MinimumDirection, this->Out.MaximumDirection, this->Out.Normals })
@@ -369,6 +391,20 @@ public:
     if (this->Out.TargetCount)
     {
       this->Out.TargetCount[to] = this->Out.TargetCount[from];
+    }
+  }
+
+  /// The curvedness from the curvatures in the input's unit.
+  void WriteCurvedness(std::int64_t numberOfPoints) const
+  {
+    if (!this->Out.Curvedness)
+    {
+      return;
+    }
+    for (std::int64_t i = 0; i < numberOfPoints; ++i)
+    {
+      const double a = this->Out.Minimum[i], b = this->Out.Maximum[i];
+      this->Out.Curvedness[i] = std::sqrt(0.5 * (a * a + b * b));
     }
   }
 
@@ -876,6 +912,7 @@ EstimationSummary EstimateCloud(CloudPoints cloud,
   }
   summary.NumberOfUnestimatedPoints = writer.CountUnestimated(numberOfPoints);
   writer.ToInputUnit(numberOfPoints, unit);
+  writer.WriteCurvedness(numberOfPoints);
   return summary;
 }
 

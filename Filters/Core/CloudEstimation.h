@@ -103,6 +103,13 @@ struct CurvatureBuffers
   int* NeighborCount = nullptr;
   int* ValidDirections = nullptr;
   int* TargetCount = nullptr;
+  /// Derived (may be null): Koenderink and van Doorn's shape index,
+  /// (2/pi) atan2(k_max + k_min, k_max - k_min), in [-1, 1] (+1 a convex
+  /// cap such as a sphere with outward normals, +1/2 a ridge such as a
+  /// cylinder, 0 a symmetric saddle, -1 a cup; NaN where both curvatures
+  /// are 0), and the curvedness sqrt((k_min^2 + k_max^2) / 2), 1/length.
+  double* ShapeIndex = nullptr;
+  double* Curvedness = nullptr;
   /// With FitMode::OrientedCircles only (may be null): the standard error
   /// of the curvatures, 1/length.
   double* StandardError = nullptr;

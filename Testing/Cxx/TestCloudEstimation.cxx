@@ -412,6 +412,65 @@ void TestAutomaticScale(Checks& checks)
     MeanError(noisy, withNoise) < MeanError(noisy, paper));
 }
 
+/// Shape index and curvedness with the output's signs: a sphere with
+/// outward normals is a cap (+1), a cylinder a ridge (+1/2), and with the
+/// normals turned inwards a cup (-1) and a rut (-1/2).
+void TestShapeIndex(Checks& checks)
+{
+  SerialRunner serial;
+  struct Case
+  {
+    const char* Name;
+    testing::Surface Surface;
+    double Index;
+    double Curvedness;
+  };
+  const Case cases[] = { { "sphere R 2", testing::Sphere(2.0), 1.0, 0.5 },
+    { "cylinder r 1", testing::Cylinder(1.0, 8.0), 0.5, std::sqrt(0.5) } };
+  for (const Case& c : cases)
+  {
+    for (const double side : { 1.0, -1.0 })
+    {
+      auto samples = testing::Sample(c.Surface, 20000, 51);
+      for (auto& sample : samples)
+      {
+        sample.Normal = testing::Scale(side, sample.Normal);
+      }
+      Results r(samples.size(), false);
+      std::vector<double> index(samples.size()), curvedness(samples.size());
+      CurvatureBuffers buffers = r.Buffers();
+      buffers.ShapeIndex = index.data();
+      buffers.Curvedness = curvedness.data();
+      EstimateCloud(
+        MakeCloud(samples), EstimationSettings{}, Collectives{}, serial, nullptr, buffers);
+      std::vector<double> interiorIndex, interiorCurvedness;
+      for (std::size_t i = 0; i < samples.size(); ++i)
+      {
+        if (r.Valid[i] && samples[i].BoundaryDistance > 1.0)
+        {
+          interiorIndex.push_back(index[i]);
+          interiorCurvedness.push_back(curvedness[i]);
+        }
+      }
+      std::nth_element(interiorIndex.begin(),
+        interiorIndex.begin() + interiorIndex.size() / 2,
+        interiorIndex.end());
+      std::nth_element(interiorCurvedness.begin(),
+        interiorCurvedness.begin() + interiorCurvedness.size() / 2,
+        interiorCurvedness.end());
+      const std::string label = std::string(c.Name) + (side > 0 ? ", outward" : ", inward");
+      checks.Near((label + ": shape index (median)").c_str(),
+        interiorIndex[interiorIndex.size() / 2],
+        side * c.Index,
+        0.02);
+      checks.Near((label + ": curvedness (median)").c_str(),
+        interiorCurvedness[interiorCurvedness.size() / 2],
+        c.Curvedness,
+        0.01 * c.Curvedness);
+    }
+  }
+}
+
 /// Exact copies of one point (a lidar's no-return points at the origin,
 /// merged scans) are estimated once: the other points keep their results
 /// bit for bit, every copy gets the copied point's, and (with the copies
@@ -555,5 +614,6 @@ int main()
   TestRepeatedPoints(checks);
   TestOrientedCircles(checks);
   TestAutomaticScale(checks);
+  TestShapeIndex(checks);
   return checks.Summary();
 }
