@@ -663,7 +663,7 @@ private:
           }
         });
       inner = r;
-      if (sums.Opposing > this->Settings.MaximumOpposingFraction * sums.Neighbors)
+      if (sums.ReachesAcross(this->Settings.MaximumOpposingFraction))
       {
         break;
       }

@@ -147,18 +147,52 @@ void OrientedCircleSums::Add(const TangentFrame& frame, const double d[3], const
   AddRow(row, 2.0 * h, 1.0, this->PositionMatrix, this->PositionRight);
   this->PositionTargets += 4.0 * h * h;
   ++this->Neighbors;
+  this->SquaredDistances += squared;
   if (normal && (normal[0] != 0.0 || normal[1] != 0.0 || normal[2] != 0.0))
   {
+    const bool opposing = normal[0] * n[0] + normal[1] * n[1] + normal[2] * n[2] < 0.0;
+    const double side = opposing ? -1.0 : 1.0;
     // The paper's sign: a circle bending towards n has positive curvature.
-    const double t =
-      -((normal[0] - n[0]) * d[0] + (normal[1] - n[1]) * d[1] + (normal[2] - n[2]) * d[2]);
+    const double t = -((side * normal[0] - n[0]) * d[0] + (side * normal[1] - n[1]) * d[1] +
+      (side * normal[2] - n[2]) * d[2]);
     row[3] = u;
     row[4] = v;
     AddRow(row, t, 1.0 / squared, this->NormalMatrix, this->NormalRight);
     this->NormalTargets += t * t / squared;
     ++this->NeighborsWithNormal;
-    this->Opposing += normal[0] * n[0] + normal[1] * n[1] + normal[2] * n[2] < 0.0;
+    this->Opposing += opposing;
+    (opposing ? this->OpposingHeights : this->AgreeingHeights) += h;
+    (opposing ? this->OpposingSquaredHeights : this->AgreeingSquaredHeights) += h * h;
   }
+  else
+  {
+    this->AgreeingHeights += h;
+    this->AgreeingSquaredHeights += h * h;
+  }
+}
+
+bool OrientedCircleSums::ReachesAcross(double maximumOpposing) const
+{
+  if (this->Opposing == 0 || !(this->Opposing > maximumOpposing * this->Neighbors))
+  {
+    return false;
+  }
+  if (this->Opposing == this->Neighbors)
+  {
+    return true; // every neighbour's normal opposes the point's own
+  }
+  const double opposing = this->Opposing, agreeing = this->Neighbors - this->Opposing;
+  const double opposingLevel = this->OpposingHeights / opposing;
+  const double agreeingLevel = this->AgreeingHeights / agreeing;
+  // The heights' spread about each group's level, pooled.
+  const double spread = std::max(0.0,
+    (this->OpposingSquaredHeights - opposing * opposingLevel * opposingLevel +
+      this->AgreeingSquaredHeights - agreeing * agreeingLevel * agreeingLevel) /
+      std::max(1.0, opposing + agreeing - 2.0));
+  const double difference = std::fabs(opposingLevel - agreeingLevel);
+  const double size = std::sqrt(this->SquaredDistances / this->Neighbors);
+  return difference > 3.0 * std::sqrt(spread * (1.0 / opposing + 1.0 / agreeing)) &&
+    difference > 0.05 * size;
 }
 
 OrientedCircleResult FitOrientedCircles(const OrientedCircleSums& sums,
@@ -172,8 +206,7 @@ OrientedCircleResult FitOrientedCircles(const OrientedCircleSums& sums,
   result.StandardError = std::numeric_limits<double>::quiet_NaN();
   out.NeighborCount = sums.Neighbors;
   out.ValidDirections = PopCount(sums.Sectors);
-  if (sums.Neighbors < std::max(minimumNeighbors, 6) ||
-    sums.Opposing > maximumOpposing * sums.Neighbors ||
+  if (sums.Neighbors < std::max(minimumNeighbors, 6) || sums.ReachesAcross(maximumOpposing) ||
     !AnglesDetermineSine(sums.HalfTurnPositions))
   {
     return result;

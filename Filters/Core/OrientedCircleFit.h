@@ -47,14 +47,29 @@ struct OrientedCircleSums
   double PositionTargets = 0.0, NormalTargets = 0.0;
   int Neighbors = 0;
   int NeighborsWithNormal = 0;
+  /// Neighbours whose normal points against the query's, and the sums of
+  /// the heights of those and of the others, and of D (all neighbours).
   int Opposing = 0;
+  double OpposingHeights = 0.0, AgreeingHeights = 0.0, SquaredDistances = 0.0;
+  double OpposingSquaredHeights = 0.0, AgreeingSquaredHeights = 0.0;
   /// Occupied sixteenths of the turn (phi), and eighths of 2 phi.
   std::uint32_t Sectors = 0;
   std::uint32_t HalfTurnPositions = 0;
 
   /// Adds a neighbour: its offset (in units of the scale), its unit normal
-  /// or null, in the query's frame. At the query point: ignored.
+  /// or null, in the query's frame. At the query point: ignored. A normal
+  /// opposing the query's is turned first: scans' normals are often not
+  /// consistently oriented, and a normal's line is what it tells.
   void Add(const TangentFrame& frame, const double d[3], const double* normal);
+
+  /// The neighbourhood reaches across the surface (a thin part, two close
+  /// sheets): more than the fraction `maximumOpposing` of the neighbours
+  /// have a normal opposing the query's, and they lie on another level than
+  /// the others (their mean heights differ by more than three standard
+  /// errors of that difference, and by a twentieth of the RMS distance).
+  /// Opposing normals on the query's own sheet are only inconsistently
+  /// oriented normals.
+  bool ReachesAcross(double maximumOpposing) const;
 };
 
 /// What the fit of some sums gives: the curvatures (output sign, in
@@ -70,9 +85,8 @@ struct OrientedCircleResult
 };
 
 /// Fits the sums; invalid with fewer than `minimumNeighbors` (at least 6)
-/// neighbours, angles within a closed half-turn of 2 phi, or more than the
-/// fraction `maximumOpposing` of the neighbours with a normal opposing the
-/// query's (the neighbourhood reaches across the surface).
+/// neighbours, angles within a closed half-turn of 2 phi, or a
+/// neighbourhood that reaches across the surface (ReachesAcross).
 OrientedCircleResult FitOrientedCircles(const OrientedCircleSums& sums,
   const TangentFrame& frame,
   double inverseScale,

@@ -369,6 +369,29 @@ void TestOrientedCircles(Checks& checks)
   checks.Equal("oriented circles: a neighbourhood across a thin plate is flagged",
     summary.NumberOfUnestimatedPoints,
     static_cast<std::int64_t>(plate.size()));
+
+  // Normals that are not consistently oriented (every other one flipped, as
+  // unoriented scan normals are): not a thin part, so estimated, with the
+  // magnitudes right and each point's sign following its own normal.
+  auto sphere = testing::Sample(testing::Sphere(2.0), 20000, 33);
+  for (std::size_t i = 0; i < sphere.size(); i += 2)
+  {
+    sphere[i].Normal = testing::Scale(-1.0, sphere[i].Normal);
+  }
+  Results flipped(sphere.size(), false);
+  const EstimationSummary mixed = EstimateCloud(
+    MakeCloud(sphere), EstimationSettings{}, Collectives{}, serial, nullptr, flipped.Buffers());
+  int right = 0;
+  for (std::size_t i = 0; i < sphere.size(); ++i)
+  {
+    const double expected = i % 2 ? 0.5 : -0.5;
+    right += std::fabs(flipped.Minimum[i] - expected) < 0.01 &&
+      std::fabs(flipped.Maximum[i] - expected) < 0.01;
+  }
+  checks.True("oriented circles: inconsistently oriented normals are not a thin part (99 %)",
+    mixed.NumberOfUnestimatedPoints < 0.01 * sphere.size());
+  checks.True("oriented circles: with mixed orientations, |k| = 1/R and signs per point (99 %)",
+    right >= 0.99 * sphere.size());
 }
 
 /// The automatic neighbourhood: accurate on a clean torus, noise answered by
