@@ -281,6 +281,9 @@ int vtkPrincipalCurvatureEstimation::RequestData(vtkInformation*,
   {
     output->GetPointData()->SetNormals(estimatedNormals);
   }
+  // The active scalars: ParaView colours a new display by them, so the
+  // first Apply shows the curvature rather than a solid colour.
+  output->GetPointData()->SetActiveScalars("Mean_Curvature");
   return 1;
 }
 

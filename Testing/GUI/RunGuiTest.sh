@@ -30,8 +30,8 @@ marker=$(cat "$GUI_TEST_MARKER" 2>/dev/null || echo "no marker: the GUI script d
 echo "GUI script: $marker"
 case "$marker" in ok*) ;; *) status=1; tail -n 20 "$work/paraview.log" ;; esac
 # A normals-less .xyz: read by the plugin's reader, normals estimated.
-case "$marker" in *"reader ASCIIPointCloudReader, normals estimated True"*) ;;
-  *) echo "FAILED: the .xyz was not read by the plugin's reader with estimated normals"; status=1 ;; esac
+case "$marker" in *"reader ASCIIPointCloudReader, normals estimated True, coloured by Mean_Curvature"*) ;;
+  *) echo "FAILED: the .xyz was not read by the plugin's reader with estimated normals and shown coloured by Mean_Curvature"; status=1 ;; esac
 if [ ! -s "$screenshot" ]; then
   echo "FAILED: no screenshot"
   exit 1

@@ -7,7 +7,7 @@ a marker file with what it found (read by RunGuiTest.sh)."""
 import os
 
 from paraview import servermanager
-from paraview.simple import (ColorBy, GetActiveViewOrCreate, GetColorTransferFunction, Hide,
+from paraview.simple import (GetActiveViewOrCreate, GetColorTransferFunction, Hide,
                              LoadPlugin, Render, ResetCamera, SetActiveSource, Show)
 from paraview import simple
 
@@ -22,8 +22,9 @@ try:
     display = Show(curvatures, view)
     display.PointSize = 3
     Hide(cloud, view)
-    ColorBy(display, ("POINTS", "Mean_Curvature"))
-    display.RescaleTransferFunctionToDataRange(True, False)
+    # No ColorBy: the filter's output makes Mean_Curvature the active
+    # scalars, which ParaView colours a new display by.
+    coloured_by = list(display.ColorArrayName)
     display.SetScalarBarVisibility(view, True)
     view.CameraPosition = [6, -9, 8]
     view.CameraViewUp = [0, 0, 1]
@@ -34,8 +35,8 @@ try:
     valid = output.GetPointData().GetArray("Curvature_Valid").GetRange()
     estimated = output.GetPointData().GetNormals() is not None
     with open(marker, "w") as handle:
-        handle.write("ok reader %s, normals estimated %s, mean curvature %g %g, valid %g %g\n"
-                     % (cloud.GetXMLName(), estimated, mean[0], mean[1], valid[0], valid[1]))
+        handle.write("ok reader %s, normals estimated %s, coloured by %s, mean curvature %g %g, valid %g %g\n"
+                     % (cloud.GetXMLName(), estimated, coloured_by[-1], mean[0], mean[1], valid[0], valid[1]))
 except Exception as error:  # report to the driver instead of a silent GUI
     with open(marker, "w") as handle:
         handle.write("error %s\n" % error)
