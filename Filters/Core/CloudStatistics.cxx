@@ -417,7 +417,11 @@ double WorkingLengthScale(const CloudPoints& cloud, const Collectives& processes
   }
   int exponent = 0;
   std::frexp(largest, &exponent); // largest = m 2^exponent, m in [0.5, 1)
-  return std::ldexp(1.0, 1 - exponent);
+  // At most 2^1023, the largest power of two a double holds: a subnormal
+  // largest coordinate (2^-1074) would ask for 2^1074, which is Inf and made
+  // every coordinate Inf or NaN (found by fuzzing); 2^1023 brings it above
+  // 2^-400 all the same.
+  return std::ldexp(1.0, std::min(1 - exponent, 1023));
 }
 
 bool InSpacingSample(const double x[3],

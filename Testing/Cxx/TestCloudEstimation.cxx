@@ -242,6 +242,20 @@ void TestWorkingUnit(Checks& checks)
   checks.True("a cloud scaled by 2^-600: curvatures and lengths scale exactly", exact);
   checks.True("a cloud scaled by 2^-600: s reported in the input's unit",
     b.UsedSurroundingsThreshold == a.UsedSurroundingsThreshold * scale);
+
+  // Subnormal coordinates (2^-1060: 14 bits left): the working unit cannot
+  // be 2^1061, which is Inf. The curvature, 2^1059, is beyond the double
+  // range itself: Inf where estimated, never NaN.
+  Results subnormal(sphere.size(), false);
+  Estimate(sphere, EstimationSettings{}, subnormal, serial, std::ldexp(1.0, -1060));
+  bool noNaN = true;
+  for (std::size_t i = 0; i < sphere.size(); ++i)
+  {
+    noNaN = noNaN &&
+      (subnormal.Valid[i] ? !std::isnan(subnormal.Minimum[i]) && !std::isnan(subnormal.Maximum[i])
+                          : std::isnan(subnormal.Minimum[i]));
+  }
+  checks.True("a cloud of subnormal coordinates: no NaN where estimated", noNaN);
 }
 
 void TestFlaggedAndStopped(Checks& checks)
