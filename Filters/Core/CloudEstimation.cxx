@@ -654,11 +654,11 @@ private:
         r,
         [&](const double* q, std::int64_t id)
         {
-          const double d[3] = { (q[0] - x[0]) / unit, (q[1] - x[1]) / unit, (q[2] - x[2]) / unit };
-          const double squared = (q[0] - x[0]) * (q[0] - x[0]) + (q[1] - x[1]) * (q[1] - x[1]) +
-            (q[2] - x[2]) * (q[2] - x[2]);
-          if (squared >= innerSquared)
+          const double offset[3] = { q[0] - x[0], q[1] - x[1], q[2] - x[2] };
+          // The inner radii's neighbours are in the sums already.
+          if (offset[0] * offset[0] + offset[1] * offset[1] + offset[2] * offset[2] >= innerSquared)
           {
+            const double d[3] = { offset[0] / unit, offset[1] / unit, offset[2] / unit };
             sums.Add(frame, d, &this->Cloud.Normals[3 * id]);
           }
         });

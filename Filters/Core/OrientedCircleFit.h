@@ -105,10 +105,6 @@ public:
   /// position alone is used).
   void AddNeighbor(const double offset[3], const double normal[3]);
 
-  const OrientedCircleSums& GetSums() const { return this->Sums; }
-  const TangentFrame& GetFrame() const { return this->Frame; }
-  double GetInverseScale() const { return this->InverseScale; }
-
   OrientedCircleResult Estimate(int minimumNeighbors, double maximumOpposing) const
   {
     return FitOrientedCircles(
