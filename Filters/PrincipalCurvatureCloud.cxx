@@ -14,8 +14,12 @@
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
 
+#include "vtkAlgorithm.h"
+
 #include <algorithm>
+#include <chrono>
 #include <cstdlib>
+#include <future>
 #include <string>
 
 namespace pcurv
@@ -174,16 +178,8 @@ struct RunnerFunctor
 {
   const WorkRunner::Work& Run;
   vtkSMPThreadLocal<EstimationScratch> Scratch;
-  /// With no more items than the grain, vtkSMPTools runs the functor in the
-  /// calling thread without a thread pool, and (VTK 9.2, STDThread)
-  /// GetSingleThread() then crashes: that one thread reports progress.
-  bool RunsInline;
 
-  void operator()(vtkIdType begin, vtkIdType end)
-  {
-    this->Run(
-      begin, end, this->Scratch.Local(), this->RunsInline || vtkSMPTools::GetSingleThread());
-  }
+  void operator()(vtkIdType begin, vtkIdType end) { this->Run(begin, end, this->Scratch.Local()); }
 };
 } // namespace
 
@@ -203,9 +199,29 @@ void CopyGeometry(vtkPointSet* input, vtkPolyData* output)
   output->GetPointData()->PassData(input->GetPointData());
 }
 
-void SMPToolsRunner::For(std::int64_t count, std::int64_t grain, const Work& work)
+bool AlgorithmProgress::Continue(double fraction)
 {
-  RunnerFunctor functor{ work, {}, count <= grain };
+  this->Fraction.store(fraction, std::memory_order_relaxed);
+  return !this->AbortRequested.load(std::memory_order_relaxed);
+}
+
+void AlgorithmProgress::Pass()
+{
+  const double fraction = this->Fraction.load(std::memory_order_relaxed);
+  if (fraction != this->Reported)
+  {
+    this->Algorithm->UpdateProgress(fraction);
+    this->Reported = fraction;
+  }
+  if (this->Algorithm->GetAbortExecute())
+  {
+    this->AbortRequested.store(true, std::memory_order_relaxed);
+  }
+}
+
+void SMPToolsRunner::RunParallel(std::int64_t count, std::int64_t grain, const Work& work)
+{
+  RunnerFunctor functor{ work, {} };
   std::string backend = vtkSMPTools::GetBackend();
   if (backend == "Sequential" && !std::getenv("VTK_SMP_BACKEND_IN_USE"))
   {
@@ -213,6 +229,23 @@ void SMPToolsRunner::For(std::int64_t count, std::int64_t grain, const Work& wor
   }
   vtkSMPTools::LocalScope(vtkSMPTools::Config{ this->MaximumThreads, backend, false },
     [&]() { vtkSMPTools::For(0, count, grain, functor); });
+}
+
+void SMPToolsRunner::For(std::int64_t count, std::int64_t grain, const Work& work)
+{
+  if (!this->Progress)
+  {
+    this->RunParallel(count, grain, work);
+    return;
+  }
+  std::future<void> done =
+    std::async(std::launch::async, [&]() { this->RunParallel(count, grain, work); });
+  while (done.wait_for(std::chrono::milliseconds(100)) != std::future_status::ready)
+  {
+    this->Progress->Pass();
+  }
+  done.get();
+  this->Progress->Pass();
 }
 
 } // namespace pcurv

@@ -11,6 +11,9 @@
 #include "CloudEstimation.h"
 #include "CloudStatistics.h"
 
+#include <atomic>
+
+class vtkAlgorithm;
 class vtkDataArray;
 class vtkMultiProcessController;
 class vtkPointSet;
@@ -51,21 +54,49 @@ private:
 /// so that a cloud shows in a render view.
 void CopyGeometry(vtkPointSet* input, vtkPolyData* output);
 
+/// Progress from the core's threads, passed to a filter on the thread that
+/// runs the filter: ParaView shows progress, and honours Abort, only from
+/// there. The filter's abort flag travels back the same way.
+class AlgorithmProgress : public ProgressMonitor
+{
+public:
+  explicit AlgorithmProgress(vtkAlgorithm* algorithm)
+    : Algorithm(algorithm)
+  {
+  }
+  /// From any thread: keeps the fraction; false once Pass saw an abort.
+  bool Continue(double fraction) override;
+  /// From the filter's thread: reports the newest fraction to the filter
+  /// and reads its abort flag.
+  void Pass();
+
+private:
+  vtkAlgorithm* Algorithm;
+  std::atomic<double> Fraction{ 0.0 };
+  std::atomic<bool> AbortRequested{ false };
+  double Reported = -1.0;
+};
+
 /// The core's work items on vtkSMPTools threads, each with its own scratch:
 /// all cores unless the user chose otherwise (ParaView's bundled VTK
 /// defaults to the sequential backend; STDThread is used then, unless a
-/// backend was requested through the environment).
+/// backend was requested through the environment). With `progress`, the
+/// calling thread only waits and passes the progress on, ten times a second.
 class SMPToolsRunner : public WorkRunner
 {
 public:
-  explicit SMPToolsRunner(int maximumThreads)
+  explicit SMPToolsRunner(int maximumThreads, AlgorithmProgress* progress = nullptr)
     : MaximumThreads(maximumThreads)
+    , Progress(progress)
   {
   }
   void For(std::int64_t count, std::int64_t grain, const Work& work) override;
 
 private:
+  void RunParallel(std::int64_t count, std::int64_t grain, const Work& work);
+
   int MaximumThreads;
+  AlgorithmProgress* Progress;
 };
 
 } // namespace pcurv

@@ -66,13 +66,20 @@ int vtkPointCloudNormalEstimation::RequestData(vtkInformation*,
   normals->SetName("Normals");
   normals->SetNumberOfComponents(3);
   normals->SetNumberOfTuples(numberOfPoints);
-  pcurv::SMPToolsRunner runner(this->NumberOfThreads);
+  pcurv::AlgorithmProgress progress(this);
+  pcurv::SMPToolsRunner runner(this->NumberOfThreads, &progress);
   const pcurv::NormalSummary summary = pcurv::EstimateCloudNormals(
     numberOfPoints > 0 ? pcurv::ReadCloud(input, nullptr) : pcurv::CloudPoints{},
     settings,
     processes,
     runner,
-    normals->GetPointer(0));
+    normals->GetPointer(0),
+    &progress);
+  if (summary.Aborted)
+  {
+    return 1;
+  }
+  this->UpdateProgress(1.0);
   this->NumberOfParts = summary.Components;
   this->NumberOfUndeterminedNormals = summary.Undetermined;
   pcurv::CopyGeometry(input, output);

@@ -8,6 +8,8 @@
 #include "vtkDoubleArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkFieldData.h"
+#include "vtkIdTypeArray.h"
 #include "vtkIntArray.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
@@ -140,23 +142,52 @@ pcurv::EstimationSettings CoreSettings(vtkPrincipalCurvatureEstimation* self)
   return settings;
 }
 
-/// Progress to the filter, and its abort flag back to the core.
-class FilterProgress : public pcurv::ProgressMonitor
+/// The counts of unestimated points, by reason, in the output's field data;
+/// a warning when most of the cloud has no estimate.
+void ReportUnestimated(vtkPrincipalCurvatureEstimation* self,
+  const pcurv::EstimationSummary& summary,
+  const pcurv::Collectives& processes,
+  vtkPolyData* output)
 {
-public:
-  explicit FilterProgress(vtkAlgorithm* filter)
-    : Filter(filter)
+  // Counts of the whole cloud, also in a parallel run: field data shows in
+  // the Information panel, which would otherwise show one piece's.
+  std::vector<std::int64_t> counts(
+    summary.UnestimatedByReason.begin(), summary.UnestimatedByReason.end());
+  counts.push_back(output->GetNumberOfPoints());
+  if (processes.IsDistributed())
   {
+    processes.Sum(counts);
   }
-  bool Continue(double fraction) override
+  const std::int64_t total = counts.back();
+  std::int64_t unestimated = 0;
+  std::string byReason;
+  for (int reason = 1; reason < static_cast<int>(pcurv::UnestimatedReason::Count); ++reason)
   {
-    this->Filter->UpdateProgress(fraction);
-    return !this->Filter->GetAbortExecute();
+    const char* name = pcurv::UnestimatedReasonName(static_cast<pcurv::UnestimatedReason>(reason));
+    vtkNew<vtkIdTypeArray> count;
+    count->SetName((std::string("Unestimated_") + name).c_str());
+    count->InsertNextValue(counts[reason]);
+    output->GetFieldData()->AddArray(count);
+    unestimated += counts[reason];
+    if (counts[reason] > 0)
+    {
+      byReason += (byReason.empty() ? "" : ", ") + std::to_string(counts[reason]) + " " + name;
+    }
   }
-
-private:
-  vtkAlgorithm* Filter;
-};
+  vtkNew<vtkIdTypeArray> all;
+  all->SetName("Unestimated_Points");
+  all->InsertNextValue(unestimated);
+  output->GetFieldData()->AddArray(all);
+  // Some unestimated points are normal on real scans (their borders, stray
+  // points): only a failure of most of the cloud is worth a pop-up.
+  if (2 * unestimated > total)
+  {
+    vtkWarningWithObjectMacro(self,
+      << unestimated << " of " << total << " points could not be estimated (" << byReason
+      << "); they have Curvature_Valid = 0 and NaN curvatures. See the "
+         "Unestimated_* field data, and docs/output-arrays.md for what helps.");
+  }
+}
 
 } // namespace
 
@@ -242,8 +273,8 @@ int vtkPrincipalCurvatureEstimation::RequestData(vtkInformation*,
     estimatedNormals = NewArray<vtkDoubleArray>("Normals", 3, numberOfPoints);
     arrays.Buffers.Normals = estimatedNormals->GetPointer(0);
   }
-  pcurv::SMPToolsRunner runner(this->NumberOfThreads);
-  FilterProgress progress(this);
+  pcurv::AlgorithmProgress progress(this);
+  pcurv::SMPToolsRunner runner(this->NumberOfThreads, &progress);
   pcurv::EstimationSettings settings = CoreSettings(this);
   settings.EstimateNormals = this->UsedEstimatedNormals;
   const pcurv::EstimationSummary summary = pcurv::EstimateCloud(
@@ -268,15 +299,9 @@ int vtkPrincipalCurvatureEstimation::RequestData(vtkInformation*,
   }
   this->UpdateProgress(1.0);
   this->NumberOfUnestimatedPoints = summary.NumberOfUnestimatedPoints;
-  if (this->NumberOfUnestimatedPoints > 0)
-  {
-    vtkWarningMacro(<< this->NumberOfUnestimatedPoints << " of " << numberOfPoints
-                    << " points could not be estimated (too few neighbours or valid directions, "
-                       "or a bad coordinate or normal); they have Curvature_Valid = 0 and NaN "
-                       "curvatures.");
-  }
   pcurv::CopyGeometry(input, output);
   arrays.AddTo(output->GetPointData());
+  ReportUnestimated(this, summary, processes, output);
   if (estimatedNormals)
   {
     output->GetPointData()->SetNormals(estimatedNormals);

@@ -268,8 +268,11 @@ double ShapeIndex(const PointCurvature& r)
 class ResultWriter
 {
 public:
-  explicit ResultWriter(const CurvatureBuffers& out)
+  /// `reasons`: one per input point, why it has no estimate.
+  ResultWriter(const CurvatureBuffers& out, std::uint8_t* reasons, int minimumPointsPerDirection)
     : Out(out)
+    , Reasons(reasons)
+    , MinimumPointsPerDirection(minimumPointsPerDirection)
   {
   }
 
@@ -307,9 +310,16 @@ public:
     {
       this->Out.TargetCount[i] = target;
     }
+    this->Reasons[i] =
+      static_cast<std::uint8_t>(UnestimatedReasonOf(r, this->MinimumPointsPerDirection));
   }
 
-  void StoreUnestimated(std::int64_t i) const { this->Store(i, PointCurvature{}, NaN, NaN); }
+  void StoreUnestimated(std::int64_t i, UnestimatedReason reason) const
+  {
+    PointCurvature none;
+    none.Reason = reason;
+    this->Store(i, none, NaN, NaN);
+  }
 
   /// Asks for the cache lines Store(i, ...) will write.
   void Prefetch(std::int64_t i) const
@@ -386,6 +396,7 @@ public:
       }
     }
     this->Out.Valid[to] = this->Out.Valid[from];
+    this->Reasons[to] = this->Reasons[from];
     this->Out.NeighborCount[to] = this->Out.NeighborCount[from];
     this->Out.ValidDirections[to] = this->Out.ValidDirections[from];
     if (this->Out.TargetCount)
@@ -408,18 +419,22 @@ public:
     }
   }
 
-  std::int64_t CountUnestimated(std::int64_t numberOfPoints) const
+  /// The points without an estimate, by reason (UnestimatedReason).
+  UnestimatedCounts CountUnestimated(std::int64_t numberOfPoints) const
   {
-    std::int64_t count = 0;
+    UnestimatedCounts counts{};
     for (std::int64_t i = 0; i < numberOfPoints; ++i)
     {
-      count += this->Out.Valid[i] == 0;
+      counts[this->Out.Valid[i] ? 0 : std::max<int>(this->Reasons[i], 1)] += 1;
     }
-    return count;
+    counts[0] = 0;
+    return counts;
   }
 
 private:
   CurvatureBuffers Out;
+  std::uint8_t* Reasons;
+  int MinimumPointsPerDirection;
 };
 
 /// Estimates the work items; one instance is shared by all threads, each
@@ -433,29 +448,28 @@ public:
     const NeighborhoodRule& rule,
     const FitSettings& settings,
     const ResultWriter& out,
-    ProgressMonitor* monitor)
+    StageProgress& progress)
     : Cloud(cloud)
     , Grid(grid)
     , Order(order)
     , Rule(rule)
     , Settings(settings)
     , Out(out)
-    , Monitor(monitor)
+    , Progress(progress)
   {
   }
 
-  void Estimate(std::int64_t begin, std::int64_t end, EstimationScratch& scratch, bool reports)
+  void Estimate(std::int64_t begin, std::int64_t end, EstimationScratch& scratch)
   {
-    const bool reportsProgress = reports && this->Monitor;
+    // Points are reported in batches (a block of the adjustment at once),
+    // which keeps the shared counter off the per-point path.
+    const std::int64_t batch = this->Rule.Adjusted ? 1 : 256;
+    std::int64_t pending = 0;
     for (std::int64_t item = begin; item < end; ++item)
     {
-      if (this->Aborted.load(std::memory_order_relaxed))
+      if (this->Progress.Stopped())
       {
         return;
-      }
-      if (reportsProgress)
-      {
-        this->ReportProgress(item);
       }
       if (this->Rule.Adjusted)
       {
@@ -466,10 +480,14 @@ public:
         this->PrefetchAhead(item, end);
         this->EstimateFixed(this->Order.Points[item], scratch);
       }
+      if (++pending == batch)
+      {
+        this->Progress.Advance(pending);
+        pending = 0;
+      }
     }
+    this->Progress.Advance(pending);
   }
-
-  bool WasAborted() const { return this->Aborted.load(); }
 
 private:
   /// Points are processed in grid order, their data and results sit in
@@ -502,7 +520,7 @@ private:
   {
     if (!this->HasNormal(point))
     {
-      this->Out.StoreUnestimated(this->Cloud.InputIds[point]);
+      this->Out.StoreUnestimated(this->Cloud.InputIds[point], UnestimatedReason::NoNormal);
       return;
     }
     if (this->Rule.AutomaticScale)
@@ -548,7 +566,7 @@ private:
       {
         if (this->Cloud.IsOwn(point))
         {
-          this->Out.StoreUnestimated(this->Cloud.InputIds[point]);
+          this->Out.StoreUnestimated(this->Cloud.InputIds[point], UnestimatedReason::NoNormal);
         }
         continue;
       }
@@ -645,6 +663,7 @@ private:
     double chosenRadius = NaN;
     std::vector<OrientedCircleResult>& accepted = scratch.Scales;
     accepted.clear();
+    UnestimatedReason reason = UnestimatedReason::TooFewNeighbors;
     double inner = 0.0;
     for (int level = 0; level < rule.Levels; ++level)
     {
@@ -665,6 +684,7 @@ private:
       inner = r;
       if (sums.ReachesAcross(this->Settings.MaximumOpposingFraction))
       {
+        reason = UnestimatedReason::ReachesAcross;
         break;
       }
       const OrientedCircleResult result = FitOrientedCircles(sums,
@@ -672,6 +692,9 @@ private:
         1.0 / unit,
         this->Settings.MinimumPointsPerDirection,
         this->Settings.MaximumOpposingFraction);
+      reason = result.Curvature.Valid
+        ? UnestimatedReason::TooFewNeighbors
+        : UnestimatedReasonOf(result.Curvature, this->Settings.MinimumPointsPerDirection);
       if (result.Curvature.Valid && sums.Neighbors >= rule.MinimumCount)
       {
         if (!AgreesWithSmaller(result, accepted, rule.Tolerance))
@@ -694,6 +717,10 @@ private:
       {
         break;
       }
+    }
+    if (!chosen.Curvature.Valid)
+    {
+      chosen.Curvature.Reason = reason;
     }
     this->Out.Store(
       this->Cloud.InputIds[point], chosen.Curvature, chosenRadius, 0.0, 0, chosen.StandardError);
@@ -719,29 +746,13 @@ private:
     return true;
   }
 
-  /// Progress every few thousand points, and the stop request.
-  void ReportProgress(std::int64_t item)
-  {
-    const std::int64_t items = this->Order.GetNumberOfItems();
-    const std::int64_t every = std::max<std::int64_t>(1, this->Rule.Adjusted ? items / 100 : 4096);
-    if (item % every != 0)
-    {
-      return;
-    }
-    if (!this->Monitor->Continue(static_cast<double>(item) / items))
-    {
-      this->Aborted.store(true);
-    }
-  }
-
   const CloudPoints& Cloud;
   const PointGrid& Grid;
   const ProcessingOrder& Order;
   NeighborhoodRule Rule;
   FitSettings Settings;
   const ResultWriter& Out;
-  ProgressMonitor* Monitor;
-  std::atomic<bool> Aborted{ false };
+  StageProgress& Progress;
 };
 
 /// The used thresholds of the summary, in the input's unit.
@@ -771,6 +782,7 @@ NormalSummary ReplaceNormals(CloudPoints& cloud,
   const NormalSettings& settings,
   const Collectives& processes,
   WorkRunner& runner,
+  StageProgress* progress,
   double* out)
 {
   CloudPoints whole;
@@ -789,7 +801,7 @@ NormalSummary ReplaceNormals(CloudPoints& cloud,
   }
   std::vector<double> normals;
   const NormalSummary summary =
-    EstimateNormals(processes.IsDistributed() ? whole : cloud, settings, runner, normals);
+    EstimateNormals(processes.IsDistributed() ? whole : cloud, settings, runner, normals, progress);
   cloud.DropHalo();
   std::copy_n(normals.begin() + 3 * first, 3 * cloud.NumberOfOwnPoints, cloud.Normals.begin());
   if (out)
@@ -809,7 +821,8 @@ NormalSummary EstimateCloudNormals(CloudPoints cloud,
   const NormalSettings& settings,
   const Collectives& processes,
   WorkRunner& runner,
-  double* out)
+  double* out,
+  ProgressMonitor* monitor)
 {
   const std::vector<RepeatedPoint> repeats = RemoveRepeatedPoints(cloud);
   const double scale = WorkingLengthScale(cloud, processes);
@@ -819,7 +832,10 @@ NormalSummary EstimateCloudNormals(CloudPoints cloud,
   {
     c *= scale;
   }
-  const NormalSummary summary = ReplaceNormals(cloud, scaled, processes, runner, out);
+  StageProgress planes(monitor, 0.0, 0.8, cloud.NumberOfOwnPoints);
+  NormalSummary summary = ReplaceNormals(cloud, scaled, processes, runner, &planes, out);
+  summary.Aborted =
+    !processes.Min(planes.Stopped() ? 0 : 1) || !StageProgress(monitor, 0.0, 1.0, 1).Reach(1.0);
   for (const RepeatedPoint& repeat : repeats)
   {
     if (out)
@@ -830,10 +846,62 @@ NormalSummary EstimateCloudNormals(CloudPoints cloud,
   return summary;
 }
 
+const char* UnestimatedReasonName(UnestimatedReason reason)
+{
+  switch (reason)
+  {
+    case UnestimatedReason::BadCoordinate:
+      return "Bad_Coordinate";
+    case UnestimatedReason::NoNormal:
+      return "No_Normal";
+    case UnestimatedReason::TooFewNeighbors:
+      return "Too_Few_Neighbors";
+    case UnestimatedReason::TooFewDirections:
+      return "Too_Few_Directions";
+    case UnestimatedReason::ReachesAcross:
+      return "Reaches_Across_Surface";
+    case UnestimatedReason::FitFailed:
+      return "Fit_Failed";
+    default:
+      return "None";
+  }
+}
+
+StageProgress::StageProgress(ProgressMonitor* monitor,
+  double first,
+  double share,
+  std::int64_t items)
+  : Monitor(monitor)
+  , First(first)
+  , Share(share)
+  , Items(std::max<std::int64_t>(items, 1))
+{
+}
+
+bool StageProgress::Advance(std::int64_t done)
+{
+  if (!this->Monitor || done <= 0)
+  {
+    return !this->Stopped();
+  }
+  const std::int64_t reached = this->Done.fetch_add(done, std::memory_order_relaxed) + done;
+  return this->Reach(static_cast<double>(reached) / static_cast<double>(this->Items));
+}
+
+bool StageProgress::Reach(double fraction)
+{
+  if (this->Monitor &&
+    !this->Monitor->Continue(this->First + this->Share * std::min(std::max(fraction, 0.0), 1.0)))
+  {
+    this->Stop.store(true, std::memory_order_relaxed);
+  }
+  return !this->Stopped();
+}
+
 void SerialRunner::For(std::int64_t count, std::int64_t, const Work& work)
 {
   EstimationScratch scratch;
-  work(0, count, scratch, true);
+  work(0, count, scratch);
 }
 
 EstimationSummary EstimateCloud(CloudPoints cloud,
@@ -848,6 +916,9 @@ EstimationSummary EstimateCloud(CloudPoints cloud,
   summary.NumberOfRepeatedPoints = static_cast<std::int64_t>(repeats.size());
   const WorkingUnit unit{ WorkingLengthScale(cloud, processes) };
   cloud.ScaleCoordinates(unit.Scale);
+  // The normals' plane fits cost about as much as the curvatures, their
+  // orientation a little more; the shares of the progress bar follow.
+  const double normalsShare = settings.EstimateNormals ? 0.45 : 0.0;
   if (settings.EstimateNormals)
   {
     NormalSettings normals = settings.Normals;
@@ -855,7 +926,14 @@ EstimationSummary EstimateCloud(CloudPoints cloud,
     {
       c *= unit.Scale;
     }
-    summary.Normals = ReplaceNormals(cloud, normals, processes, runner, out.Normals);
+    StageProgress planes(monitor, 0.0, 0.8 * normalsShare, cloud.NumberOfOwnPoints);
+    summary.Normals = ReplaceNormals(cloud, normals, processes, runner, &planes, out.Normals);
+    if (!processes.Min(planes.Stopped() ? 0 : 1) ||
+      !StageProgress(monitor, 0.0, normalsShare, 1).Reach(1.0))
+    {
+      summary.Aborted = true;
+      return summary;
+    }
   }
   const CloudBoxes boxes = MeasureBoxes(cloud, processes);
   NeighborhoodRule rule = ChooseThresholds(settings, cloud, processes, boxes, unit, summary);
@@ -887,21 +965,24 @@ EstimationSummary EstimateCloud(CloudPoints cloud,
   fit.Mode = settings.Mode;
   fit.MinimumPointsPerDirection = settings.MinimumPointsPerDirection;
   fit.MaximumOpposingFraction = settings.MaximumOpposingFraction;
-  const ResultWriter writer(out);
   const std::int64_t numberOfPoints = cloud.GetNumberOfInputPoints();
+  std::vector<std::uint8_t> reasons(numberOfPoints, 0);
+  const ResultWriter writer(out, reasons.data(), settings.MinimumPointsPerDirection);
   for (std::int64_t i = 0; i < numberOfPoints; ++i)
   {
     if (!cloud.FiniteInput[i])
     {
-      writer.StoreUnestimated(i);
+      writer.StoreUnestimated(i, UnestimatedReason::BadCoordinate);
     }
   }
-  ItemEstimator estimator(cloud, grid, order, rule, fit, writer, monitor);
+  StageProgress progress(monitor, normalsShare, 1.0 - normalsShare, order.GetNumberOfItems());
+  ItemEstimator estimator(cloud, grid, order, rule, fit, writer, progress);
   runner.For(order.GetNumberOfItems(),
     rule.Adjusted ? 1 : 1024,
-    [&](std::int64_t begin, std::int64_t end, EstimationScratch& scratch, bool reports)
-    { estimator.Estimate(begin, end, scratch, reports); });
-  if (estimator.WasAborted())
+    [&](std::int64_t begin, std::int64_t end, EstimationScratch& scratch)
+    { estimator.Estimate(begin, end, scratch); });
+  // Every process stops, or none: the steps after this one are collective.
+  if (!processes.Min(progress.Stopped() ? 0 : 1))
   {
     summary.Aborted = true;
     return summary;
@@ -910,7 +991,11 @@ EstimationSummary EstimateCloud(CloudPoints cloud,
   {
     writer.Copy(repeat.Original, repeat.Copy);
   }
-  summary.NumberOfUnestimatedPoints = writer.CountUnestimated(numberOfPoints);
+  summary.UnestimatedByReason = writer.CountUnestimated(numberOfPoints);
+  for (const std::int64_t count : summary.UnestimatedByReason)
+  {
+    summary.NumberOfUnestimatedPoints += count;
+  }
   writer.ToInputUnit(numberOfPoints, unit);
   writer.WriteCurvedness(numberOfPoints);
   return summary;

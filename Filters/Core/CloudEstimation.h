@@ -24,6 +24,7 @@
 #include "PrincipalCurvatureCore.h"
 
 #include <array>
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <utility>
@@ -118,6 +119,13 @@ struct CurvatureBuffers
   double* Normals = nullptr;
 };
 
+/// Points without an estimate, indexed by UnestimatedReason (None: 0).
+using UnestimatedCounts = std::array<std::int64_t, static_cast<int>(UnestimatedReason::Count)>;
+
+/// The name of a reason, as the filter's field data arrays are named
+/// ("Unestimated_" and it): for example "Too_Few_Neighbors".
+const char* UnestimatedReasonName(UnestimatedReason reason);
+
 /// What an estimation chose and found, lengths in the input's unit.
 struct EstimationSummary
 {
@@ -127,6 +135,8 @@ struct EstimationSummary
   /// The adjustment's length unit L (0 without the adjustment).
   double UsedLengthUnit = 0.0;
   std::int64_t NumberOfUnestimatedPoints = 0;
+  /// The same points by reason (they add up to NumberOfUnestimatedPoints).
+  UnestimatedCounts UnestimatedByReason{};
   /// Points that repeat another exactly (coordinates and normal): estimated
   /// once, every copy given the same results, counted once as a neighbour.
   std::int64_t NumberOfRepeatedPoints = 0;
@@ -152,7 +162,10 @@ struct EstimationScratch
   std::vector<OrientedCircleResult> Scales;
 };
 
-/// Told how far the work is, from one thread; returns false to stop.
+/// Told how far the work is (0 to 1); returns false to stop. Called from
+/// any of the runner's threads, possibly from several at once: an
+/// implementation must be thread-safe (the VTK glue stores the fraction for
+/// the thread ParaView listens to, and reads its abort flag there).
 class ProgressMonitor
 {
 public:
@@ -160,14 +173,35 @@ public:
   virtual bool Continue(double fraction) = 0;
 };
 
+/// One stage of the work, the part [first, first + share) of the whole,
+/// counted in finished items from any thread; remembers a stop request.
+class StageProgress
+{
+public:
+  StageProgress(ProgressMonitor* monitor, double first, double share, std::int64_t items);
+  /// `done` more items are finished; false once the monitor asked to stop.
+  bool Advance(std::int64_t done);
+  /// The part of the stage reached so far, `fraction` of it: for stages
+  /// that are not counted in items.
+  bool Reach(double fraction);
+  bool Stopped() const { return this->Stop.load(std::memory_order_relaxed); }
+
+private:
+  ProgressMonitor* Monitor;
+  double First, Share;
+  std::int64_t Items;
+  std::atomic<std::int64_t> Done{ 0 };
+  std::atomic<bool> Stop{ false };
+};
+
 /// Runs the work items [0, count), possibly on several threads.
 class WorkRunner
 {
 public:
   /// Estimates the items [begin, end) with a scratch no other thread uses
-  /// meanwhile; `reportsProgress` for the one thread that reports progress.
-  using Work = std::function<
-    void(std::int64_t begin, std::int64_t end, EstimationScratch& scratch, bool reportsProgress)>;
+  /// meanwhile.
+  using Work =
+    std::function<void(std::int64_t begin, std::int64_t end, EstimationScratch& scratch)>;
 
   virtual ~WorkRunner() = default;
   /// Calls `work` on ranges of at least `grain` items (except the last)
@@ -194,12 +228,15 @@ EstimationSummary EstimateCloud(CloudPoints cloud,
 
 /// The normals of every input point of `cloud` alone (NormalEstimation.h),
 /// written to `out` (3 per input point, zero where undetermined or the
-/// coordinates are not finite); the same for any runner or split.
+/// coordinates are not finite); the same for any runner or split. With a
+/// monitor that asks to stop, the summary says Aborted and `out` is
+/// incomplete.
 NormalSummary EstimateCloudNormals(CloudPoints cloud,
   const NormalSettings& settings,
   const Collectives& processes,
   WorkRunner& runner,
-  double* out);
+  double* out,
+  ProgressMonitor* monitor = nullptr);
 
 } // namespace pcurv
 

@@ -314,7 +314,8 @@ void OrientPointwise(const NormalSettings& settings,
 NormalSummary EstimateNormals(const CloudPoints& cloud,
   const NormalSettings& settings,
   WorkRunner& runner,
-  std::vector<double>& normals)
+  std::vector<double>& normals,
+  StageProgress* progress)
 {
   NormalSummary summary;
   const std::int64_t n = cloud.NumberOfOwnPoints;
@@ -347,13 +348,25 @@ NormalSummary EstimateNormals(const CloudPoints& cloud,
   }
   runner.For(n,
     1024,
-    [&](std::int64_t begin, std::int64_t end, EstimationScratch& scratch, bool)
+    [&](std::int64_t begin, std::int64_t end, EstimationScratch& scratch)
     {
+      if (progress && progress->Stopped())
+      {
+        return;
+      }
       for (std::int64_t p = begin; p < end; ++p)
       {
         FitPoint(grid, cloud, usable, p, scratch, fits);
       }
+      if (progress)
+      {
+        progress->Advance(end - begin);
+      }
     });
+  if (progress && progress->Stopped())
+  {
+    return summary;
+  }
 
   if (usable.Orientation == NormalOrientation::Outward)
   {

@@ -22,6 +22,7 @@
 
 namespace pcurv
 {
+class StageProgress;
 class WorkRunner;
 
 /// How the sign of each connected part's normals is chosen.
@@ -57,14 +58,19 @@ struct NormalSummary
   std::int64_t Components = 0;
   /// Points with too few neighbours for a plane (their normal is zero).
   std::int64_t Undetermined = 0;
+  /// The progress monitor asked to stop: the normals are incomplete.
+  bool Aborted = false;
 };
 
 /// Unit normals of the own points of `cloud` (coordinates only are read),
-/// 3 per point, zero where undetermined.
+/// 3 per point, zero where undetermined. With `progress`, the plane fits
+/// (most of the time) are reported to it, one item a point, and it returns
+/// early (normals incomplete) when it is stopped.
 NormalSummary EstimateNormals(const CloudPoints& cloud,
   const NormalSettings& settings,
   WorkRunner& runner,
-  std::vector<double>& normals);
+  std::vector<double>& normals,
+  StageProgress* progress = nullptr);
 
 } // namespace pcurv
 

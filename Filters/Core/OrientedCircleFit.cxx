@@ -206,9 +206,19 @@ OrientedCircleResult FitOrientedCircles(const OrientedCircleSums& sums,
   result.StandardError = std::numeric_limits<double>::quiet_NaN();
   out.NeighborCount = sums.Neighbors;
   out.ValidDirections = PopCount(sums.Sectors);
-  if (sums.Neighbors < std::max(minimumNeighbors, 6) || sums.ReachesAcross(maximumOpposing) ||
-    !AnglesDetermineSine(sums.HalfTurnPositions))
+  if (sums.Neighbors < std::max(minimumNeighbors, 6))
   {
+    out.Reason = UnestimatedReason::TooFewNeighbors;
+    return result;
+  }
+  if (sums.ReachesAcross(maximumOpposing))
+  {
+    out.Reason = UnestimatedReason::ReachesAcross;
+    return result;
+  }
+  if (!AnglesDetermineSine(sums.HalfTurnPositions))
+  {
+    out.Reason = UnestimatedReason::TooFewDirections;
     return result;
   }
   const Matrix5 positionMatrix = Full(sums.PositionMatrix);

@@ -705,4 +705,22 @@ PointCurvature PointCurvatureEstimator::Estimate(const FitSettings& settings)
   return result;
 }
 
+UnestimatedReason UnestimatedReasonOf(const PointCurvature& r, int minimumPointsPerDirection)
+{
+  if (r.Valid)
+  {
+    return UnestimatedReason::None;
+  }
+  if (r.Reason != UnestimatedReason::None)
+  {
+    return r.Reason;
+  }
+  // Three directions of the fewest points each are the least a sine needs.
+  if (r.NeighborCount < 3 * std::max(1, minimumPointsPerDirection))
+  {
+    return UnestimatedReason::TooFewNeighbors;
+  }
+  return r.ValidDirections < 3 ? UnestimatedReason::TooFewDirections : UnestimatedReason::FitFailed;
+}
+
 } // namespace pcurv

@@ -132,6 +132,28 @@ SineFit FitSine(const std::array<double, NumberOfDirections>& curvature,
   const std::array<bool, NumberOfDirections>& valid);
 
 /// Everything estimated at one point, output sign.
+/// Why a point has no estimate (None where it has one).
+enum class UnestimatedReason : std::uint8_t
+{
+  None = 0,
+  /// A coordinate is NaN or infinite.
+  BadCoordinate,
+  /// The normal is zero or not finite (given so, or not determinable).
+  NoNormal,
+  /// Fewer neighbours than a fit needs.
+  TooFewNeighbors,
+  /// The neighbours do not surround the point: too few directions, or
+  /// directions within half a turn.
+  TooFewDirections,
+  /// OrientedCircles: the neighbourhood reaches across the surface
+  /// (neighbours with opposing normals on another level).
+  ReachesAcross,
+  /// Any other failure of the fit (a singular system, a result beyond the
+  /// double range).
+  FitFailed,
+  Count
+};
+
 struct PointCurvature
 {
   bool Valid = false;
@@ -142,7 +164,12 @@ struct PointCurvature
   int NeighborCount = 0;
   int ValidDirections = 0;
   double SineFitRms = 0.0;
+  /// Set where the fit knows better than UnestimatedReasonOf can tell.
+  UnestimatedReason Reason = UnestimatedReason::None;
 };
+
+/// Why `r` has no estimate: its own reason, else told by its counts.
+UnestimatedReason UnestimatedReasonOf(const PointCurvature& r, int minimumPointsPerDirection);
 
 /// Converts a sine fit (paper sign) in the frame into output-sign principal
 /// curvatures and directions.

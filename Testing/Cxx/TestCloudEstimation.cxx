@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <cstring>
 #include <string>
+#include <mutex>
 #include <thread>
 #include <vector>
 
@@ -110,7 +111,7 @@ public:
           EstimationScratch scratch;
           for (std::int64_t begin = t * grain; begin < count; begin += this->Threads * grain)
           {
-            work(begin, std::min(count, begin + grain), scratch, t == 0);
+            work(begin, std::min(count, begin + grain), scratch);
           }
         });
     }
@@ -129,6 +130,29 @@ class StopAtOnce : public ProgressMonitor
 {
 public:
   bool Continue(double) override { return false; }
+};
+
+/// Records the reports, from any thread; stops once past `stopAt`.
+class RecordingMonitor : public ProgressMonitor
+{
+public:
+  explicit RecordingMonitor(double stopAt = 2.0)
+    : StopAt(stopAt)
+  {
+  }
+  bool Continue(double fraction) override
+  {
+    std::lock_guard<std::mutex> lock(this->Mutex);
+    ++this->Reports;
+    this->Largest = std::max(this->Largest, fraction);
+    this->InRange = this->InRange && fraction >= 0.0 && fraction <= 1.0;
+    return fraction <= this->StopAt;
+  }
+  double StopAt;
+  std::mutex Mutex;
+  int Reports = 0;
+  double Largest = 0.0;
+  bool InRange = true;
 };
 
 EstimationSummary Estimate(const std::vector<testing::SurfaceSample>& samples,
@@ -269,10 +293,26 @@ void TestFlaggedAndStopped(Checks& checks)
   checks.True("a NaN coordinate and a zero normal: two points flagged",
     summary.NumberOfUnestimatedPoints == 2 && !r.Valid[10] && !r.Valid[20] &&
       std::isnan(r.Minimum[10]) && std::isnan(r.Mean[20]));
+  checks.True("their reasons: one bad coordinate, one missing normal",
+    summary.UnestimatedByReason[static_cast<int>(UnestimatedReason::BadCoordinate)] == 1 &&
+      summary.UnestimatedByReason[static_cast<int>(UnestimatedReason::NoNormal)] == 1);
   StopAtOnce stop;
   Results stopped(sphere.size(), false);
   checks.True("a monitor that says stop: the summary says aborted",
     Estimate(sphere, EstimationSettings{}, stopped, serial, 1.0, &stop).Aborted);
+
+  // Progress from two threads at once, over the normals and the curvatures.
+  ThreadRunner threads(2);
+  EstimationSettings withNormals;
+  withNormals.EstimateNormals = true;
+  RecordingMonitor all;
+  Results reported(sphere.size(), false);
+  checks.True("progress from two threads: many reports in [0, 1], reaching 1",
+    !Estimate(sphere, withNormals, reported, threads, 1.0, &all).Aborted && all.Reports >= 20 &&
+      all.InRange && all.Largest == 1.0);
+  RecordingMonitor early(0.1);
+  checks.True("a stop during the normals' stage ends the estimation there",
+    Estimate(sphere, withNormals, reported, threads, 1.0, &early).Aborted && early.Largest < 0.45);
 
   EstimationSettings clamped;
   clamped.DynamicAdjustment = true;
@@ -383,6 +423,16 @@ void TestOrientedCircles(Checks& checks)
   checks.Equal("oriented circles: a neighbourhood across a thin plate is flagged",
     summary.NumberOfUnestimatedPoints,
     static_cast<std::int64_t>(plate.size()));
+  checks.True("the thin plate's points: the reason is reaching across the surface",
+    summary.UnestimatedByReason[static_cast<int>(UnestimatedReason::ReachesAcross)] ==
+      static_cast<std::int64_t>(plate.size()));
+  settings.Neighborhood = NeighborhoodMode::Automatic;
+  const EstimationSummary automatic =
+    EstimateCloud(MakeCloud(plate), settings, Collectives{}, serial, nullptr, thin.Buffers());
+  checks.True("automatic scale: the thin plate flagged, as reaching across the surface",
+    automatic.NumberOfUnestimatedPoints == static_cast<std::int64_t>(plate.size()) &&
+      automatic.UnestimatedByReason[static_cast<int>(UnestimatedReason::ReachesAcross)] ==
+        automatic.NumberOfUnestimatedPoints);
 
   // Normals that are not consistently oriented (every other one flipped, as
   // unoriented scan normals are): not a thin part, so estimated, with the

@@ -8,6 +8,7 @@
 #include "vtkCallbackCommand.h"
 #include "vtkCellArray.h"
 #include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
@@ -50,6 +51,14 @@ public:
 private:
   vtkNew<vtkCallbackCommand> Callback;
 };
+
+/// The value of a one-tuple field data array of the output (-1 if none).
+vtkIdType FieldCount(vtkPolyData* output, const char* name)
+{
+  vtkDataArray* array = output->GetFieldData()->GetArray(name);
+  return array && array->GetNumberOfTuples() == 1 ? static_cast<vtkIdType>(array->GetTuple1(0))
+                                                  : -1;
+}
 
 vtkSmartPointer<vtkPolyData> Run(vtkDataObject* input, int mode, int threads = 0)
 {
@@ -346,8 +355,11 @@ void TestBadInput(Checks& checks)
     checks.Equal("zero normal flagged", static_cast<int>(valid->GetTuple1(11)), 0);
     checks.True("flagged point has NaN curvature",
       std::isnan(out->GetPointData()->GetArray("Mean_Curvature")->GetTuple1(10)));
-    checks.Equal("one warning for the flagged points", events.Warnings, 1);
+    checks.Equal("no warning for two flagged points of many", events.Warnings, 0);
     checks.Equal("count of unestimated points", filter->GetNumberOfUnestimatedPoints(), 2);
+    checks.Equal(
+      "field data: two points without a normal", FieldCount(out, "Unestimated_No_Normal"), 2);
+    checks.Equal("field data: two points in all", FieldCount(out, "Unestimated_Points"), 2);
     vtkDataArray* a = out->GetPointData()->GetArray("Mean_Curvature");
     vtkDataArray* b = reference->GetPointData()->GetArray("Mean_Curvature");
     int changed = 0;
@@ -363,6 +375,11 @@ void TestBadInput(Checks& checks)
     valid = filter->GetOutput()->GetPointData()->GetArray("Curvature_Valid");
     checks.Equal("NaN coordinate flagged", static_cast<int>(valid->GetTuple1(20)), 0);
     checks.Equal("three unestimated points", filter->GetNumberOfUnestimatedPoints(), 3);
+    checks.Equal("field data: one bad coordinate",
+      FieldCount(filter->GetOutput(), "Unestimated_Bad_Coordinate"),
+      1);
+    checks.Equal(
+      "field data: three points in all", FieldCount(filter->GetOutput(), "Unestimated_Points"), 3);
   }
   {
     // An unstructured grid of points is accepted.
@@ -388,7 +405,10 @@ void TestBadInput(Checks& checks)
     checks.Equal("tiny radius: all flagged",
       filter->GetNumberOfUnestimatedPoints(),
       cloud->GetNumberOfPoints());
-    checks.Equal("tiny radius: one warning", events.Warnings, 1);
+    checks.Equal("tiny radius: one warning (most points fail)", events.Warnings, 1);
+    checks.Equal("tiny radius: field data says too few neighbours",
+      FieldCount(filter->GetOutput(), "Unestimated_Too_Few_Neighbors"),
+      cloud->GetNumberOfPoints());
   }
 }
 } // namespace

@@ -1,0 +1,118 @@
+"""Live progress and Abort, as ParaView sees them:
+
+    pvpython TestProgressPython.py PLUGIN.so
+
+* a 1M-point torus without normals (normals estimated, then the curvatures)
+  through PrincipalCurvatures with defaults: the filter's progress events
+  arrive on the main thread (the only one ParaView listens to), at least ten
+  of them strictly between 0 and 1, never going back, then 1;
+* the same with Abort requested from a progress event, as ParaView's Abort
+  button does it: the filter returns within a second, with no output;
+* Point Cloud Normals on the same cloud: progress on the main thread too.
+
+Every check prints one line; the exit code is 0 when all pass, 1 otherwise.
+"""
+
+import sys
+import threading
+import time
+
+import numpy
+from paraview import simple
+from vtkmodules.util.numpy_support import numpy_to_vtk
+from vtkmodules.vtkCommonCore import vtkPoints
+from vtkmodules.vtkCommonDataModel import vtkPolyData
+
+from test_checks import check, failures  # noqa: E402 (the tests' folder is on sys.path)
+
+MAIN_THREAD = threading.get_ident()
+
+
+def torus(count=1000000, major=3.0, minor=1.0, seed=16):
+    """Points uniformly random in the torus' two angles (fixed seed)."""
+    generator = numpy.random.default_rng(seed)
+    u, v = generator.uniform(0.0, 2.0 * numpy.pi, (2, count))
+    ring = major + minor * numpy.cos(v)
+    return numpy.column_stack([ring * numpy.cos(u), ring * numpy.sin(u), minor * numpy.sin(v)])
+
+
+def producer(points):
+    data = vtkPolyData()
+    vtk_points = vtkPoints()
+    vtk_points.SetData(numpy_to_vtk(numpy.ascontiguousarray(points), deep=True))
+    data.SetPoints(vtk_points)
+    source = simple.TrivialProducer()
+    source.GetClientSideObject().SetOutput(data)
+    source.UpdatePipeline()
+    return source
+
+
+class ProgressLog:
+    """The progress events of a filter: value, thread, time; optionally
+    aborts the filter once the progress passes abort_at."""
+
+    def __init__(self, proxy, abort_at=None):
+        self.algorithm = proxy.GetClientSideObject()
+        self.events = []
+        self.abort_at = abort_at
+        self.abort_time = None
+        self.algorithm.AddObserver("ProgressEvent", self.on_progress)
+
+    def on_progress(self, algorithm, _event):
+        progress = algorithm.GetProgress()
+        self.events.append((progress, threading.get_ident(), time.perf_counter()))
+        if self.abort_at is not None and self.abort_time is None and progress >= self.abort_at:
+            self.abort_time = time.perf_counter()
+            algorithm.SetAbortExecute(1)
+
+    def values(self):
+        return [value for value, _, _ in self.events]
+
+    def on_main_thread(self):
+        return all(thread == MAIN_THREAD for _, thread, _ in self.events)
+
+
+def check_progress(name, log):
+    values = log.values()
+    inner = [v for v in values if 0.0 < v < 1.0]
+    check(log.on_main_thread(), "%s: all %d progress events on the main thread" % (name, len(values)))
+    check(len(inner) >= 10, "%s: %d progress updates strictly between 0 and 1 (at least 10)" % (name, len(inner)))
+    check(all(b >= a for a, b in zip(values, values[1:])), "%s: the progress never goes back" % name)
+    check(bool(values) and values[-1] == 1.0, "%s: the last progress is 1" % name)
+
+
+def main(plugin):
+    simple.LoadPlugin(plugin, remote=False)
+    source = producer(torus())
+
+    curvatures = simple.PrincipalCurvatures(Input=source)
+    log = ProgressLog(curvatures)
+    start = time.perf_counter()
+    curvatures.UpdatePipeline()
+    seconds = time.perf_counter() - start
+    print("1M points, normals estimated, defaults: %.2f s" % seconds)
+    check_progress("PrincipalCurvatures on 1M points", log)
+    check(curvatures.GetDataInformation().GetNumberOfPoints() == 1000000, "the full run gives every point")
+
+    aborted = simple.PrincipalCurvatures(Input=source)
+    abort_log = ProgressLog(aborted, abort_at=0.2)
+    aborted.UpdatePipeline()
+    returned = time.perf_counter()
+    check(abort_log.abort_time is not None, "Abort requested at a progress of 0.2")
+    if abort_log.abort_time is not None:
+        delay = returned - abort_log.abort_time
+        check(delay < 1.0, "Abort: the filter returned %.3f s after the request (at most 1 s)" % delay)
+    check(aborted.GetDataInformation().GetNumberOfPoints() == 0, "Abort: no output")
+    check(abort_log.on_main_thread(), "Abort: progress on the main thread")
+
+    normals = simple.PointCloudNormals(Input=source)
+    normals_log = ProgressLog(normals)
+    normals.UpdatePipeline()
+    check_progress("PointCloudNormals on 1M points", normals_log)
+
+    print("%d failed" % len(failures))
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1]))
