@@ -9,6 +9,7 @@
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkFieldData.h"
+#include "vtkFloatArray.h"
 #include "vtkIdTypeArray.h"
 #include "vtkIntArray.h"
 #include "vtkNew.h"
@@ -63,10 +64,11 @@ vtkSmartPointer<ArrayT> NewArray(const char* name, int components, vtkIdType tup
   return array;
 }
 
-/// The output arrays, and the core's view of them.
+/// The output arrays, and the core's view of them (the core writes double).
 struct CurvatureArrays
 {
-  std::vector<vtkSmartPointer<vtkDataArray>> InOrder;
+  /// Each array, and whether it is a diagnostic one.
+  std::vector<std::pair<vtkSmartPointer<vtkDataArray>, bool>> InOrder;
   pcurv::CurvatureBuffers Buffers;
 
   CurvatureArrays(vtkIdType n, bool adjusted, bool standardError)
@@ -79,35 +81,57 @@ struct CurvatureArrays
     b.MinimumDirection = this->Add<vtkDoubleArray>("Minimum_Curvature_Direction", 3, n);
     b.MaximumDirection = this->Add<vtkDoubleArray>("Maximum_Curvature_Direction", 3, n);
     b.Valid = this->Add<vtkUnsignedCharArray>("Curvature_Valid", 1, n);
-    b.NeighborCount = this->Add<vtkIntArray>("Neighbor_Count", 1, n);
-    b.ValidDirections = this->Add<vtkIntArray>("Valid_Direction_Count", 1, n);
-    b.SineFitRms = this->Add<vtkDoubleArray>("Sine_Fit_RMS", 1, n);
-    b.Surroundings = this->Add<vtkDoubleArray>("Surroundings_Threshold", 1, n);
-    b.PlaneDistance = this->Add<vtkDoubleArray>("Plane_Distance_Threshold", 1, n);
+    b.NeighborCount = this->Add<vtkIntArray>("Neighbor_Count", 1, n, true);
+    b.ValidDirections = this->Add<vtkIntArray>("Valid_Direction_Count", 1, n, true);
+    b.SineFitRms = this->Add<vtkDoubleArray>("Sine_Fit_RMS", 1, n, true);
+    b.Surroundings = this->Add<vtkDoubleArray>("Surroundings_Threshold", 1, n, true);
+    b.PlaneDistance = this->Add<vtkDoubleArray>("Plane_Distance_Threshold", 1, n, true);
     // With the dynamic adjustment only: the neighbour count it aimed at for
     // the point, to compare with Neighbor_Count.
-    b.TargetCount = adjusted ? this->Add<vtkIntArray>("Target_Neighbor_Count", 1, n) : nullptr;
+    b.TargetCount =
+      adjusted ? this->Add<vtkIntArray>("Target_Neighbor_Count", 1, n, true) : nullptr;
     b.ShapeIndex = this->Add<vtkDoubleArray>("Shape_Index", 1, n);
     b.Curvedness = this->Add<vtkDoubleArray>("Curvedness", 1, n);
     // With the fits that give one: the standard error of the curvatures.
     b.StandardError =
-      standardError ? this->Add<vtkDoubleArray>("Curvature_Standard_Error", 1, n) : nullptr;
+      standardError ? this->Add<vtkDoubleArray>("Curvature_Standard_Error", 1, n, true) : nullptr;
   }
 
   template<typename ArrayT>
-  typename ArrayT::ValueType* Add(const char* name, int components, vtkIdType tuples)
+  typename ArrayT::ValueType* Add(const char* name,
+    int components,
+    vtkIdType tuples,
+    bool diagnostic = false)
   {
     auto array = NewArray<ArrayT>(name, components, tuples);
-    this->InOrder.push_back(array);
+    this->InOrder.emplace_back(array, diagnostic);
     return array->GetPointer(0);
   }
 
-  void AddTo(vtkPointData* pd) const
+  /// Adds the arrays to `pd`: as float with `single`, the diagnostic ones
+  /// only with `diagnostics`.
+  void AddTo(vtkPointData* pd, bool single, bool diagnostics) const
   {
-    for (vtkDataArray* array : this->InOrder)
+    for (const auto& entry : this->InOrder)
     {
-      pd->AddArray(array);
+      if (entry.second && !diagnostics)
+      {
+        continue;
+      }
+      pd->AddArray(single ? AsFloat(entry.first).Get() : entry.first.Get());
     }
+  }
+
+  /// A double array as a float one of the same name; other arrays as they are.
+  static vtkSmartPointer<vtkDataArray> AsFloat(vtkDataArray* array)
+  {
+    if (array->GetDataType() != VTK_DOUBLE)
+    {
+      return array;
+    }
+    auto single = vtkSmartPointer<vtkFloatArray>::New();
+    single->DeepCopy(array);
+    return single;
   }
 };
 
@@ -300,11 +324,13 @@ int vtkPrincipalCurvatureEstimation::RequestData(vtkInformation*,
   this->UpdateProgress(1.0);
   this->NumberOfUnestimatedPoints = summary.NumberOfUnestimatedPoints;
   pcurv::CopyGeometry(input, output);
-  arrays.AddTo(output->GetPointData());
+  arrays.AddTo(output->GetPointData(), this->SinglePrecisionOutput, this->DiagnosticArrays);
   ReportUnestimated(this, summary, processes, output);
   if (estimatedNormals)
   {
-    output->GetPointData()->SetNormals(estimatedNormals);
+    output->GetPointData()->SetNormals(this->SinglePrecisionOutput
+        ? CurvatureArrays::AsFloat(estimatedNormals).Get()
+        : estimatedNormals.Get());
   }
   // The active scalars: ParaView colours a new display by them, so the
   // first Apply shows the curvature rather than a solid colour.
@@ -497,6 +523,8 @@ void vtkPrincipalCurvatureEstimation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MinimumPointsPerDirection: " << this->MinimumPointsPerDirection << "\n";
   os << indent << "AutomaticScaleTolerance: " << this->AutomaticScaleTolerance << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
+  os << indent << "SinglePrecisionOutput: " << (this->SinglePrecisionOutput ? "On" : "Off") << "\n";
+  os << indent << "DiagnosticArrays: " << (this->DiagnosticArrays ? "On" : "Off") << "\n";
   os << indent << "DynamicAdjustment: " << (this->DynamicAdjustment ? "On" : "Off") << "\n";
   os << indent << "AutomaticLengthUnit: " << (this->AutomaticLengthUnit ? "On" : "Off") << "\n";
   os << indent << "LengthUnit: " << this->LengthUnit << "\n";

@@ -211,6 +211,25 @@ public:
 
   ///@{
   /**
+   * Output size. SinglePrecisionOutput (default off) writes the curvature
+   * arrays, directions, shape index, curvedness, diagnostics and estimated
+   * normals as float instead of double (the points stay as they are:
+   * coordinates far from the origin need their precision).
+   * DiagnosticArrays (default on) adds the arrays that say how each point
+   * was estimated: Neighbor_Count, Valid_Direction_Count, Sine_Fit_RMS,
+   * Surroundings_Threshold, Plane_Distance_Threshold,
+   * Curvature_Standard_Error and Target_Neighbor_Count.
+   */
+  vtkSetMacro(SinglePrecisionOutput, bool);
+  vtkGetMacro(SinglePrecisionOutput, bool);
+  vtkBooleanMacro(SinglePrecisionOutput, bool);
+  vtkSetMacro(DiagnosticArrays, bool);
+  vtkGetMacro(DiagnosticArrays, bool);
+  vtkBooleanMacro(DiagnosticArrays, bool);
+  ///@}
+
+  ///@{
+  /**
    * Dynamic variable adjustment (Getto & Hildenbrand 2011, section 5): the
    * surroundings-threshold found for one point is used for the next and
    * adapted to reach a target neighbour count, the plane-distance-threshold
@@ -381,6 +400,8 @@ protected:
   int MinimumPointsPerDirection;
   double AutomaticScaleTolerance;
   int NumberOfThreads = 0;
+  bool SinglePrecisionOutput = false;
+  bool DiagnosticArrays = true;
   bool DynamicAdjustment;
   bool AutomaticLengthUnit;
   double LengthUnit;

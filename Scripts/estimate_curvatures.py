@@ -8,6 +8,7 @@ Run with ParaView's Python:
         [--dynamic-adjustment [paper|ladder|noisy-ladder]]
         [--normals NAME | --estimate-normals] [--orientation outward|viewpoint|axis]
         [--viewpoint X Y Z] [--axis X Y Z] [--threads T] [--plugin PATH]
+        [--single-precision] [--no-diagnostics] [--progress | --no-progress]
 
 Without normals in the input (an x y z scan), the normals are estimated and
 oriented (outward by default) and written to OUTPUT as Normals; colours are
@@ -37,8 +38,13 @@ endian: x y z, nx ny nz, red green blue for an RGB array, every scalar array
 as a float or double property of its name and every vector array as
 <name>_x <name>_y <name>_z, which CloudCompare and MeshLab read as scalar
 fields); .csv (a header line of the same column names, one row per point).
-It prints a summary: point counts, the thresholds used, percentiles of the
-curvatures over the estimated points, and the time the filter took.
+It prints a summary: point counts (the unestimated ones by reason), the
+thresholds used, percentiles of the curvatures over the estimated points,
+and the time the filter took. On a terminal it also shows the stages and a
+progress line on stderr (--progress shows them when piped too,
+--no-progress never). --single-precision writes the arrays as float,
+--no-diagnostics leaves out the arrays that say how each point was
+estimated: together they make the file less than half its size.
 
 The plugin is loaded from --plugin, else $PRINCIPAL_CURVATURES_PLUGIN, else
 the build tree next to this script; not at all if it is already loaded
@@ -112,6 +118,16 @@ def parse_arguments(argv):
     parser.add_argument("--axis", type=float, nargs=3, metavar=("X", "Y", "Z"), default=[0.0, 0.0, 1.0],
                         help="the direction estimated normals point along, with --orientation axis (default: +z)")
     parser.add_argument("--threads", type=int, default=0, metavar="T", help="at most T threads (default 0: all cores)")
+    parser.add_argument("--single-precision", action="store_true",
+                        help="write the output arrays as float, not double (the points stay as they are)")
+    parser.add_argument("--no-diagnostics", action="store_true",
+                        help="leave out Neighbor_Count, Valid_Direction_Count, Sine_Fit_RMS, Surroundings_Threshold, "
+                             "Plane_Distance_Threshold, Curvature_Standard_Error and Target_Neighbor_Count")
+    shown = parser.add_mutually_exclusive_group()
+    shown.add_argument("--progress", dest="progress", action="store_true", default=None,
+                       help="show the stages and a progress line on stderr (default: when stderr is a terminal)")
+    shown.add_argument("--no-progress", dest="progress", action="store_false",
+                       help="never show them")
     parser.add_argument("--plugin", metavar="PATH",
                         default=os.environ.get("PRINCIPAL_CURVATURES_PLUGIN") or DEFAULT_PLUGIN,
                         help="PrincipalCurvatures.so (default: $PRINCIPAL_CURVATURES_PLUGIN or %(default)s)")
@@ -132,6 +148,8 @@ def parse_arguments(argv):
         parser.error("--dynamic-adjustment replaces --neighbors, --k-nearest and --radius")
     if arguments.threads < 0:
         parser.error("--threads must be 0 (all cores) or positive")
+    if arguments.progress is None:
+        arguments.progress = sys.stderr.isatty()
     if os.path.splitext(arguments.output)[1].lower() not in OUTPUT_EXTENSIONS:
         parser.error("OUTPUT must be a %s file (got %s)" % ("/".join(OUTPUT_EXTENSIONS), arguments.output))
     return arguments
@@ -413,6 +431,42 @@ def configure_normals(curvatures, arguments, normals):
 # ---------------------------------------------------------------------------
 # Running and reporting
 
+
+class Progress:
+    """Stage lines and a progress line on stderr, or nothing."""
+
+    def __init__(self, shown):
+        self.shown = shown
+        self.stage = None
+        self.percent = None
+
+    def begin(self, stage):
+        self.end()
+        self.stage, self.percent = stage, None
+        if self.shown:
+            sys.stderr.write(stage + " ...")
+            sys.stderr.flush()
+
+    def watch(self, proxy):
+        """Shows the progress of the proxy's filter while it runs (its
+        progress events arrive on this thread)."""
+        if self.shown:
+            proxy.GetClientSideObject().AddObserver(
+                "ProgressEvent", lambda algorithm, _: self.update(algorithm.GetProgress()))
+
+    def update(self, fraction):
+        percent = int(100 * fraction)
+        if self.shown and percent != self.percent:
+            self.percent = percent
+            sys.stderr.write("\r%s ... %3d %%" % (self.stage, percent))
+            sys.stderr.flush()
+
+    def end(self):
+        if self.shown and self.stage:
+            sys.stderr.write("\r%s ... done%s\n" % (self.stage, " " * 4))
+            sys.stderr.flush()
+        self.stage = None
+
 # The dynamic adjustment's constants (docs/dynamic-adjustment.md), as the
 # filter's presets give them (Testing/Python/TestSettingsAgree.py checks):
 # the paper's, and the banded ladder measured on clouds of varying density.
@@ -430,6 +484,8 @@ def configure(curvatures, arguments):
     """Sets the filter's properties from the command line."""
     curvatures.FitMode = arguments.fit_mode
     curvatures.NumberOfThreads = arguments.threads
+    curvatures.SinglePrecisionOutput = int(arguments.single_precision)
+    curvatures.DiagnosticArrays = int(not arguments.no_diagnostics)
     fixed = arguments.neighbors or arguments.k_nearest or arguments.radius
     curvatures.NeighborhoodMode = "Radius" if fixed else "Automatic"
     if arguments.dynamic_adjustment:
@@ -498,8 +554,16 @@ def summarize(output, seconds, description):
     print("%-26s %d" % ("points", n))
     print("%-26s %d (%.2f %%)" % ("estimated", estimated, estimated * share))
     print("%-26s %d (%.2f %%)" % ("not estimated", n - estimated, (n - estimated) * share))
+    field = output.GetFieldData()
+    for index in range(field.GetNumberOfArrays()):
+        name = field.GetArrayName(index) or ""
+        count = field.GetArray(index).GetTuple1(0) if field.GetArray(index) is not None else 0
+        if name.startswith("Unestimated_") and name != "Unestimated_Points" and count > 0:
+            print("%-26s %d" % ("  " + name[len("Unestimated_"):].replace("_", " ").lower(), count))
     if estimated:
         for name in ("Neighbor_Count", "Surroundings_Threshold", "Plane_Distance_Threshold"):
+            if data.GetArray(name) is None:
+                continue
             print("%-26s %.6g (median)" % (name, numpy.median(array(name)[valid])))
     print("%-26s %.3f s" % ("filter time", seconds))
     if not estimated:
@@ -550,13 +614,24 @@ def column_name(name, used):
     return unique
 
 
+def ply_kind_of_vtk():
+    """PLY property types of the VTK array types kept as they are (flags and
+    counts stay integers, float stays float); others are written as double."""
+    from vtkmodules.vtkCommonCore import VTK_FLOAT, VTK_INT, VTK_UNSIGNED_CHAR
+
+    return {VTK_FLOAT: "float", VTK_INT: "int", VTK_UNSIGNED_CHAR: "uchar"}
+
+
+PLY_KIND_OF_VTK = ply_kind_of_vtk()
+
+
 def output_columns(cloud, normals):
     """The cloud as columns (name, values, PLY type) for PLY and CSV: x y z;
     nx ny nz from the normals array; red green blue (uchar) from a
     3-component unsigned char array named RGB; every other array with one
     component under its name, with 3 as <name>_x <name>_y <name>_z, with
-    other counts as <name>_0, <name>_1, ...: float if stored as float, else
-    double. Non-numeric arrays are left out."""
+    other counts as <name>_0, <name>_1, ...: float, int or uchar if stored
+    so, else double. Non-numeric arrays are left out."""
     from vtkmodules.util.numpy_support import vtk_to_numpy
     from vtkmodules.vtkCommonCore import VTK_FLOAT, VTK_UNSIGNED_CHAR
 
@@ -579,7 +654,7 @@ def output_columns(cloud, normals):
         name = array.GetName() or "Array_%d" % index
         values = vtk_to_numpy(array)
         count = array.GetNumberOfComponents()
-        kind = "float" if array.GetDataType() == VTK_FLOAT else "double"
+        kind = PLY_KIND_OF_VTK.get(array.GetDataType(), "double")
         if count == 3 and name == "RGB" and array.GetDataType() == VTK_UNSIGNED_CHAR:
             columns += [(column_name(c, used), values[:, i], "uchar") for i, c in enumerate(("red", "green", "blue"))]
         elif count == 1:
@@ -592,7 +667,7 @@ def output_columns(cloud, normals):
     return columns
 
 
-NUMPY_OF_PLY = {"uchar": "u1", "float": "<f4", "double": "<f8"}
+NUMPY_OF_PLY = {"uchar": "u1", "int": "<i4", "float": "<f4", "double": "<f8"}
 
 
 def column_records(columns):
@@ -657,7 +732,9 @@ def main(argv):
     output_folder = os.path.dirname(os.path.abspath(arguments.output))
     if not os.path.isdir(output_folder):
         fail("the output's folder does not exist: %s" % output_folder)
+    progress = Progress(arguments.progress)
     load_plugin(arguments.plugin)
+    progress.begin("reading %s" % arguments.input)
     source = open_cloud(arguments.input)
     if arguments.normals and arguments.estimate_normals:
         fail("--normals and --estimate-normals exclude each other")
@@ -666,15 +743,21 @@ def main(argv):
     curvatures = simple.PrincipalCurvatures(Input=source)
     normals_description = configure_normals(curvatures, arguments, normals)
     configure(curvatures, arguments)
+    progress.begin("estimating normals and curvatures" if curvatures.NormalsSource == "Estimated"
+                   else "estimating curvatures")
+    progress.watch(curvatures)
     start = time.perf_counter()
     curvatures.UpdatePipeline()
     seconds = time.perf_counter() - start
+    progress.end()
 
     result = servermanager.Fetch(curvatures)
     if result is None or result.GetPointData().GetArray("Curvature_Valid") is None:
         fail("the filter produced no curvatures (see the messages above)")
     used = "Normals" if normals is None or arguments.estimate_normals else normals
+    progress.begin("writing %s" % arguments.output)
     write_output(curvatures, result, used, arguments.output)
+    progress.end()
 
     summarize(result, seconds, [
         ("input", arguments.input),

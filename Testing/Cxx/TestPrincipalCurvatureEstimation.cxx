@@ -200,6 +200,70 @@ void TestOutputContract(Checks& checks)
   checks.Near("automatic radius gives about 375 neighbours", meanCount, 375.0, 40.0);
 }
 
+/// The output-size settings: float arrays with the same values rounded,
+/// and the diagnostic arrays left out; the points and the flags unchanged.
+void TestOutputSize(Checks& checks)
+{
+  auto cloud = MakeCloud(Sample(Torus(3.0, 1.0), 5000, 8));
+  vtkNew<vtkPrincipalCurvatureEstimation> full;
+  full->SetInputData(cloud);
+  full->Update();
+  vtkNew<vtkPrincipalCurvatureEstimation> compact;
+  compact->SetInputData(cloud);
+  compact->SinglePrecisionOutputOn();
+  compact->DiagnosticArraysOff();
+  compact->Update();
+  vtkPointData* a = full->GetOutput()->GetPointData();
+  vtkPointData* b = compact->GetOutput()->GetPointData();
+  for (const char* name : { "Minimum_Curvature",
+         "Maximum_Curvature",
+         "Mean_Curvature",
+         "Gauss_Curvature",
+         "Minimum_Curvature_Direction",
+         "Maximum_Curvature_Direction",
+         "Shape_Index",
+         "Curvedness" })
+  {
+    vtkDataArray* single = b->GetArray(name);
+    vtkDataArray* reference = a->GetArray(name);
+    bool same = single && vtkFloatArray::SafeDownCast(single) &&
+      single->GetNumberOfValues() == reference->GetNumberOfValues();
+    for (vtkIdType i = 0; same && i < reference->GetNumberOfValues(); ++i)
+    {
+      const double r = reference->GetVariantValue(i).ToDouble();
+      const double v = single->GetVariantValue(i).ToDouble();
+      same = (std::isnan(r) && std::isnan(v)) || v == static_cast<double>(static_cast<float>(r));
+    }
+    checks.True(
+      (std::string("single precision: ") + name + " is float, the values rounded").c_str(), same);
+  }
+  checks.True("single precision: Curvature_Valid unchanged (unsigned char)",
+    vtkUnsignedCharArray::SafeDownCast(b->GetArray("Curvature_Valid")) != nullptr);
+  for (const char* name : { "Neighbor_Count",
+         "Valid_Direction_Count",
+         "Sine_Fit_RMS",
+         "Surroundings_Threshold",
+         "Plane_Distance_Threshold",
+         "Curvature_Standard_Error" })
+  {
+    checks.True((std::string("diagnostics off: no ") + name).c_str(),
+      b->GetArray(name) == nullptr && a->GetArray(name) != nullptr);
+  }
+  checks.True("the points are the input's",
+    compact->GetOutput()->GetPoints()->GetData() == cloud->GetPoints()->GetData());
+  vtkNew<vtkPolyData> cellless; // a cloud without cells gets vertex cells
+  cellless->SetPoints(cloud->GetPoints());
+  cellless->GetPointData()->ShallowCopy(cloud->GetPointData());
+  compact->SetInputData(cellless);
+  compact->Update();
+  checks.Equal("a cloud without cells: vertex cells with 32-bit ids",
+    compact->GetOutput()->GetVerts()->IsStorage64Bit() ? 64 : 32,
+    32);
+  checks.Equal("a cloud without cells: one vertex per point",
+    compact->GetOutput()->GetNumberOfVerts(),
+    cloud->GetNumberOfPoints());
+}
+
 /// Sphere: +1/R with outward normals, -1/R with inward ones; the same for
 /// float normals; K-nearest mode works too.
 void TestSignsAndNormals(Checks& checks)
@@ -418,6 +482,7 @@ int main()
   Checks checks;
   TestAccuracyOnShapes(checks);
   TestOutputContract(checks);
+  TestOutputSize(checks);
   TestSignsAndNormals(checks);
   TestThreadIndependence(checks);
   TestBadInput(checks);

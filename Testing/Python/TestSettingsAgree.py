@@ -4,7 +4,9 @@ include C++ are checked against it here:
 
 - every default_values of the plugin XML equals the filter's default;
 - the XML's enumerations equal the filter's enum constants;
-- the XML's ranges equal the filter's clamp ranges where both give one;
+- the XML's ranges (the panel's sliders) start at the filter's clamp minimum
+  and end within its clamp maximum (a slider spans typical values; a typed
+  larger one is kept and clamped by the filter);
 - the command-line tool's --dynamic-adjustment table equals the presets;
 - the XML's documentation quotes the banded ladder's switch lengths.
 
@@ -59,8 +61,10 @@ for proxy in ElementTree.parse(xml_path).iter("SourceProxy"):
                 for end in ("min", "max"):
                     clamp = getattr(defaults, "Get%s%sValue" % (command[3:], end.capitalize()), None)
                     if domain.get(end) is not None and clamp is not None:
-                        check(kind(domain.get(end)) == kind(clamp()), "%s.%s: XML %s %s, clamp %s" % (
-                            proxy.get("name"), prop.get("name"), end, domain.get(end), clamp()))
+                        given, limit = kind(domain.get(end)), kind(clamp())
+                        check(given == limit if end == "min" else given <= limit,
+                              "%s.%s: XML %s %s, clamp %s" % (
+                                  proxy.get("name"), prop.get("name"), end, domain.get(end), clamp()))
 check(checked >= 25, "%d XML defaults compared" % checked)
 
 filter_defaults = vtkPrincipalCurvatureEstimation()
