@@ -92,6 +92,7 @@ struct CurvatureArrays
       adjusted ? this->Add<vtkIntArray>("Target_Neighbor_Count", 1, n, true) : nullptr;
     b.ShapeIndex = this->Add<vtkDoubleArray>("Shape_Index", 1, n);
     b.Curvedness = this->Add<vtkDoubleArray>("Curvedness", 1, n);
+    b.ClippedMean = this->Add<vtkDoubleArray>("Mean_Curvature_Clipped", 1, n);
     // With the fits that give one: the standard error of the curvatures.
     b.StandardError =
       standardError ? this->Add<vtkDoubleArray>("Curvature_Standard_Error", 1, n, true) : nullptr;
@@ -332,9 +333,10 @@ int vtkPrincipalCurvatureEstimation::RequestData(vtkInformation*,
         ? CurvatureArrays::AsFloat(estimatedNormals).Get()
         : estimatedNormals.Get());
   }
-  // The active scalars: ParaView colours a new display by them, so the
-  // first Apply shows the curvature rather than a solid colour.
-  output->GetPointData()->SetActiveScalars("Mean_Curvature");
+  // The active scalars: ParaView colours a new display by them, over their
+  // range, so the first Apply shows the curvature rather than a solid
+  // colour, and its structure rather than a few outliers.
+  output->GetPointData()->SetActiveScalars("Mean_Curvature_Clipped");
   return 1;
 }
 

@@ -419,6 +419,20 @@ public:
     }
   }
 
+  /// The mean curvature clipped to [-clip, clip] (NaN stays NaN).
+  void WriteClippedMean(std::int64_t numberOfPoints, double clip) const
+  {
+    if (!this->Out.ClippedMean)
+    {
+      return;
+    }
+    for (std::int64_t i = 0; i < numberOfPoints; ++i)
+    {
+      const double h = this->Out.Mean[i];
+      this->Out.ClippedMean[i] = std::isnan(h) ? h : std::min(std::max(h, -clip), clip);
+    }
+  }
+
   /// The points without an estimate, by reason (UnestimatedReason).
   UnestimatedCounts CountUnestimated(std::int64_t numberOfPoints) const
   {
@@ -998,6 +1012,8 @@ EstimationSummary EstimateCloud(CloudPoints cloud,
   }
   writer.ToInputUnit(numberOfPoints, unit);
   writer.WriteCurvedness(numberOfPoints);
+  summary.MeanCurvatureClip = MagnitudeQuantile(out.Mean, numberOfPoints, 0.95, processes);
+  writer.WriteClippedMean(numberOfPoints, summary.MeanCurvatureClip);
   return summary;
 }
 

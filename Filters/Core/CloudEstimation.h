@@ -111,6 +111,12 @@ struct CurvatureBuffers
   /// are 0), and the curvedness sqrt((k_min^2 + k_max^2) / 2), 1/length.
   double* ShapeIndex = nullptr;
   double* Curvedness = nullptr;
+  /// Derived, for display (may be null): the mean curvature clipped to
+  /// [-c, c], c the 95th percentile of |mean curvature| over the cloud
+  /// (EstimationSummary::MeanCurvatureClip), NaN where not estimated. A
+  /// colour map over its range shows the surface's structure, not a few
+  /// outliers, and is centred on 0 (flat).
+  double* ClippedMean = nullptr;
   /// With FitMode::OrientedCircles only (may be null): the standard error
   /// of the curvatures, 1/length.
   double* StandardError = nullptr;
@@ -137,6 +143,8 @@ struct EstimationSummary
   std::int64_t NumberOfUnestimatedPoints = 0;
   /// The same points by reason (they add up to NumberOfUnestimatedPoints).
   UnestimatedCounts UnestimatedByReason{};
+  /// The c of CurvatureBuffers::ClippedMean (0 when nothing is estimated).
+  double MeanCurvatureClip = 0.0;
   /// Points that repeat another exactly (coordinates and normal): estimated
   /// once, every copy given the same results, counted once as a neighbour.
   std::int64_t NumberOfRepeatedPoints = 0;

@@ -558,4 +558,54 @@ double LargestLocalKthDistance(const CloudPoints& cloud, const GridLattice& latt
   return std::nextafter(std::sqrt(largest), HUGE_VAL);
 }
 
+double MagnitudeQuantile(const double* values,
+  std::int64_t count,
+  double quantile,
+  const Collectives& processes)
+{
+  // Bin 0 holds zeros; bin b > 0 the magnitudes in [2^((b - 1 - Offset) / 16),
+  // 2^((b - Offset) / 16)), over the whole double range.
+  constexpr int BinsPerOctave = 16;
+  constexpr int Offset = 1075 * BinsPerOctave;
+  constexpr int Bins = Offset + 1025 * BinsPerOctave + 1;
+  std::vector<std::int64_t> histogram(Bins, 0);
+  for (std::int64_t i = 0; i < count; ++i)
+  {
+    const double magnitude = std::fabs(values[i]);
+    if (std::isfinite(magnitude))
+    {
+      const int bin = magnitude > 0.0
+        ? 1 + Offset + static_cast<int>(std::floor(BinsPerOctave * std::log2(magnitude)))
+        : 0;
+      ++histogram[std::min(std::max(bin, 0), Bins - 1)];
+    }
+  }
+  if (processes.IsDistributed())
+  {
+    processes.Sum(histogram);
+  }
+  std::int64_t total = 0;
+  for (const std::int64_t n : histogram)
+  {
+    total += n;
+  }
+  if (total == 0)
+  {
+    return 0.0;
+  }
+  const double wanted = std::min(std::max(quantile, 0.0), 1.0) * static_cast<double>(total);
+  std::int64_t below = 0;
+  for (int bin = 0; bin < Bins; ++bin)
+  {
+    below += histogram[bin];
+    if (static_cast<double>(below) >= wanted && below > 0)
+    {
+      return bin == 0 ? 0.0
+                      : std::min(std::exp2(static_cast<double>(bin - Offset) / BinsPerOctave),
+                          std::numeric_limits<double>::max());
+    }
+  }
+  return std::numeric_limits<double>::max();
+}
+
 } // namespace pcurv

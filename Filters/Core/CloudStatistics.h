@@ -174,6 +174,15 @@ GridLattice GlobalLattice(const CloudBoxes& boxes, double radius);
 /// halo this wide holds every point's k nearest neighbours.
 double LargestLocalKthDistance(const CloudPoints& cloud, const GridLattice& lattice, int k);
 
+/// The `quantile` (in (0, 1]) of |values| over the finite values of every
+/// process: the upper edge of the histogram bin (2^(1/16) wide) that holds
+/// it. The histogram adds up over processes, so the result does not depend
+/// on how the cloud is split. 0 when no value is finite.
+double MagnitudeQuantile(const double* values,
+  std::int64_t count,
+  double quantile,
+  const Collectives& processes);
+
 } // namespace pcurv
 
 #endif

@@ -689,9 +689,53 @@ void TestNormalEstimation(Checks& checks)
 }
 } // namespace
 
+/// The robust colour limit: the 95th percentile of |values| to within one
+/// bin (2^(1/16)), NaN and infinity ignored; and the clipped mean curvature
+/// of an estimation within it, equal to the mean curvature inside.
+void TestClippedMean(Checks& checks)
+{
+  std::vector<double> values;
+  for (int i = 1; i <= 1000; ++i)
+  {
+    values.push_back(i % 2 ? i : -i);
+  }
+  values.push_back(std::nan(""));
+  values.push_back(HUGE_VAL);
+  values.push_back(1e300); // an outlier moves the limit by one value only
+  const double c =
+    MagnitudeQuantile(values.data(), static_cast<std::int64_t>(values.size()), 0.95, Collectives{});
+  checks.True("95th percentile of |1..1000|: 951 to 951 x 2^(1/16)",
+    c >= 951.0 && c <= 951.0 * std::exp2(1.0 / 16.0));
+  checks.True("no finite value: limit 0",
+    MagnitudeQuantile(values.data() + 1000, 2, 0.95, Collectives{}) == 0.0);
+
+  auto torus = testing::Sample(testing::Torus(3.0, 1.0), 20000, 41);
+  Results r(torus.size(), false);
+  std::vector<double> clipped(torus.size());
+  CurvatureBuffers buffers = r.Buffers();
+  buffers.ClippedMean = clipped.data();
+  SerialRunner serial;
+  const EstimationSummary summary =
+    EstimateCloud(MakeCloud(torus), EstimationSettings{}, Collectives{}, serial, nullptr, buffers);
+  const double clip = summary.MeanCurvatureClip;
+  int wrong = 0, inside = 0;
+  for (std::size_t i = 0; i < torus.size(); ++i)
+  {
+    const double expected = std::min(std::max(r.Mean[i], -clip), clip);
+    wrong += !(clipped[i] == expected || (std::isnan(clipped[i]) && std::isnan(r.Mean[i])));
+    inside += std::fabs(r.Mean[i]) <= clip;
+  }
+  checks.True("torus: the clipped mean curvature is the mean curvature clamped to [-c, c]",
+    wrong == 0 && clip > 0.0);
+  checks.True("torus: at least 95 % of the points inside the limit, which is within the "
+              "exact range of |H| (5/8) and a bin",
+    inside >= 0.95 * torus.size() && clip <= 0.625 * 1.1);
+}
+
 int main()
 {
   Checks checks;
+  TestClippedMean(checks);
   TestAccuracyAndSign(checks);
   TestRunnerIndependence(checks);
   TestWorkingUnit(checks);

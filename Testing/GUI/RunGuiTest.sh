@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The real ParaView GUI under Xvfb: load the plugin, open a normals-less
-# .xyz, apply the filter, colour by Mean_Curvature, capture the whole screen,
-# and check (by OCR) that the filter's Properties panel is showing and (by
-# counting colours) that the view shows the coloured cloud.
+# .xyz, apply the filter with defaults and show it as a first Apply does,
+# capture the whole screen, and check that it shows as points coloured by
+# the clipped mean curvature, (by OCR) that the filter's Properties panel is
+# showing, and (by counting colours) that the view shows the coloured cloud.
 #   RunGuiTest.sh PARAVIEW PLUGIN CLOUD SCREENSHOT.png
 set -u
 paraview=$1 plugin=$2 cloud=$3 screenshot=$4
@@ -30,8 +31,16 @@ marker=$(cat "$GUI_TEST_MARKER" 2>/dev/null || echo "no marker: the GUI script d
 echo "GUI script: $marker"
 case "$marker" in ok*) ;; *) status=1; tail -n 20 "$work/paraview.log" ;; esac
 # A normals-less .xyz: read by the plugin's reader, normals estimated.
-case "$marker" in *"reader ASCIIPointCloudReader, normals estimated True, coloured by Mean_Curvature"*) ;;
-  *) echo "FAILED: the .xyz was not read by the plugin's reader with estimated normals and shown coloured by Mean_Curvature"; status=1 ;; esac
+case "$marker" in *"reader ASCIIPointCloudReader, normals estimated True, coloured by Mean_Curvature_Clipped, representation 'Points'"*) ;;
+  *) echo "FAILED: the .xyz was not read by the plugin's reader with estimated normals and shown as points coloured by Mean_Curvature_Clipped"; status=1 ;; esac
+# The colour range is the clipped array's, within the mean curvature's range.
+read -r low high mean_low mean_high <<< "$(sed -n 's/.*colour range \([^ ]*\) \([^,]*\), mean curvature \([^ ]*\) \([^,]*\),.*/\1 \2 \3 \4/p' <<< "$marker")"
+if awk -v l="$low" -v h="$high" -v ml="$mean_low" -v mh="$mean_high" 'BEGIN { exit !(l < h && l >= ml && h <= mh) }'; then
+  echo "colour range $low $high within the mean curvature's $mean_low $mean_high"
+else
+  echo "FAILED: colour range '$low' '$high' (mean curvature '$mean_low' '$mean_high')"
+  status=1
+fi
 if [ ! -s "$screenshot" ]; then
   echo "FAILED: no screenshot"
   exit 1
@@ -40,7 +49,7 @@ fi
 # is too small for OCR at screen size.
 convert "$screenshot" -crop 300x1000+0+0 +repage -resize 300% -colorspace Gray "$work/panel.png"
 text=$(tesseract "$work/panel.png" - 2>/dev/null)
-for label in "Fit Mode" "Dynamic Adjustment" "Automatic Thresholds" "Neighbourhood"; do
+for label in "Fit Mode" "Dynamic Adjustment" "Automatic Thresholds" "Neighborhood" "Fitting"; do
   if grep -q "$label" <<< "$text"; then
     echo "panel shows: $label"
   else
