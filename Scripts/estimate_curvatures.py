@@ -91,18 +91,18 @@ def parse_arguments(argv):
     parser.add_argument("input", help="point cloud with normals (%s)" % " ".join(INPUT_EXTENSIONS))
     parser.add_argument("output", help="result (%s, by the extension)" % " ".join(OUTPUT_EXTENSIONS))
     parser.add_argument("--fit-mode", choices=FIT_MODES,
-                        help="the fit (default: OrientedCircles with the automatic neighbourhood; New01, the "
+                        help="the fit (default: OrientedCircles with the automatic neighborhood; New01, the "
                              "paper's, with --dynamic-adjustment)")
     parser.add_argument("--neighbors", type=int, metavar="N",
-                        help="a fixed neighbourhood: the radius holding about N neighbours, or k with --k-nearest "
+                        help="a fixed neighborhood: the radius holding about N neighbors, or k with --k-nearest "
                              "(default: chosen per point from the data)")
-    parser.add_argument("--k-nearest", action="store_true", help="use the N nearest neighbours instead of a radius")
+    parser.add_argument("--k-nearest", action="store_true", help="use the N nearest neighbors instead of a radius")
     parser.add_argument("--radius", type=float, metavar="S",
                         help="fixed surroundings-threshold s (turns the automatic thresholds off)")
     parser.add_argument("--plane-distance", type=float, metavar="P",
                         help="fixed plane-distance-threshold p, with --radius (default: S / 10)")
     parser.add_argument("--dynamic-adjustment", nargs="?", const="paper", choices=sorted(ADJUSTMENTS),
-                        help="the paper's dynamic variable adjustment (replaces the neighbourhood options): "
+                        help="the paper's dynamic variable adjustment (replaces the neighborhood options): "
                              "with the paper's constants (the default), or the banded ladder of docs/dynamic-adjustment.md "
                              "for noise-free or noisy clouds")
     parser.add_argument("--normals", metavar="NAME",
@@ -503,8 +503,8 @@ def configure(curvatures, arguments):
         curvatures.PlaneDistanceThreshold = arguments.plane_distance or 0.1 * arguments.radius
 
 
-def neighbourhood_description(curvatures):
-    """One line on the neighbourhood settings in use."""
+def neighborhood_description(curvatures):
+    """One line on the neighborhood settings in use."""
     if curvatures.DynamicAdjustment:
         return "dynamic adjustment: target counts %s, plane distances %s L, switch lengths %s L" % tuple(
             " ".join("%g" % v for v in getattr(curvatures, name))
@@ -513,16 +513,16 @@ def neighbourhood_description(curvatures):
     if curvatures.NeighborhoodMode == "Automatic" and curvatures.FitMode == "OrientedCircles":
         return "automatic: per point, the largest radius whose curvatures agree with the smaller ones'"
     if curvatures.NeighborhoodMode == "K Nearest":
-        neighbours = "the %d nearest points" % k
-        plane = "p = %g x median distance to the %d-th neighbour" % (curvatures.PlaneDistanceRatio, k) \
+        neighbors = "the %d nearest points" % k
+        plane = "p = %g x median distance to the %d-th neighbor" % (curvatures.PlaneDistanceRatio, k) \
             if automatic else "p = %g" % curvatures.PlaneDistanceThreshold
     elif automatic:
-        neighbours = "radius s = median distance to the %d-th neighbour" % k
+        neighbors = "radius s = median distance to the %d-th neighbor" % k
         plane = "p = %g s" % curvatures.PlaneDistanceRatio
     else:
-        neighbours = "radius s = %g" % curvatures.SurroundingsThreshold
+        neighbors = "radius s = %g" % curvatures.SurroundingsThreshold
         plane = "p = %g" % curvatures.PlaneDistanceThreshold
-    return "%s, %s" % (neighbours, plane)
+    return "%s, %s" % (neighbors, plane)
 
 
 def percentiles_row(name, values):
@@ -567,7 +567,7 @@ def summarize(output, seconds, description):
             print("%-26s %.6g (median)" % (name, numpy.median(array(name)[valid])))
     print("%-26s %.3f s" % ("filter time", seconds))
     if not estimated:
-        sys.stderr.write("estimate_curvatures: warning: no point was estimated (too few neighbours? "
+        sys.stderr.write("estimate_curvatures: warning: no point was estimated (too few neighbors? "
                          "try a larger --radius or --neighbors)\n")
     print()
     print("%-26s %12s %12s %12s %12s %12s" % ("at estimated points", "min", "5 %", "median", "95 %", "max"))
@@ -763,7 +763,7 @@ def main(argv):
         ("input", arguments.input),
         ("normals", normals_description),
         ("fit mode", arguments.fit_mode),
-        ("neighbourhood", neighbourhood_description(curvatures)),
+        ("neighborhood", neighborhood_description(curvatures)),
     ])
     print()
     print("wrote %s" % arguments.output)

@@ -290,7 +290,7 @@ def check_file_cloud(path):
             ratio = a["Neighbor_Count"] / a["Target_Neighbor_Count"]
             p5, p95 = numpy.percentile(ratio, [5, 95])
             check(p5 >= 0.8 and p95 <= 1.25,
-                  "%s, %s: neighbour count / target within 0.8..1.25 (p5 %.2f, p95 %.2f)" % (name, label, p5, p95))
+                  "%s, %s: neighbor count / target within 0.8..1.25 (p5 %.2f, p95 %.2f)" % (name, label, p5, p95))
         valid = valid_mask(a, "%s, %s" % (name, label))
         inside = valid & (a["Boundary_Distance"] > 2.0 * a["Surroundings_Threshold"])
         scale = max(numpy.abs(a["Exact_Minimum_Curvature"]).max(), numpy.abs(a["Exact_Maximum_Curvature"]).max())
