@@ -92,7 +92,9 @@ struct CurvatureArrays
       adjusted ? this->Add<vtkIntArray>("Target_Neighbor_Count", 1, n, true) : nullptr;
     b.ShapeIndex = this->Add<vtkDoubleArray>("Shape_Index", 1, n);
     b.Curvedness = this->Add<vtkDoubleArray>("Curvedness", 1, n);
-    b.ClippedMean = this->Add<vtkDoubleArray>("Mean_Curvature_Clipped", 1, n);
+    // For display; derived from Mean_Curvature, so left out with the
+    // diagnostics when the output is to be small.
+    b.ClippedMean = this->Add<vtkDoubleArray>("Mean_Curvature_Clipped", 1, n, true);
     // With the fits that give one: the standard error of the curvatures.
     b.StandardError =
       standardError ? this->Add<vtkDoubleArray>("Curvature_Standard_Error", 1, n, true) : nullptr;
@@ -336,7 +338,8 @@ int vtkPrincipalCurvatureEstimation::RequestData(vtkInformation*,
   // The active scalars: ParaView colours a new display by them, over their
   // range, so the first Apply shows the curvature rather than a solid
   // colour, and its structure rather than a few outliers.
-  output->GetPointData()->SetActiveScalars("Mean_Curvature_Clipped");
+  output->GetPointData()->SetActiveScalars(
+    this->DiagnosticArrays ? "Mean_Curvature_Clipped" : "Mean_Curvature");
   return 1;
 }
 

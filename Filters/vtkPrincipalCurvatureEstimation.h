@@ -218,7 +218,9 @@ public:
    * DiagnosticArrays (default on) adds the arrays that say how each point
    * was estimated: Neighbor_Count, Valid_Direction_Count, Sine_Fit_RMS,
    * Surroundings_Threshold, Plane_Distance_Threshold,
-   * Curvature_Standard_Error and Target_Neighbor_Count.
+   * Curvature_Standard_Error and Target_Neighbor_Count, and the display
+   * array Mean_Curvature_Clipped (the active scalars; without it,
+   * Mean_Curvature is).
    */
   vtkSetMacro(SinglePrecisionOutput, bool);
   vtkGetMacro(SinglePrecisionOutput, bool);

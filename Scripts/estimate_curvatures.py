@@ -44,7 +44,8 @@ and the time the filter took. On a terminal it also shows the stages and a
 progress line on stderr (--progress shows them when piped too,
 --no-progress never). --single-precision writes the arrays as float,
 --no-diagnostics leaves out the arrays that say how each point was
-estimated: together they make the file less than half its size.
+estimated; with either, a .vtp is also compressed (zlib). Together they make
+a .vtp about 40 % and a .ply about 45 % of the default size.
 
 The plugin is loaded from --plugin, else $PRINCIPAL_CURVATURES_PLUGIN, else
 the build tree next to this script; not at all if it is already loaded
@@ -589,13 +590,14 @@ def summarize(output, seconds, description):
 # Writing results
 
 
-def write_vtp(curvatures, path):
-    """The filter's output as VTK XML polydata."""
+def write_vtp(curvatures, path, compress):
+    """The filter's output as VTK XML polydata, compressed (zlib) if asked."""
     # Inline binary, not the default appended data: ParaView 5.11 with a
     # current Debian 12 libexpat (2.5.0-1+deb12u2 and later) cannot read
     # appended data (VTK issue 19258).
     written = time.time()
-    writer = simple.XMLPolyDataWriter(Input=curvatures, FileName=path, DataMode="Binary")
+    writer = simple.XMLPolyDataWriter(Input=curvatures, FileName=path, DataMode="Binary",
+                                      CompressorType="ZLib" if compress else "None")
     writer.UpdatePipeline()  # the writer reports failures only as VTK errors: check the file
     if not os.path.isfile(path) or os.path.getmtime(path) < written - 1.0:
         fail("could not write %s (see the messages above)" % path)
@@ -711,12 +713,13 @@ def write_csv(cloud, normals, path):
                   header=",".join(name for name, _, _ in columns), comments="")
 
 
-def write_output(curvatures, result, normals, path):
+def write_output(curvatures, result, normals, path, compress=False):
     """Writes the filter's output (result, fetched) in the format of path's
-    extension (.vtp, .ply, .csv); exits with a message if that fails."""
+    extension (.vtp, .ply, .csv), a .vtp compressed with `compress`; exits
+    with a message if that fails."""
     extension = os.path.splitext(path)[1].lower()
     if extension == ".vtp":
-        write_vtp(curvatures, path)
+        write_vtp(curvatures, path, compress)
         return
     try:
         if extension == ".ply":
@@ -756,7 +759,9 @@ def main(argv):
         fail("the filter produced no curvatures (see the messages above)")
     used = "Normals" if normals is None or arguments.estimate_normals else normals
     progress.begin("writing %s" % arguments.output)
-    write_output(curvatures, result, used, arguments.output)
+    # Asked for a small file: a .vtp is compressed too.
+    write_output(curvatures, result, used, arguments.output,
+                 compress=arguments.single_precision or arguments.no_diagnostics)
     progress.end()
 
     summarize(result, seconds, [
