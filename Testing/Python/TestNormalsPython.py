@@ -4,7 +4,8 @@
 
 * a sphere of radius 2 with points only: PrincipalCurvatures(Input=...) with
   defaults estimates the normals (output array Normals, outward), and gives
-  k = +1/2 at every point;
+  k = +1/2 at every point; paraview.simple.Show shows it as points coloured
+  by Mean_Curvature_Clipped;
 * the same sphere with colours (unsigned char RGB, the first 3-component
   array, which the Normals property picks by default): the colours are not
   used, the normals are estimated; with Normals Source 'Input Array' the
@@ -68,7 +69,14 @@ points, exact = sphere()
 
 # Points only.
 bare = cloud(points)
-result = fetch(PrincipalCurvatures(Input=bare))  # noqa: F821 (from LoadPlugin)
+shown = PrincipalCurvatures(Input=bare)  # noqa: F821 (from LoadPlugin)
+result = fetch(shown)
+# paraview.simple.Show as a first Apply: points, coloured by the display array.
+display = simple.Show(shown)
+check(display.Representation == "Points" and list(display.ColorArrayName)[-1] == "Mean_Curvature_Clipped",
+      "Show: Points, coloured by Mean_Curvature_Clipped (%s, %s)"
+      % (display.Representation, list(display.ColorArrayName)))
+simple.Hide(shown)
 normals = array(result, "Normals")
 check(normals is not None and normals.shape == (20000, 3), "points only: Normals estimated and output")
 if normals is not None:

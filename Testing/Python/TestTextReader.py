@@ -246,7 +246,7 @@ def read_ply(path):
     header = data[:end].decode("ascii").splitlines()
     properties = [line.split()[1:] for line in header if line.startswith("property ")]
     count = int(next(line.split()[2] for line in header if line.startswith("element vertex")))
-    code = "<" + "".join({"double": "d", "float": "f", "uchar": "B"}[kind] for kind, _ in properties)
+    code = "<" + "".join({"double": "d", "float": "f", "int": "i", "uchar": "B"}[kind] for kind, _ in properties)
     size = struct.calcsize(code)
     records = [struct.unpack_from(code, data, end + i * size) for i in range(count)]
     return header, [name for _, name in properties], records, len(data) - end - count * size
