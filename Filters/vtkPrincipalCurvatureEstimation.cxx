@@ -31,6 +31,13 @@
 
 vtkStandardNewMacro(vtkPrincipalCurvatureEstimation);
 
+namespace
+{
+/// The Normals property's entry for "no array" in the plugin's panel (the
+/// ArrayListDomain's none_string): the normals attribute or estimated ones.
+constexpr const char* NO_NORMALS_ARRAY = "None (automatic)";
+}
+
 // The wrapped header cannot include the core: its enumerations are kept
 // equal to the core's here.
 static_assert(
@@ -449,8 +456,12 @@ vtkDataArray* vtkPrincipalCurvatureEstimation::ChooseNormals(vtkInformationVecto
   }
   vtkDataArray* chosen = this->GetInputArrayToProcess(0, inputVector);
   vtkInformation* request = this->GetInputArrayInformation(0);
-  const bool byName = request && request->Has(vtkDataObject::FIELD_NAME()) &&
-    !std::string(request->Get(vtkDataObject::FIELD_NAME())).empty();
+  // ParaView's "no selection": an empty name, the panel's entry for none
+  // (the XML's none_string), or "0" when the input has no 3-component array.
+  const std::string requested = request && request->Has(vtkDataObject::FIELD_NAME())
+    ? request->Get(vtkDataObject::FIELD_NAME())
+    : "";
+  const bool byName = !requested.empty() && requested != NO_NORMALS_ARRAY;
   if (!chosen && byName && this->NormalsSource == AUTOMATIC_NORMALS &&
     input->GetPointData()->GetNumberOfArrays() > 0)
   {
@@ -460,8 +471,7 @@ vtkDataArray* vtkPrincipalCurvatureEstimation::ChooseNormals(vtkInformationVecto
   }
   if (!chosen && (!byName || this->NormalsSource == AUTOMATIC_NORMALS))
   {
-    // The attribute; also for ParaView's "no selection" (an empty name, or
-    // "0" when the input has no 3-component array at all).
+    // The attribute, for no selection too.
     chosen = input->GetPointData()->GetNormals();
   }
   if (chosen || this->NormalsSource == INPUT_NORMALS)

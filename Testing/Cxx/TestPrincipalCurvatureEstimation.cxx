@@ -446,6 +446,18 @@ void TestBadInput(Checks& checks)
       "field data: three points in all", FieldCount(filter->GetOutput(), "Unestimated_Points"), 3);
   }
   {
+    // The panel's "no array" entry: the normals attribute, without a warning.
+    vtkNew<vtkPrincipalCurvatureEstimation> filter;
+    EventCounter events(filter);
+    filter->SetInputData(cloud);
+    filter->SetInputArrayToProcess(
+      0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "None (automatic)");
+    filter->Update();
+    checks.True("'None (automatic)': the normals attribute used, no warning or error",
+      !filter->GetUsedEstimatedNormals() && events.Warnings == 0 && events.Errors == 0 &&
+        filter->GetNumberOfUnestimatedPoints() == 0);
+  }
+  {
     // An unstructured grid of points is accepted.
     vtkNew<vtkUnstructuredGrid> grid;
     grid->SetPoints(cloud->GetPoints());
