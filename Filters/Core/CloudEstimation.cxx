@@ -683,7 +683,7 @@ private:
     {
       const double r = std::min(unit * std::pow(2.0, 0.5 * level), rule.LargestRadius);
       const double innerSquared = inner * inner;
-      this->Grid.ForEachWithinRadius(x,
+      this->Grid.ForEachWithinRadiusFine(x,
         r,
         [&](const double* q, std::int64_t id)
         {

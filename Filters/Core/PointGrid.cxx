@@ -147,6 +147,111 @@ void PointGrid::Build(const double* coordinates, std::int64_t count, const GridL
       this->Sorted[k][j] = coordinates[3 * this->Ids[j] + k];
     }
   }
+  this->BuildDenseCells(coordinates);
+}
+
+void PointGrid::BuildDenseCells(const double* coordinates)
+{
+  this->DenseOfCell.clear();
+  this->DenseCells.clear();
+  this->FineStart.clear();
+  this->FineIds.clear();
+  for (std::vector<double>& axis : this->Fine)
+  {
+    axis.clear();
+  }
+  const std::int64_t numberOfCells = static_cast<std::int64_t>(this->CellStart.size()) - 1;
+  std::vector<std::int64_t> counts;
+  for (std::int64_t c = 0; c < numberOfCells; ++c)
+  {
+    const std::int64_t n = this->CellStart[c + 1] - this->CellStart[c];
+    if (n > 0)
+    {
+      counts.push_back(n);
+    }
+  }
+  if (counts.empty())
+  {
+    return;
+  }
+  std::nth_element(counts.begin(), counts.begin() + counts.size() / 2, counts.end());
+  // Dense: more than 16 times the median cell and than 256 points, where
+  // scanning the whole cell for every query costs far more than the
+  // neighbours found.
+  const std::int64_t dense = std::max<std::int64_t>(256, 16 * counts[counts.size() / 2]);
+  for (std::int64_t c = 0; c < numberOfCells; ++c)
+  {
+    const std::int64_t n = this->CellStart[c + 1] - this->CellStart[c];
+    if (n <= dense)
+    {
+      continue;
+    }
+    if (this->DenseOfCell.empty())
+    {
+      this->DenseOfCell.assign(numberOfCells, -1);
+    }
+    DenseCell cell;
+    const std::int64_t ix = c % this->Dimensions[0];
+    const std::int64_t iy = (c / this->Dimensions[0]) % this->Dimensions[1];
+    const std::int64_t iz = c / (this->Dimensions[0] * this->Dimensions[1]);
+    cell.Cell = { { this->Low[0] + ix, this->Low[1] + iy, this->Low[2] + iz } };
+    // About 8 points a fine cell were the points spread through the volume;
+    // on a surface, more (its fine cells are fewer).
+    cell.Split = static_cast<int>(std::min(64.0, std::max(2.0, std::cbrt(n / 8.0))));
+    cell.First = static_cast<std::int64_t>(this->FineIds.size());
+    cell.Starts = static_cast<std::int64_t>(this->FineStart.size());
+    const std::int64_t fineCells = static_cast<std::int64_t>(cell.Split) * cell.Split * cell.Split;
+    std::vector<std::pair<std::int64_t, std::int64_t>> keyed; // (fine cell, sorted position)
+    keyed.reserve(n);
+    for (std::int64_t j = this->CellStart[c]; j < this->CellStart[c + 1]; ++j)
+    {
+      const double* q = coordinates + 3 * this->Ids[j];
+      const std::int64_t f =
+        (this->FineIndex(cell, q[2], 2) * cell.Split + this->FineIndex(cell, q[1], 1)) *
+          cell.Split +
+        this->FineIndex(cell, q[0], 0);
+      keyed.emplace_back(f, j); // j: the cell's order by coordinates, kept within a fine cell
+    }
+    std::sort(keyed.begin(), keyed.end());
+    std::vector<std::int64_t> starts(fineCells + 1, 0);
+    for (const auto& entry : keyed)
+    {
+      ++starts[entry.first + 1];
+    }
+    for (std::int64_t f = 0; f < fineCells; ++f)
+    {
+      starts[f + 1] += starts[f];
+    }
+    for (std::int64_t& start : starts)
+    {
+      start += cell.First;
+    }
+    this->FineStart.insert(this->FineStart.end(), starts.begin(), starts.end());
+    for (const auto& entry : keyed)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        this->Fine[k].push_back(this->Sorted[k][entry.second]);
+      }
+      this->FineIds.push_back(this->Ids[entry.second]);
+    }
+    this->DenseOfCell[c] = static_cast<std::int32_t>(this->DenseCells.size());
+    this->DenseCells.push_back(cell);
+  }
+}
+
+double PointGrid::StartRadius(const double x[3]) const
+{
+  if (this->DenseCells.empty())
+  {
+    return this->Lattice.CellSize;
+  }
+  const std::int64_t c =
+    (this->CellIndex(x[2], 2) * this->Dimensions[1] + this->CellIndex(x[1], 1)) *
+      this->Dimensions[0] +
+    this->CellIndex(x[0], 0);
+  const std::int32_t d = this->DenseOfCell[c];
+  return d < 0 ? this->Lattice.CellSize : this->Lattice.CellSize / this->DenseCells[d].Split;
 }
 
 std::int64_t PointGrid::QueryCells(const double x[3],
@@ -233,7 +338,9 @@ double PointGrid::SquaredDistanceToKth(const double x[3], int k, std::vector<dou
     const double dx = q[0] - x[0], dy = q[1] - x[1], dz = q[2] - x[2];
     return dx * dx + dy * dy + dz * dz;
   };
-  double radius = this->Lattice.CellSize;
+  // The k-th distance is the same whatever radius finds at least k points
+  // and whichever order visits them: the search starts small in dense cells.
+  double radius = this->StartRadius(x);
   for (;;)
   {
     scratch.clear();
@@ -250,7 +357,7 @@ double PointGrid::SquaredDistanceToKth(const double x[3], int k, std::vector<dou
       std::nth_element(scratch.begin(), scratch.begin() + (wanted - 1), scratch.end());
       return scratch[wanted - 1];
     }
-    this->ForEachWithinRadius(
+    this->ForEachWithinRadiusFine(
       x, radius, [&](const double* q, std::int64_t) { scratch.push_back(squaredDistance(q)); });
     const std::int64_t found = static_cast<std::int64_t>(scratch.size());
     if (found >= wanted)

@@ -144,6 +144,19 @@ public:
   /// Returns the largest squared distance when there are fewer points.
   double SquaredDistanceToKth(const double x[3], int k, std::vector<double>& scratch) const;
 
+  /// The same points as ForEachWithinRadius, in another fixed order (that
+  /// too depends only on the grid and x), at a cost that follows the points
+  /// near x rather than the points of x's cells: cells far denser than the
+  /// grid's typical one (a dense patch in a sparse cloud, a scan near its
+  /// scanner) are searched through finer cells of their own.
+  template<typename Visit>
+  void ForEachWithinRadiusFine(const double x[3], double radius, Visit&& visit) const;
+  /// Cells searched through finer cells of their own.
+  std::int64_t GetNumberOfDenseCells() const
+  {
+    return static_cast<std::int64_t>(this->DenseCells.size());
+  }
+
 private:
   /// The cells a query of `radius` around x visits (low..high per axis),
   /// and the number of points in them.
@@ -163,6 +176,35 @@ private:
     return static_cast<std::int64_t>(cell > 0.0 ? (cell < last ? cell : last) : 0.0);
   }
 
+  /// A cell much denser than the typical one, split into Split^3 finer
+  /// cells: its points, sorted by fine cell (then by coordinates), are
+  /// [First, First + Count) of the Fine arrays, fine cell f starting at
+  /// FineStart[Starts + f].
+  struct DenseCell
+  {
+    std::array<std::int64_t, 3> Cell; // lattice cell
+    int Split = 1;
+    std::int64_t First = 0, Starts = 0;
+  };
+
+  /// Finds the cells far denser than the median non-empty one and builds
+  /// their finer cells.
+  void BuildDenseCells(const double* coordinates);
+  /// The fine cell along an axis of coordinate c in dense cell `dense`,
+  /// clamped to it (monotone in c, so a query's range of fine cells holds
+  /// every point within its radius).
+  std::int64_t FineIndex(const DenseCell& dense, double c, int axis) const
+  {
+    const double f =
+      (this->Lattice.CellCoordinate(c, axis) - static_cast<double>(dense.Cell[axis])) *
+      static_cast<double>(dense.Split);
+    const double last = static_cast<double>(dense.Split - 1);
+    return static_cast<std::int64_t>(f > 0.0 ? (f < last ? std::floor(f) : last) : 0.0);
+  }
+  /// The start radius of a k-nearest search at x: a fine cell's size where
+  /// x's cell is dense, else the cell size.
+  double StartRadius(const double x[3]) const;
+
   GridLattice Lattice;
   std::array<std::int64_t, 3> Low{ { 0, 0, 0 } }; // lattice cell of local cell 0
   std::array<std::int64_t, 3> Dimensions{ { 1, 1, 1 } };
@@ -170,7 +212,91 @@ private:
   std::vector<std::int64_t> CellStart; // per cell, its first sorted point; one extra at the end
   std::array<std::vector<double>, 3> Sorted; // coordinates in cell order, one array per axis
   std::vector<std::int64_t> Ids;             // original ids in cell order
+  std::vector<std::int32_t> DenseOfCell;     // per cell, its DenseCells index or -1 (empty: none)
+  std::vector<DenseCell> DenseCells;
+  std::vector<std::int64_t> FineStart;
+  std::array<std::vector<double>, 3> Fine; // dense cells' coordinates in fine-cell order
+  std::vector<std::int64_t> FineIds;
 };
+
+template<typename Visit>
+void PointGrid::ForEachWithinRadiusFine(const double x[3], double radius, Visit&& visit) const
+{
+  if (this->DenseCells.empty())
+  {
+    this->ForEachWithinRadius(x, radius, visit);
+    return;
+  }
+  if (this->Ids.empty() || !(radius > 0.0))
+  {
+    return;
+  }
+  std::array<std::int64_t, 3> low, high;
+  for (int k = 0; k < 3; ++k)
+  {
+    low[k] = this->CellIndex(x[k] - radius, k);
+    high[k] = this->CellIndex(x[k] + radius, k);
+  }
+  const double radiusSquared = radius * radius;
+  auto test =
+    [&](const double* xs, const double* ys, const double* zs, std::int64_t j, std::int64_t id)
+  {
+    const double q[3] = { xs[j], ys[j], zs[j] };
+    const double dx = q[0] - x[0], dy = q[1] - x[1], dz = q[2] - x[2];
+    if (dx * dx + dy * dy + dz * dz < radiusSquared)
+    {
+      visit(q, id);
+    }
+  };
+  for (std::int64_t iz = low[2]; iz <= high[2]; ++iz)
+  {
+    for (std::int64_t iy = low[1]; iy <= high[1]; ++iy)
+    {
+      const std::int64_t row = (iz * this->Dimensions[1] + iy) * this->Dimensions[0];
+      for (std::int64_t ix = low[0]; ix <= high[0]; ++ix)
+      {
+        const std::int32_t d = this->DenseOfCell[row + ix];
+        if (d < 0)
+        {
+          for (std::int64_t j = this->CellStart[row + ix]; j < this->CellStart[row + ix + 1]; ++j)
+          {
+            test(this->Sorted[0].data(),
+              this->Sorted[1].data(),
+              this->Sorted[2].data(),
+              j,
+              this->Ids[j]);
+          }
+          continue;
+        }
+        const DenseCell& dense = this->DenseCells[d];
+        std::array<std::int64_t, 3> fineLow, fineHigh;
+        for (int k = 0; k < 3; ++k)
+        {
+          fineLow[k] = this->FineIndex(dense, x[k] - radius, k);
+          fineHigh[k] = this->FineIndex(dense, x[k] + radius, k);
+        }
+        const std::int64_t split = dense.Split;
+        for (std::int64_t fz = fineLow[2]; fz <= fineHigh[2]; ++fz)
+        {
+          for (std::int64_t fy = fineLow[1]; fy <= fineHigh[1]; ++fy)
+          {
+            const std::int64_t fineRow = dense.Starts + (fz * split + fy) * split;
+            for (std::int64_t j = this->FineStart[fineRow + fineLow[0]];
+                 j < this->FineStart[fineRow + fineHigh[0] + 1];
+                 ++j)
+            {
+              test(this->Fine[0].data(),
+                this->Fine[1].data(),
+                this->Fine[2].data(),
+                j,
+                this->FineIds[j]);
+            }
+          }
+        }
+      }
+    }
+  }
+}
 
 } // namespace pcurv
 

@@ -732,9 +732,70 @@ void TestClippedMean(Checks& checks)
     inside >= 0.95 * torus.size() && clip <= 0.625 * 1.1);
 }
 
+/// A grid over a sparse cloud with a patch thousands of times denser: the
+/// fine query finds exactly the points within the radius (as the plain one
+/// and brute force do), and the k-th nearest distances equal brute force.
+void TestDenseCells(Checks& checks)
+{
+  std::vector<double> xyz;
+  std::uint64_t state = 12345;
+  auto uniform = [&state]()
+  {
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return static_cast<double>(state >> 11) / 9007199254740992.0;
+  };
+  for (int i = 0; i < 5000; ++i) // sparse: a 4 x 4 square
+  {
+    xyz.insert(xyz.end(), { 4.0 * uniform(), 4.0 * uniform(), 0.01 * uniform() });
+  }
+  for (int i = 0; i < 20000; ++i) // dense: 0.02 x 0.02 at (1, 1)
+  {
+    xyz.insert(xyz.end(), { 1.0 + 0.02 * uniform(), 1.0 + 0.02 * uniform(), 0.01 * uniform() });
+  }
+  const std::int64_t n = static_cast<std::int64_t>(xyz.size() / 3);
+  const double lower[3] = { 0.0, 0.0, 0.0 }, upper[3] = { 4.0, 4.0, 0.01 };
+  PointGrid grid;
+  grid.Build(xyz.data(), n, GridLattice::Make(lower, upper, n, 0.2));
+  int wrongSets = 0, wrongKth = 0;
+  std::vector<double> scratch;
+  for (int query = 0; query < 300; ++query)
+  {
+    const double* x = &xyz[3 * ((query * 7919) % n)];
+    const double radius = query % 3 == 0 ? 0.002 : (query % 3 == 1 ? 0.05 : 0.3);
+    std::vector<std::int64_t> fine, plain, brute;
+    grid.ForEachWithinRadiusFine(
+      x, radius, [&](const double*, std::int64_t id) { fine.push_back(id); });
+    grid.ForEachWithinRadius(
+      x, radius, [&](const double*, std::int64_t id) { plain.push_back(id); });
+    std::vector<double> distances;
+    for (std::int64_t i = 0; i < n; ++i)
+    {
+      const double dx = xyz[3 * i] - x[0], dy = xyz[3 * i + 1] - x[1], dz = xyz[3 * i + 2] - x[2];
+      const double squared = dx * dx + dy * dy + dz * dz;
+      distances.push_back(squared);
+      if (squared < radius * radius)
+      {
+        brute.push_back(i);
+      }
+    }
+    std::sort(fine.begin(), fine.end());
+    std::sort(plain.begin(), plain.end());
+    wrongSets += fine != brute || plain != brute;
+    const int k = 1 + query % 40;
+    std::nth_element(distances.begin(), distances.begin() + (k - 1), distances.end());
+    wrongKth += grid.SquaredDistanceToKth(x, k, scratch) != distances[k - 1];
+  }
+  checks.True(
+    "dense patch: its cell is searched through finer cells", grid.GetNumberOfDenseCells() >= 1);
+  checks.True(
+    "dense patch: the fine query finds exactly the points within the radius", wrongSets == 0);
+  checks.True("dense patch: k-th nearest distances equal brute force", wrongKth == 0);
+}
+
 int main()
 {
   Checks checks;
+  TestDenseCells(checks);
   TestClippedMean(checks);
   TestAccuracyAndSign(checks);
   TestRunnerIndependence(checks);
