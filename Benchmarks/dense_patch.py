@@ -5,7 +5,10 @@ near its scanner), exact normals, the filter's defaults. Prints the median
 time of each over RUNS runs, measured alternately in one process, their
 ratio (the target is at most 2), and the mean curvature error on the patch.
 
-    pvpython Benchmarks/dense_patch.py [RUNS] [THREADS]
+    pvpython Benchmarks/dense_patch.py [RUNS] [THREADS] [--estimate-normals]
+
+With --estimate-normals the normals are estimated (a scan without normals)
+instead of given exactly.
 
 Needs the wrapped Python package on PYTHONPATH (the build's
 lib/python3.X/site-packages).
@@ -60,22 +63,24 @@ def cloud(with_patch, seed=7):
     return data, patch, kmin, kmax
 
 
-def run(data, threads):
+def run(data, threads, estimate):
     curvatures = vtkPrincipalCurvatureEstimation()
     curvatures.SetInputData(data)
     curvatures.SetNumberOfThreads(threads)
+    if estimate:
+        curvatures.SetNormalsSourceToEstimated()
     start = time.perf_counter()
     curvatures.Update()
     return time.perf_counter() - start, curvatures.GetOutput()
 
 
-def main(runs, threads):
+def main(runs, threads, estimate):
     alone, _, _, _ = cloud(False)
     patched, patch, kmin, kmax = cloud(True)
     times = {"alone": [], "with patch": []}
     for _ in range(runs):
-        times["alone"].append(run(alone, threads)[0])
-        seconds, output = run(patched, threads)
+        times["alone"].append(run(alone, threads, estimate)[0])
+        seconds, output = run(patched, threads, estimate)
         times["with patch"].append(seconds)
     for name, values in times.items():
         print("%-12s median %.3f s (%s)" % (name, statistics.median(values), " ".join("%.3f" % t for t in values)))
@@ -93,4 +98,5 @@ def main(runs, threads):
 
 
 if __name__ == "__main__":
-    main(int(sys.argv[1]) if len(sys.argv) > 1 else 3, int(sys.argv[2]) if len(sys.argv) > 2 else 0)
+    numbers = [int(a) for a in sys.argv[1:] if not a.startswith("--")]
+    main(numbers[0] if numbers else 3, numbers[1] if len(numbers) > 1 else 0, "--estimate-normals" in sys.argv)
