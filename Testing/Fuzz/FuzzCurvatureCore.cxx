@@ -473,8 +473,23 @@ void CheckGrid(Bytes& in)
   {
     points.push_back(spread == 2 ? in.Finite(LargestGridCoordinate) : in.Small() * unit);
   }
+  // Sometimes a dense cluster around the first point (a cell far denser
+  // than the others is searched through finer cells of its own): copies of
+  // the points shrunk towards it, 300 to 2,000 more.
+  const int clustered = (in.Byte() & 3) == 0 ? 300 + 7 * in.Byte() : 0;
+  const double shrink = std::ldexp(1.0, -static_cast<int>(1 + in.Byte() % 40));
+  for (int c = 0; c < clustered; ++c)
+  {
+    const int from = c % count;
+    for (int k = 0; k < 3; ++k)
+    {
+      const double offset = points[3 * from + k] * 0.5 - points[k] * 0.5;
+      points.push_back(points[k] + 2.0 * (offset * shrink));
+    }
+  }
+  const int total = count + clustered;
   double lower[3] = { Inf, Inf, Inf }, upper[3] = { -Inf, -Inf, -Inf };
-  for (int i = 0; i < count; ++i)
+  for (int i = 0; i < total; ++i)
   {
     for (int k = 0; k < 3; ++k)
     {
@@ -496,9 +511,9 @@ void CheckGrid(Bytes& in)
   }
   const double cell = (spread == 1 ? unit : 1.0) * 0.05 * (1 + in.Byte());
   pcurv::PointGrid grid;
-  grid.Build(points.data(), count, pcurv::GridLattice::Make(lower, upper, count, cell));
-  Require(grid.GetNumberOfPoints() == count, "grid holds every point");
-  const int query = in.Byte() % count;
+  grid.Build(points.data(), total, pcurv::GridLattice::Make(lower, upper, total, cell));
+  Require(grid.GetNumberOfPoints() == total, "grid holds every point");
+  const int query = (in.Byte() * 31) % total;
   const double* x = &points[3 * query];
   const double radius =
     spread == 2 ? std::fabs(in.Finite(LargestGridCoordinate)) : 0.1 * unit * in.Byte();
@@ -506,7 +521,7 @@ void CheckGrid(Bytes& in)
   // Brute force: ids within the radius, and every squared distance.
   std::vector<std::int64_t> expected;
   std::vector<double> squared;
-  for (int i = 0; i < count; ++i)
+  for (int i = 0; i < total; ++i)
   {
     const double dx = points[3 * i] - x[0], dy = points[3 * i + 1] - x[1],
                  dz = points[3 * i + 2] - x[2];
@@ -530,6 +545,17 @@ void CheckGrid(Bytes& in)
     });
   std::sort(found.begin(), found.end());
   Require(found == expected, "grid finds what a scan finds");
+  std::vector<std::int64_t> fine;
+  grid.ForEachWithinRadiusFine(x,
+    radius,
+    [&](const double* q, std::int64_t id)
+    {
+      Require(q[0] == points[3 * id] && q[1] == points[3 * id + 1] && q[2] == points[3 * id + 2],
+        "fine query visits a point with its id");
+      fine.push_back(id);
+    });
+  std::sort(fine.begin(), fine.end());
+  Require(fine == expected, "fine query finds what a scan finds");
   std::vector<double> gathered;
   grid.GatherWithinRadius(x, radius, gathered);
   Require(gathered == visited, "gather = for-each, in the same order");
@@ -538,7 +564,7 @@ void CheckGrid(Bytes& in)
   std::vector<double> scratch;
   const double kth = grid.SquaredDistanceToKth(x, k, scratch);
   std::sort(squared.begin(), squared.end());
-  Require(SameBits(kth, squared[std::min(k, count) - 1]), "k-th distance = a scan's");
+  Require(SameBits(kth, squared[std::min(k, total) - 1]), "k-th distance = a scan's");
 }
 
 void CheckAdjustment(Bytes& in)
