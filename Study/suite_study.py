@@ -77,7 +77,10 @@ def configure(curvatures, setting):
     if "fit" in parts:
         curvatures.SetFitMode(FIT_MODES[parts["fit"]])
     if "k" in parts:
+        # A fixed neighbourhood: the radius holding about k neighbours (the
+        # default mode, automatic, would ignore k).
         curvatures.SetNumberOfNeighbors(int(parts["k"]))
+        curvatures.SetNeighborhoodMode(0)
     if "p" in parts:
         curvatures.SetPlaneDistanceRatio(float(parts["p"]))
     if parts.get("mode") == "auto":
