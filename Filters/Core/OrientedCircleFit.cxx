@@ -10,8 +10,14 @@ namespace pcurv
 {
 namespace
 {
-using Vector5 = Eigen::Matrix<double, 5, 1>;
-using Matrix5 = Eigen::Matrix<double, 5, 5>;
+template<int N>
+using Vector = Eigen::Matrix<double, N, 1>;
+template<int N>
+using Matrix = Eigen::Matrix<double, N, N>;
+using Vector5 = Vector<5>;
+using Matrix5 = Matrix<5>;
+using Vector6 = Vector<6>;
+using Matrix6 = Matrix<6>;
 
 /// A variance below this (in units of the scale) is taken as this: exact
 /// data would otherwise get an infinite weight.
@@ -20,31 +26,33 @@ constexpr double Pi = 3.141592653589793;
 
 /// Adds weight * row row^T to an upper triangle, weight * target * row to
 /// a right-hand side.
-void AddRow(const double row[5],
+template<int N>
+void AddRow(const double* row,
   double target,
   double weight,
-  std::array<double, 15>& matrix,
-  std::array<double, 5>& right)
+  std::array<double, N*(N + 1) / 2>& matrix,
+  std::array<double, N>& right)
 {
   int k = 0;
-  for (int a = 0; a < 5; ++a)
+  for (int a = 0; a < N; ++a)
   {
     const double wa = weight * row[a];
     right[a] += wa * target;
-    for (int b = a; b < 5; ++b)
+    for (int b = a; b < N; ++b)
     {
       matrix[k++] += wa * row[b];
     }
   }
 }
 
-Matrix5 Full(const std::array<double, 15>& upper)
+template<int N>
+Matrix<N> Full(const std::array<double, N*(N + 1) / 2>& upper)
 {
-  Matrix5 m;
+  Matrix<N> m;
   int k = 0;
-  for (int a = 0; a < 5; ++a)
+  for (int a = 0; a < N; ++a)
   {
-    for (int b = a; b < 5; ++b)
+    for (int b = a; b < N; ++b)
     {
       m(a, b) = m(b, a) = upper[k++];
     }
@@ -52,41 +60,45 @@ Matrix5 Full(const std::array<double, 15>& upper)
   return m;
 }
 
-Vector5 Full(const std::array<double, 5>& right)
+template<int N>
+Vector<N> Full(const std::array<double, N>& right)
 {
-  return Vector5(right[0], right[1], right[2], right[3], right[4]);
+  return Eigen::Map<const Vector<N>>(right.data());
 }
 
-/// The unknowns (C, A, B, tilt u, tilt v) and the inverse of the normal
-/// matrix; invalid when it is singular to working precision.
+/// The unknowns (C, A, B, tilt u, tilt v[, height]) and the inverse of the
+/// normal matrix; invalid when it is singular to working precision.
+template<int N>
 struct Solution
 {
   bool Valid = false;
-  Vector5 X = Vector5::Zero();
-  Matrix5 Inverse = Matrix5::Zero();
+  Vector<N> X = Vector<N>::Zero();
+  Matrix<N> Inverse = Matrix<N>::Zero();
 };
 
-Solution Solve(const Matrix5& normal, const Vector5& right)
+template<int N>
+Solution<N> Solve(const Matrix<N>& normal, const Vector<N>& right)
 {
-  Solution solution;
+  Solution<N> solution;
   const double largest = normal.diagonal().maxCoeff();
-  Eigen::LDLT<Matrix5> ldlt(normal);
+  Eigen::LDLT<Matrix<N>> ldlt(normal);
   if (ldlt.info() != Eigen::Success || !(largest > 0.0) ||
     !(ldlt.vectorD().cwiseAbs().minCoeff() > 1e-12 * largest))
   {
     return solution;
   }
   solution.X = ldlt.solve(right);
-  solution.Inverse = ldlt.solve(Matrix5::Identity());
+  solution.Inverse = ldlt.solve(Matrix<N>::Identity());
   solution.Valid = solution.X.allFinite() && solution.Inverse.allFinite();
   return solution;
 }
 
 /// The mean squared residual of a least-squares solution from the sums:
 /// sum (row x - y)^2 = sum y^2 - x . b at the solution.
-double ResidualVariance(const Solution& s, const Vector5& right, double targets, int rows)
+template<int N>
+double ResidualVariance(const Solution<N>& s, const Vector<N>& right, double targets, int rows)
 {
-  return std::max(0.0, targets - s.X.dot(right)) / std::max(1, rows - 5);
+  return std::max(0.0, targets - s.X.dot(right)) / std::max(1, rows - N);
 }
 
 /// The largest circular gap between the occupied eighths of 2 phi is below
@@ -143,8 +155,10 @@ void OrientedCircleSums::Add(const TangentFrame& frame, const double d[3], const
     const int position = static_cast<int>(std::floor((std::atan2(sin2, cos2) + Pi) / (Pi / 4.0)));
     this->HalfTurnPositions |= 1u << std::min(std::max(position, 0), 7);
   }
-  double row[5] = { squared, squared * cos2, squared * sin2, 2.0 * u, 2.0 * v };
-  AddRow(row, 2.0 * h, 1.0, this->PositionMatrix, this->PositionRight);
+  // The height column: the query point itself is noisy, and its height
+  // above the surface would otherwise bias every circle through it.
+  double row[6] = { squared, squared * cos2, squared * sin2, 2.0 * u, 2.0 * v, 1.0 };
+  AddRow<6>(row, 2.0 * h, 1.0, this->PositionMatrix, this->PositionRight);
   this->PositionTargets += 4.0 * h * h;
   ++this->Neighbors;
   this->SquaredDistances += squared;
@@ -157,7 +171,7 @@ void OrientedCircleSums::Add(const TangentFrame& frame, const double d[3], const
       (side * normal[2] - n[2]) * d[2]);
     row[3] = u;
     row[4] = v;
-    AddRow(row, t, 1.0 / squared, this->NormalMatrix, this->NormalRight);
+    AddRow<5>(row, t, 1.0 / squared, this->NormalMatrix, this->NormalRight);
     this->NormalTargets += t * t / squared;
     ++this->NeighborsWithNormal;
     this->Opposing += opposing;
@@ -206,7 +220,7 @@ OrientedCircleResult FitOrientedCircles(const OrientedCircleSums& sums,
   result.StandardError = std::numeric_limits<double>::quiet_NaN();
   out.NeighborCount = sums.Neighbors;
   out.ValidDirections = PopCount(sums.Sectors);
-  if (sums.Neighbors < std::max(minimumNeighbors, 6))
+  if (sums.Neighbors < std::max(minimumNeighbors, 7))
   {
     out.Reason = UnestimatedReason::TooFewNeighbors;
     return result;
@@ -221,9 +235,9 @@ OrientedCircleResult FitOrientedCircles(const OrientedCircleSums& sums,
     out.Reason = UnestimatedReason::TooFewDirections;
     return result;
   }
-  const Matrix5 positionMatrix = Full(sums.PositionMatrix);
-  const Vector5 positionRight = Full(sums.PositionRight);
-  const Solution positions = Solve(positionMatrix, positionRight);
+  const Matrix6 positionMatrix = Full<6>(sums.PositionMatrix);
+  const Vector6 positionRight = Full<6>(sums.PositionRight);
+  const Solution<6> positions = Solve<6>(positionMatrix, positionRight);
   if (!positions.Valid)
   {
     return result;
@@ -231,24 +245,28 @@ OrientedCircleResult FitOrientedCircles(const OrientedCircleSums& sums,
   const double positionVariance =
     std::max(ResidualVariance(positions, positionRight, sums.PositionTargets, sums.Neighbors),
       VarianceFloor);
-  Solution combined = positions;
+  Solution<6> combined = positions;
   if (sums.NeighborsWithNormal >= 6)
   {
-    const Matrix5 normalMatrix = Full(sums.NormalMatrix);
-    const Vector5 normalRight = Full(sums.NormalRight);
-    const Solution normals = Solve(normalMatrix, normalRight);
+    const Matrix5 normalMatrix = Full<5>(sums.NormalMatrix);
+    const Vector5 normalRight = Full<5>(sums.NormalRight);
+    const Solution<5> normals = Solve<5>(normalMatrix, normalRight);
     if (normals.Valid)
     {
       const double normalVariance = std::max(
         ResidualVariance(normals, normalRight, sums.NormalTargets, sums.NeighborsWithNormal),
         VarianceFloor);
-      const Solution both = Solve(positionMatrix / positionVariance + normalMatrix / normalVariance,
-        positionRight / positionVariance + normalRight / normalVariance);
+      // The normals do not see the height: their rows are zero there.
+      Matrix6 matrix = positionMatrix / positionVariance;
+      Vector6 right = positionRight / positionVariance;
+      matrix.topLeftCorner<5, 5>() += normalMatrix / normalVariance;
+      right.head<5>() += normalRight / normalVariance;
+      const Solution<6> both = Solve<6>(matrix, right);
       combined = both.Valid ? both : combined;
     }
   }
 
-  const Matrix5 covariance = positions.Inverse * positionVariance;
+  const Matrix6 covariance = positions.Inverse * positionVariance;
   const double c = combined.X[1], s = combined.X[2];
   const double amplitude = std::hypot(c, s);
   const double amplitudeVariance = amplitude > 0.0

@@ -15,7 +15,9 @@
  * - normal: for an oriented circle (or sphere) -(n_q - n) . d = kappa D.
  * A tilt delta of the query normal adds delta . d to -(n_q - n) . d and
  * 2 delta . d to 2 h: two tangential unknowns absorb it, so a noisy query
- * normal (PCA normals) does not bias the curvatures. The two kinds of rows
+ * normal (PCA normals) does not bias the curvatures. A query point a height
+ * e off the surface (every point of a noisy scan is) adds -2 e to every
+ * 2 h: the positions' rows have that height as a sixth unknown. The two kinds of rows
  * are weighted by the inverse of their own residual variance, each kind
  * fitted alone first: positions dominate where the normals are poor,
  * normals where the positions are noisy (normals' errors grow like |d|,
@@ -40,10 +42,14 @@ namespace pcurv
 /// the query point and in units of a fixed scale.
 struct OrientedCircleSums
 {
-  /// Upper triangles (15) and right-hand sides (5) of the positions' and the
-  /// normals' normal equations, and the sums of their squared targets.
-  std::array<double, 15> PositionMatrix{}, NormalMatrix{};
-  std::array<double, 5> PositionRight{}, NormalRight{};
+  /// Upper triangles and right-hand sides of the positions' normal
+  /// equations (6 unknowns: C, A, B, the two tilts and the query point's
+  /// height) and the normals' (5: the height does not enter them), and the
+  /// sums of their squared targets.
+  std::array<double, 21> PositionMatrix{};
+  std::array<double, 6> PositionRight{};
+  std::array<double, 15> NormalMatrix{};
+  std::array<double, 5> NormalRight{};
   double PositionTargets = 0.0, NormalTargets = 0.0;
   int Neighbors = 0;
   int NeighborsWithNormal = 0;
@@ -84,7 +90,7 @@ struct OrientedCircleResult
   double StandardError = 0.0;
 };
 
-/// Fits the sums; invalid with fewer than `minimumNeighbors` (at least 6)
+/// Fits the sums; invalid with fewer than `minimumNeighbors` (at least 7)
 /// neighbours, angles within a closed half-turn of 2 phi, or a
 /// neighbourhood that reaches across the surface (ReachesAcross).
 OrientedCircleResult FitOrientedCircles(const OrientedCircleSums& sums,
