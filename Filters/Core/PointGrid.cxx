@@ -259,11 +259,7 @@ std::int64_t PointGrid::QueryCells(const double x[3],
   std::array<std::int64_t, 3>& low,
   std::array<std::int64_t, 3>& high) const
 {
-  for (int k = 0; k < 3; ++k)
-  {
-    low[k] = this->CellIndex(x[k] - radius, k);
-    high[k] = this->CellIndex(x[k] + radius, k);
-  }
+  this->CellRange(x, radius, low, high);
   std::int64_t candidates = 0;
   for (std::int64_t iz = low[2]; iz <= high[2]; ++iz)
   {

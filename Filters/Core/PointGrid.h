@@ -100,11 +100,7 @@ public:
       return;
     }
     std::array<std::int64_t, 3> low, high;
-    for (int k = 0; k < 3; ++k)
-    {
-      low[k] = this->CellIndex(x[k] - radius, k);
-      high[k] = this->CellIndex(x[k] + radius, k);
-    }
+    this->CellRange(x, radius, low, high);
     const double radiusSquared = radius * radius;
     for (std::int64_t iz = low[2]; iz <= high[2]; ++iz)
     {
@@ -164,6 +160,19 @@ private:
     double radius,
     std::array<std::int64_t, 3>& low,
     std::array<std::int64_t, 3>& high) const;
+
+  /// The local cells (low..high per axis) a query of `radius` around x visits.
+  void CellRange(const double x[3],
+    double radius,
+    std::array<std::int64_t, 3>& low,
+    std::array<std::int64_t, 3>& high) const
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      low[k] = this->CellIndex(x[k] - radius, k);
+      high[k] = this->CellIndex(x[k] + radius, k);
+    }
+  }
 
   /// Local cell index along an axis, clamped to the stored cells.
   std::int64_t CellIndex(double coordinate, int axis) const
@@ -232,11 +241,7 @@ void PointGrid::ForEachWithinRadiusFine(const double x[3], double radius, Visit&
     return;
   }
   std::array<std::int64_t, 3> low, high;
-  for (int k = 0; k < 3; ++k)
-  {
-    low[k] = this->CellIndex(x[k] - radius, k);
-    high[k] = this->CellIndex(x[k] + radius, k);
-  }
+  this->CellRange(x, radius, low, high);
   const double radiusSquared = radius * radius;
   auto test =
     [&](const double* xs, const double* ys, const double* zs, std::int64_t j, std::int64_t id)
