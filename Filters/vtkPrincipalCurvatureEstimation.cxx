@@ -78,7 +78,7 @@ struct CurvatureArrays
   std::vector<std::pair<vtkSmartPointer<vtkDataArray>, bool>> InOrder;
   pcurv::CurvatureBuffers Buffers;
 
-  CurvatureArrays(vtkIdType n, bool adjusted, bool standardError)
+  CurvatureArrays(vtkIdType n, bool adjusted, bool standardError, bool display)
   {
     pcurv::CurvatureBuffers& b = this->Buffers;
     b.Minimum = this->Add<vtkDoubleArray>("Minimum_Curvature", 1, n);
@@ -99,9 +99,9 @@ struct CurvatureArrays
       adjusted ? this->Add<vtkIntArray>("Target_Neighbor_Count", 1, n, true) : nullptr;
     b.ShapeIndex = this->Add<vtkDoubleArray>("Shape_Index", 1, n);
     b.Curvedness = this->Add<vtkDoubleArray>("Curvedness", 1, n);
-    // For display; derived from Mean_Curvature, so left out with the
-    // diagnostics when the output is to be small.
-    b.ClippedMean = this->Add<vtkDoubleArray>("Mean_Curvature_Clipped", 1, n, true);
+    // For display; derived from Mean_Curvature, so left out (and not
+    // computed) with the diagnostics when the output is to be small.
+    b.ClippedMean = display ? this->Add<vtkDoubleArray>("Mean_Curvature_Clipped", 1, n) : nullptr;
     // With the fits that give one: the standard error of the curvatures.
     b.StandardError =
       standardError ? this->Add<vtkDoubleArray>("Curvature_Standard_Error", 1, n, true) : nullptr;
@@ -299,8 +299,10 @@ int vtkPrincipalCurvatureEstimation::RequestData(vtkInformation*,
     normals = nullptr;
   }
 
-  CurvatureArrays arrays(
-    numberOfPoints, this->DynamicAdjustment, this->FitMode == ORIENTED_CIRCLES);
+  CurvatureArrays arrays(numberOfPoints,
+    this->DynamicAdjustment,
+    this->FitMode == ORIENTED_CIRCLES,
+    this->DiagnosticArrays);
   vtkSmartPointer<vtkDoubleArray> estimatedNormals;
   if (this->UsedEstimatedNormals)
   {

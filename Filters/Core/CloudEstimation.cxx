@@ -422,10 +422,6 @@ public:
   /// The mean curvature clipped to [-clip, clip] (NaN stays NaN).
   void WriteClippedMean(std::int64_t numberOfPoints, double clip) const
   {
-    if (!this->Out.ClippedMean)
-    {
-      return;
-    }
     for (std::int64_t i = 0; i < numberOfPoints; ++i)
     {
       const double h = this->Out.Mean[i];
@@ -791,12 +787,16 @@ namespace
 /// Replaces the normals of the own points of `cloud` by estimated ones
 /// (writing them to out.Normals too). Distributed, every process estimates
 /// the whole cloud, gathered, and keeps its own part: the grid's order, not
-/// the split, decides the result.
+/// the split, decides the result. Reported to `monitor` as the part [0,
+/// share) of the whole: the plane fits (most of the time) counted, the
+/// orientation at the end; Aborted when any process was asked to stop
+/// (every process then stops: what follows is collective).
 NormalSummary ReplaceNormals(CloudPoints& cloud,
   const NormalSettings& settings,
   const Collectives& processes,
   WorkRunner& runner,
-  StageProgress* progress,
+  ProgressMonitor* monitor,
+  double share,
   double* out)
 {
   CloudPoints whole;
@@ -813,9 +813,12 @@ NormalSummary ReplaceNormals(CloudPoints& cloud,
       first += lengths[p] / 3;
     }
   }
+  const CloudPoints& estimated = processes.IsDistributed() ? whole : cloud;
+  StageProgress planes(monitor, 0.0, 0.8 * share, estimated.NumberOfOwnPoints);
   std::vector<double> normals;
-  const NormalSummary summary =
-    EstimateNormals(processes.IsDistributed() ? whole : cloud, settings, runner, normals, progress);
+  NormalSummary summary = EstimateNormals(estimated, settings, runner, normals, &planes);
+  summary.Aborted =
+    !processes.Min(planes.Stopped() ? 0 : 1) || !StageProgress(monitor, 0.0, share, 1).Reach(1.0);
   cloud.DropHalo();
   std::copy_n(normals.begin() + 3 * first, 3 * cloud.NumberOfOwnPoints, cloud.Normals.begin());
   if (out)
@@ -846,10 +849,7 @@ NormalSummary EstimateCloudNormals(CloudPoints cloud,
   {
     c *= scale;
   }
-  StageProgress planes(monitor, 0.0, 0.8, cloud.NumberOfOwnPoints);
-  NormalSummary summary = ReplaceNormals(cloud, scaled, processes, runner, &planes, out);
-  summary.Aborted =
-    !processes.Min(planes.Stopped() ? 0 : 1) || !StageProgress(monitor, 0.0, 1.0, 1).Reach(1.0);
+  const NormalSummary summary = ReplaceNormals(cloud, scaled, processes, runner, monitor, 1.0, out);
   for (const RepeatedPoint& repeat : repeats)
   {
     if (out)
@@ -940,10 +940,9 @@ EstimationSummary EstimateCloud(CloudPoints cloud,
     {
       c *= unit.Scale;
     }
-    StageProgress planes(monitor, 0.0, 0.8 * normalsShare, cloud.NumberOfOwnPoints);
-    summary.Normals = ReplaceNormals(cloud, normals, processes, runner, &planes, out.Normals);
-    if (!processes.Min(planes.Stopped() ? 0 : 1) ||
-      !StageProgress(monitor, 0.0, normalsShare, 1).Reach(1.0))
+    summary.Normals =
+      ReplaceNormals(cloud, normals, processes, runner, monitor, normalsShare, out.Normals);
+    if (summary.Normals.Aborted)
     {
       summary.Aborted = true;
       return summary;
@@ -1012,8 +1011,18 @@ EstimationSummary EstimateCloud(CloudPoints cloud,
   }
   writer.ToInputUnit(numberOfPoints, unit);
   writer.WriteCurvedness(numberOfPoints);
-  summary.MeanCurvatureClip = MagnitudeQuantile(out.Mean, numberOfPoints, 0.95, processes);
-  writer.WriteClippedMean(numberOfPoints, summary.MeanCurvatureClip);
+  // Computed when asked for by any process (the quantile is collective; an
+  // empty piece has no buffer).
+  const bool clipped = processes.IsDistributed() ? processes.Max(out.ClippedMean ? 1.0 : 0.0) > 0.0
+                                                 : out.ClippedMean != nullptr;
+  if (clipped)
+  {
+    summary.MeanCurvatureClip = MagnitudeQuantile(out.Mean, numberOfPoints, 0.95, processes);
+  }
+  if (out.ClippedMean)
+  {
+    writer.WriteClippedMean(numberOfPoints, summary.MeanCurvatureClip);
+  }
   return summary;
 }
 

@@ -143,7 +143,8 @@ struct EstimationSummary
   std::int64_t NumberOfUnestimatedPoints = 0;
   /// The same points by reason (they add up to NumberOfUnestimatedPoints).
   UnestimatedCounts UnestimatedByReason{};
-  /// The c of CurvatureBuffers::ClippedMean (0 when nothing is estimated).
+  /// The c of CurvatureBuffers::ClippedMean (0 when nothing is estimated,
+  /// or without that buffer).
   double MeanCurvatureClip = 0.0;
   /// Points that repeat another exactly (coordinates and normal): estimated
   /// once, every copy given the same results, counted once as a neighbour.
