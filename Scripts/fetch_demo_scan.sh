@@ -8,6 +8,7 @@ archive=/usr/share/doc/libcgal-dev/data.tar.gz
 if [ ! -f "$archive" ]; then
   sudo=""
   [ "$(id -u)" -eq 0 ] || sudo="sudo"
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get update -q
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q --no-install-recommends libcgal-demo
 fi
 tar xzf "$archive" -C Data --strip-components=2 data/meshes/bunny00.off data/points_3/kitten.xyz

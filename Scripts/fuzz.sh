@@ -18,6 +18,8 @@ if ! command -v clang++ > /dev/null ||
   ! ls /usr/lib/llvm-*/lib/clang/*/lib/linux/libclang_rt.fuzzer-x86_64.a > /dev/null 2>&1; then
   sudo=""
   [ "$(id -u)" -eq 0 ] || sudo="sudo"
+  # The package lists may be missing or stale on a fresh machine.
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get update -q
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q --no-install-recommends clang libclang-rt-dev
 fi
 start=$(date +%s)
