@@ -105,6 +105,8 @@ struct CurvatureArrays
     // With the fits that give one: the standard error of the curvatures.
     b.StandardError =
       standardError ? this->Add<vtkDoubleArray>("Curvature_Standard_Error", 1, n, true) : nullptr;
+    // With the same fits: the normal their directions are tangent to.
+    b.FittedNormal = standardError ? this->Add<vtkDoubleArray>("Fitted_Normal", 3, n) : nullptr;
   }
 
   template<typename ArrayT>

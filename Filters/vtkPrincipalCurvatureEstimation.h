@@ -25,7 +25,12 @@
  *   positive where the surface bends away from the normal, so a sphere with
  *   outward normals gives +1/R, as vtkCurvatures reports.
  * - Minimum_Curvature_Direction, Maximum_Curvature_Direction: unit 3-vectors
- *   orthogonal to the normal and to each other (defined up to sign).
+ *   orthogonal to each other (defined up to sign) and to the normal: the
+ *   given one with the paper's fits, Fitted_Normal with OrientedCircles.
+ * - Fitted_Normal (3-vector), Curvature_Standard_Error, with
+ *   OrientedCircles only: the fitted surface's unit normal (the given one
+ *   turned by the fit's tilt where it is the normal's error), and the
+ *   curvatures' standard error (1/length).
  * - Curvature_Valid (unsigned char): 1 where estimated, 0 where not (then the
  *   curvatures are NaN and the directions zero vectors).
  * - Neighbor_Count (int), Valid_Direction_Count (int, 0..16),

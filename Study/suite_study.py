@@ -145,6 +145,7 @@ def main(argv):
     parser.add_argument("--sizes", default="20000,200000")
     parser.add_argument("--noise", default="0,0.1,0.5", help="noise levels to run (fractions of h)")
     parser.add_argument("--shapes", default=",".join(LARGEST_CURVATURE), help="shapes to run")
+    parser.add_argument("--normals", default="exact,PCA", help="normals to run: exact, PCA or both")
     parser.add_argument("--csv", help="write every measurement to this file")
     arguments = parser.parse_args(argv)
     settings = arguments.setting or ["default", "own-normals"]
@@ -158,7 +159,7 @@ def main(argv):
                 or cloud["noise"] not in [float(v) for v in arguments.noise.split(",")]
                 or cloud["shape"] not in arguments.shapes.split(",")):
             continue
-        for normals in ("exact", "PCA"):
+        for normals in arguments.normals.split(","):
             data, evaluation = load(arguments.suite, cloud, normals)
             for setting in settings:
                 if estimates_normals(setting) and normals == "PCA":

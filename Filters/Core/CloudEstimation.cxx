@@ -300,6 +300,10 @@ public:
     this->Out.Gauss[i] = kMin * kMax;
     std::copy_n(r.MinimumDirection.data(), 3, this->Out.MinimumDirection + 3 * i);
     std::copy_n(r.MaximumDirection.data(), 3, this->Out.MaximumDirection + 3 * i);
+    if (this->Out.FittedNormal)
+    {
+      std::copy_n(r.FittedNormal.data(), 3, this->Out.FittedNormal + 3 * i);
+    }
     this->Out.SineFitRms[i] = r.Valid ? r.SineFitRms : NaN;
     this->Out.Surroundings[i] = s;
     this->Out.PlaneDistance[i] = p;
@@ -387,8 +391,10 @@ public:
         values[to] = values[from];
       }
     }
-    for (double* vectors :
-      { this->Out.MinimumDirection, this->Out.MaximumDirection, this->Out.Normals })
+    for (double* vectors : { this->Out.MinimumDirection,
+           this->Out.MaximumDirection,
+           this->Out.FittedNormal,
+           this->Out.Normals })
     {
       if (vectors)
       {

@@ -120,6 +120,10 @@ struct CurvatureBuffers
   /// With FitMode::OrientedCircles only (may be null): the standard error
   /// of the curvatures, 1/length.
   double* StandardError = nullptr;
+  /// With FitMode::OrientedCircles only (may be null): the fitted
+  /// surface's unit normal, 3 per point, to which the directions are
+  /// tangent (zero where not estimated).
+  double* FittedNormal = nullptr;
   /// With EstimateNormals only (may be null): the normals estimated, 3 per
   /// input point (zero where undetermined or the coordinates not finite).
   double* Normals = nullptr;

@@ -19,6 +19,11 @@ using Matrix5 = Matrix<5>;
 using Vector6 = Vector<6>;
 using Matrix6 = Matrix<6>;
 
+/// How many times the tilt that the query point's own displacement along
+/// the surface explains the fitted tilt's square must exceed before the
+/// directions are turned by it (FittedFrame).
+constexpr double DisplacementTiltAllowance = 8.0;
+
 /// A variance below this (in units of the scale) is taken as this: exact
 /// data would otherwise get an infinite weight.
 constexpr double VarianceFloor = 1e-24;
@@ -120,6 +125,55 @@ bool AnglesDetermineSine(std::uint32_t positions)
     }
   }
   return occupied >= 3 && largestGap < 4;
+}
+
+/// The frame of the fitted tangent plane, for the principal directions.
+/// The fit's tilt (delta_u, delta_v) is the surface's slope in the query
+/// normal's frame, so n - delta_u v0 - delta_w w0 is the fitted normal. An
+/// estimated query normal is off by its error, and directions in its plane
+/// would inherit it, however good the curvatures; an exact normal is off by
+/// nothing, and its fitted tilt is the query point's displacement along the
+/// surface (a point displaced by e sees the surface tilted by W e, W the
+/// shape operator: |W e|^2 is sigma^2 (k1^2 + k2^2) on average) and the fit's
+/// own bias. So the tilt is applied by the share of it that the
+/// displacement does not explain, none when it explains the tilt's square
+/// DisplacementTiltAllowance times over. In units of the scale:
+/// `noiseVariance` is the positions' (a quarter of the residual variance
+/// of their rows, which are 2 h), k1, k2 the principal curvatures.
+TangentFrame FittedFrame(const TangentFrame& frame,
+  double tiltU,
+  double tiltV,
+  double k1,
+  double k2,
+  double noiseVariance)
+{
+  const double tilt = tiltU * tiltU + tiltV * tiltV;
+  const double displacement = noiseVariance * (k1 * k1 + k2 * k2);
+  const double share =
+    tilt > 0.0 ? std::max(0.0, 1.0 - DisplacementTiltAllowance * displacement / tilt) : 0.0;
+  if (!(share > 0.0))
+  {
+    return frame;
+  }
+  using Vector3d = Eigen::Vector3d;
+  const Vector3d normal(frame.Normal.data()), v0(frame.V0.data()), w0(frame.W0.data());
+  const Vector3d fitted = (normal - share * (tiltU * v0 + tiltV * w0)).normalized();
+  // v0 turned into the fitted plane: the angles phi of the sine stay those
+  // the neighbours were fitted at, to first order in the tilt.
+  const Vector3d v = (v0 - v0.dot(fitted) * fitted).normalized();
+  const Vector3d w = fitted.cross(v);
+  if (!fitted.allFinite() || !v.allFinite())
+  {
+    return frame;
+  }
+  TangentFrame turned;
+  for (int i = 0; i < 3; ++i)
+  {
+    turned.Normal[i] = fitted[i];
+    turned.V0[i] = v[i];
+    turned.W0[i] = w[i];
+  }
+  return turned;
 }
 
 int PopCount(std::uint32_t bits)
@@ -285,7 +339,14 @@ OrientedCircleResult FitOrientedCircles(const OrientedCircleSums& sums,
   const double rmsD = std::sqrt(positionMatrix(0, 0) / sums.Neighbors);
   sine.RmsResidual = rmsD > 0.0 ? std::sqrt(positionVariance) / rmsD * inverseScale : 0.0;
   sine.ValidDirections = out.ValidDirections;
-  PrincipalCurvaturesFromSine(sine, frame, out);
+  const TangentFrame fitted = FittedFrame(frame,
+    combined.X[3],
+    combined.X[4],
+    combined.X[0] + amplitude,
+    combined.X[0] - amplitude,
+    positionVariance / 4.0);
+  PrincipalCurvaturesFromSine(sine, fitted, out);
+  out.FittedNormal = out.Valid ? fitted.Normal : Vector3{ { 0.0, 0.0, 0.0 } };
   out.NeighborCount = sums.Neighbors;
   if (!out.Valid)
   {

@@ -161,6 +161,10 @@ struct PointCurvature
   double MaximumCurvature = 0.0;
   Vector3 MinimumDirection{ { 0.0, 0.0, 0.0 } };
   Vector3 MaximumDirection{ { 0.0, 0.0, 0.0 } };
+  /// FitMode::OrientedCircles: the unit normal of the fitted surface, to
+  /// which the directions are tangent (zero with the paper's fits, whose
+  /// directions are tangent to the given normal).
+  Vector3 FittedNormal{ { 0.0, 0.0, 0.0 } };
   int NeighborCount = 0;
   int ValidDirections = 0;
   double SineFitRms = 0.0;

@@ -9,7 +9,9 @@
  * Every output is also checked against the output contract: a flagged point
  * has Curvature_Valid = 0, NaN curvatures and zero directions; an estimated
  * point has finite curvatures, max >= min, mean and Gauss consistent, and
- * unit principal directions orthogonal to each other and to its normal.
+ * unit principal directions orthogonal to each other and to its normal
+ * (with OrientedCircles to Fitted_Normal instead: a unit vector on the
+ * normal's side, zero at a flagged point).
  */
 #ifndef BadInputHelpers_h
 #define BadInputHelpers_h
@@ -221,6 +223,9 @@ inline void CheckContract(Checks& checks,
   }
   auto dot = [](const double* a, const double* b)
   { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
+  // OrientedCircles: the directions are tangent to the fitted surface's
+  // normal, a unit vector on the given normal's side.
+  vtkDataArray* fitted = o.Array("Fitted_Normal");
   vtkIdType broken = 0, flagged = 0;
   for (vtkIdType i = 0; i < o.Points(); ++i)
   {
@@ -235,6 +240,12 @@ inline void CheckContract(Checks& checks,
       ++flagged;
       ok = std::isnan(kMin) && std::isnan(kMax) && std::isnan(mean) && std::isnan(gauss) &&
         std::isnan(o.Value("Sine_Fit_RMS", i)) && dot(a, a) == 0.0 && dot(b, b) == 0.0;
+      if (ok && fitted)
+      {
+        double f[3];
+        fitted->GetTuple(i, f);
+        ok = dot(f, f) == 0.0;
+      }
     }
     else
     {
@@ -247,12 +258,20 @@ inline void CheckContract(Checks& checks,
         std::fabs(dot(a, b)) < 1e-9 && o.Value("Valid_Direction_Count", i) >= 3 &&
         o.Value("Valid_Direction_Count", i) <= 16 && o.Value("Neighbor_Count", i) >= 3 &&
         std::isfinite(o.Value("Sine_Fit_RMS", i));
+      double f[3] = { 0.0, 0.0, 0.0 };
+      if (ok && fitted)
+      {
+        fitted->GetTuple(i, f);
+        ok = std::fabs(dot(f, f) - 1) < 1e-9 && std::fabs(dot(a, f)) < 1e-9 &&
+          std::fabs(dot(b, f)) < 1e-9;
+      }
       if (ok && normals)
       {
         double n[3];
         normals->GetTuple(i, n);
         const double length = std::sqrt(dot(n, n));
-        ok = std::fabs(dot(a, n)) < 1e-9 * length && std::fabs(dot(b, n)) < 1e-9 * length;
+        ok = fitted ? dot(f, n) > 0.0
+                    : std::fabs(dot(a, n)) < 1e-9 * length && std::fabs(dot(b, n)) < 1e-9 * length;
       }
     }
     if (!ok && broken++ < 3)

@@ -521,6 +521,79 @@ void TestAutomaticScale(Checks& checks)
     MeanError(noisy, withNoise) < MeanError(noisy, paper));
 }
 
+/// Median angle (degrees) between the estimated and the exact maximum
+/// directions, as lines, over the estimated points.
+double MedianDirectionAngle(const std::vector<testing::SurfaceSample>& samples, const Results& r)
+{
+  std::vector<double> angles;
+  for (std::size_t i = 0; i < samples.size(); ++i)
+  {
+    if (r.Valid[i])
+    {
+      const double* d = &r.MaximumDirection[3 * i];
+      const double c =
+        std::fabs(testing::Dot({ { d[0], d[1], d[2] } }, samples[i].MaximumDirection));
+      angles.push_back(std::acos(std::min(1.0, c)) * 180.0 / 3.141592653589793);
+    }
+  }
+  if (angles.empty())
+  {
+    return HUGE_VAL;
+  }
+  std::nth_element(angles.begin(), angles.begin() + angles.size() / 2, angles.end());
+  return angles[angles.size() / 2];
+}
+
+/// OrientedCircles gives the principal directions in the fitted tangent
+/// plane: normals off by 2 degrees (as estimated normals are) do not turn the
+/// directions with them, and exact normals are left alone where the
+/// positions are noisy (the fitted tilt is then the query point's own
+/// displacement, not the normal's error).
+void TestFittedDirections(Checks& checks)
+{
+  SerialRunner serial;
+  const auto torus = testing::Sample(testing::Torus(3.0, 1.0), 30000, 51);
+  auto tilted = torus;
+  testing::Random random(52);
+  const double tilt = 2.0 * 3.141592653589793 / 180.0;
+  for (testing::SurfaceSample& s : tilted)
+  {
+    // A tangent axis in a random direction, and the normal turned about it.
+    const testing::Vec any{ { random.Normal(), random.Normal(), random.Normal() } };
+    const testing::Vec axis = testing::Unit(testing::Cross(s.Normal, any));
+    s.Normal = testing::Unit(
+      testing::Add(testing::Scale(std::cos(tilt), s.Normal), testing::Scale(std::sin(tilt), axis)));
+  }
+  Results exact(torus.size(), false), off(torus.size(), false);
+  EstimateCloud(
+    MakeCloud(torus), EstimationSettings{}, Collectives{}, serial, nullptr, exact.Buffers());
+  EstimateCloud(
+    MakeCloud(tilted), EstimationSettings{}, Collectives{}, serial, nullptr, off.Buffers());
+  const double exactAngle = MedianDirectionAngle(torus, exact);
+  const double offAngle = MedianDirectionAngle(torus, off);
+  std::printf("fitted directions: median angle %.3f deg (exact normals), %.3f deg (normals off by "
+              "2 deg)\n",
+    exactAngle,
+    offAngle);
+  checks.True("fitted directions: exact normals, median angle under 0.2 degrees", exactAngle < 0.2);
+  checks.True(
+    "fitted directions: normals off by 2 degrees, median angle under 0.3 degrees", offAngle < 0.3);
+  checks.True("fitted directions: curvatures as accurate with the tilted normals (within 1.5x)",
+    MeanError(torus, off) < 1.5 * MeanError(torus, exact) + 1e-4);
+
+  auto noisy = torus;
+  testing::AddPositionNoise(noisy, 0.01, 53);
+  Results noisyExact(noisy.size(), false);
+  EstimateCloud(
+    MakeCloud(noisy), EstimationSettings{}, Collectives{}, serial, nullptr, noisyExact.Buffers());
+  const double noisyAngle = MedianDirectionAngle(torus, noisyExact);
+  std::printf(
+    "fitted directions: noisy positions, exact normals: median angle %.3f deg\n", noisyAngle);
+  checks.True(
+    "fitted directions: noisy positions with exact normals, median angle under 0.3 degrees",
+    noisyAngle < 0.3);
+}
+
 /// Shape index and curvedness with the output's signs: a sphere with
 /// outward normals is a cap (+1), a cylinder a ridge (+1/2), and with the
 /// normals turned inwards a cup (-1) and a rut (-1/2).
@@ -829,6 +902,7 @@ int main()
   TestOrientedCircles(checks);
   TestNoisyScan(checks);
   TestAutomaticScale(checks);
+  TestFittedDirections(checks);
   TestShapeIndex(checks);
   return checks.Summary();
 }

@@ -206,6 +206,38 @@ void TestOutputContract(Checks& checks)
   const double meanCount = countSum / output->GetNumberOfPoints();
   std::printf("automatic radius: mean neighbour count %.1f (target 375)\n", meanCount);
   checks.Near("automatic radius gives about 375 neighbours", meanCount, 375.0, 40.0);
+  checks.True("paper fits: no Fitted_Normal (directions tangent to the given normal)",
+    pd->GetArray("Fitted_Normal") == nullptr);
+
+  // OrientedCircles: the directions are tangent to the fitted surface's
+  // normal, a unit vector close to the given one.
+  auto oriented = Run(cloud, vtkPrincipalCurvatureEstimation::ORIENTED_CIRCLES);
+  vtkPointData* od = oriented->GetPointData();
+  vtkDataArray* fitted = od->GetArray("Fitted_Normal");
+  checks.True(
+    "OrientedCircles: Fitted_Normal, 3 components", fitted && fitted->GetNumberOfComponents() == 3);
+  if (!fitted)
+  {
+    return;
+  }
+  int broken = 0;
+  double largestTurn = 0.0;
+  for (vtkIdType i = 0; i < oriented->GetNumberOfPoints(); ++i)
+  {
+    double a[3], b[3], f[3], n[3];
+    od->GetArray("Minimum_Curvature_Direction")->GetTuple(i, a);
+    od->GetArray("Maximum_Curvature_Direction")->GetTuple(i, b);
+    fitted->GetTuple(i, f);
+    od->GetArray("Normals")->GetTuple(i, n);
+    broken += std::fabs(f[0] * f[0] + f[1] * f[1] + f[2] * f[2] - 1.0) > 1e-12;
+    broken += std::fabs(a[0] * f[0] + a[1] * f[1] + a[2] * f[2]) > 1e-12;
+    broken += std::fabs(b[0] * f[0] + b[1] * f[1] + b[2] * f[2]) > 1e-12;
+    largestTurn =
+      std::max(largestTurn, std::acos(std::min(1.0, f[0] * n[0] + f[1] * n[1] + f[2] * n[2])));
+  }
+  checks.Equal("OrientedCircles: directions tangent to a unit Fitted_Normal", broken, 0);
+  checks.True("OrientedCircles: Fitted_Normal within 2 degrees of the exact normal",
+    largestTurn < 2.0 * 3.141592653589793 / 180.0);
 }
 
 /// The output-size settings: float arrays with the same values rounded,

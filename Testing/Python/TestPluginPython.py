@@ -140,10 +140,20 @@ def valid_mask(arrays, label):
 
 
 def check_directions(arrays, normals, valid, label):
-    """Principal directions: unit length, tangent, orthogonal to each other."""
+    """Principal directions: unit length, tangent, orthogonal to each other.
+    Tangent to the given normals with the paper's fits; with OrientedCircles
+    to Fitted_Normal, the fitted surface's normal, which is within a few
+    degrees of the given one and on its side."""
     minimum = arrays["Minimum_Curvature_Direction"][valid]
     maximum = arrays["Maximum_Curvature_Direction"][valid]
     normals = normals[valid] / numpy.linalg.norm(normals[valid], axis=1)[:, None]
+    if "Fitted_Normal" in arrays:
+        fitted = arrays["Fitted_Normal"][valid]
+        length_error = numpy.abs(numpy.linalg.norm(fitted, axis=1) - 1.0).max()
+        check(length_error < 1e-6, "%s: Fitted_Normal of unit length (max error %.2g)" % (label, length_error))
+        turned = numpy.degrees(numpy.arccos(numpy.clip((fitted * normals).sum(axis=1), -1.0, 1.0))).max()
+        check(turned < 5.0, "%s: Fitted_Normal within 5 degrees of the given normal (largest %.2f)" % (label, turned))
+        normals = fitted
     for name, d in (("Minimum_Curvature_Direction", minimum), ("Maximum_Curvature_Direction", maximum)):
         length_error = numpy.abs(numpy.linalg.norm(d, axis=1) - 1.0).max()
         check(length_error < 1e-6, "%s: %s of unit length (max error %.2g)" % (label, name, length_error))
