@@ -673,6 +673,7 @@ private:
     const double base =
       std::sqrt(this->Grid.SquaredDistanceToKth(x, rule.BaseCount + 1, scratch.Distances));
     const double unit = std::nextafter(std::min(base, rule.LargestRadius), HUGE_VAL);
+    const double inverseUnit = 1.0 / unit;
     const TangentFrame frame = MakeTangentFrame({ { n[0], n[1], n[2] } });
     OrientedCircleSums sums;
     OrientedCircleResult chosen;
@@ -693,7 +694,9 @@ private:
           // The inner radii's neighbours are in the sums already.
           if (offset[0] * offset[0] + offset[1] * offset[1] + offset[2] * offset[2] >= innerSquared)
           {
-            const double d[3] = { offset[0] / unit, offset[1] / unit, offset[2] / unit };
+            const double d[3] = {
+              offset[0] * inverseUnit, offset[1] * inverseUnit, offset[2] * inverseUnit
+            };
             sums.Add(frame, d, &this->Cloud.Normals[3 * id]);
           }
         });

@@ -27,7 +27,6 @@ constexpr double DisplacementTiltAllowance = 8.0;
 /// A variance below this (in units of the scale) is taken as this: exact
 /// data would otherwise get an infinite weight.
 constexpr double VarianceFloor = 1e-24;
-constexpr double Pi = 3.141592653589793;
 
 /// Adds weight * row row^T to an upper triangle, weight * target * row to
 /// a right-hand side.
@@ -71,8 +70,9 @@ Vector<N> Full(const std::array<double, N>& right)
   return Eigen::Map<const Vector<N>>(right.data());
 }
 
-/// The unknowns (C, A, B, tilt u, tilt v[, height]) and the inverse of the
-/// normal matrix; invalid when it is singular to working precision.
+/// The unknowns (C, A, B, tilt u, tilt v[, height]) and, where asked for
+/// (the covariance), the inverse of the normal matrix; invalid when it is
+/// singular to working precision.
 template<int N>
 struct Solution
 {
@@ -82,7 +82,7 @@ struct Solution
 };
 
 template<int N>
-Solution<N> Solve(const Matrix<N>& normal, const Vector<N>& right)
+Solution<N> Solve(const Matrix<N>& normal, const Vector<N>& right, bool withInverse)
 {
   Solution<N> solution;
   const double largest = normal.diagonal().maxCoeff();
@@ -93,7 +93,10 @@ Solution<N> Solve(const Matrix<N>& normal, const Vector<N>& right)
     return solution;
   }
   solution.X = ldlt.solve(right);
-  solution.Inverse = ldlt.solve(Matrix<N>::Identity());
+  if (withInverse)
+  {
+    solution.Inverse = ldlt.solve(Matrix<N>::Identity());
+  }
   solution.Valid = solution.X.allFinite() && solution.Inverse.allFinite();
   return solution;
 }
@@ -176,6 +179,28 @@ TangentFrame FittedFrame(const TangentFrame& frame,
   return turned;
 }
 
+/// floor((atan2(v, u) + pi) / (2 pi) * 16), by comparisons (a neighbour's
+/// sector is wanted for every neighbour, and atan2 was most of its cost):
+/// which sixteenth of the turn, counted from the negative u axis, the
+/// direction (u, v) is in (a direction on a boundary may go to either side).
+int SixteenthOfTurn(double u, double v)
+{
+  constexpr double Tan22_5 = 0.41421356237309503; // sqrt 2 - 1
+  const double a = std::fabs(u), b = std::fabs(v);
+  // The angle from the u axis within the quadrant, in sixteenths: 0..3.
+  const int within = b < Tan22_5 * a ? 0 : b < a ? 1 : a > Tan22_5 * b ? 2 : 3;
+  int sixteenth; // floor(atan2(v, u) / (pi / 8)), -8..7
+  if (u > 0.0)
+  {
+    sixteenth = v >= 0.0 ? within : -1 - within;
+  }
+  else
+  {
+    sixteenth = v > 0.0 ? 7 - within : -8 + within;
+  }
+  return sixteenth + 8;
+}
+
 int PopCount(std::uint32_t bits)
 {
   int count = 0;
@@ -202,12 +227,13 @@ void OrientedCircleSums::Add(const TangentFrame& frame, const double d[3], const
   double cos2 = 0.0, sin2 = 0.0;
   if (rho2 > 0.0) // on the normal line a neighbour has no angle
   {
-    cos2 = (u * u - v * v) / rho2;
-    sin2 = 2.0 * u * v / rho2;
-    const int sector = static_cast<int>(std::floor((std::atan2(v, u) + Pi) / (2.0 * Pi) * 16.0));
-    this->Sectors |= 1u << std::min(std::max(sector, 0), 15);
-    const int position = static_cast<int>(std::floor((std::atan2(sin2, cos2) + Pi) / (Pi / 4.0)));
-    this->HalfTurnPositions |= 1u << std::min(std::max(position, 0), 7);
+    const double inverse = 1.0 / rho2;
+    cos2 = (u * u - v * v) * inverse;
+    sin2 = 2.0 * u * v * inverse;
+    const int sector = SixteenthOfTurn(u, v);
+    this->Sectors |= 1u << sector;
+    // 2 phi is in the eighth of the turn four after phi's sixteenth.
+    this->HalfTurnPositions |= 1u << ((sector + 4) % 8);
   }
   // The height column: the query point itself is noisy, and its height
   // above the surface would otherwise bias every circle through it.
@@ -225,8 +251,9 @@ void OrientedCircleSums::Add(const TangentFrame& frame, const double d[3], const
       (side * normal[2] - n[2]) * d[2]);
     row[3] = u;
     row[4] = v;
-    AddRow<5>(row, t, 1.0 / squared, this->NormalMatrix, this->NormalRight);
-    this->NormalTargets += t * t / squared;
+    const double weight = 1.0 / squared;
+    AddRow<5>(row, t, weight, this->NormalMatrix, this->NormalRight);
+    this->NormalTargets += t * t * weight;
     ++this->NeighborsWithNormal;
     this->Opposing += opposing;
     (opposing ? this->OpposingHeights : this->AgreeingHeights) += h;
@@ -291,7 +318,7 @@ OrientedCircleResult FitOrientedCircles(const OrientedCircleSums& sums,
   }
   const Matrix6 positionMatrix = Full<6>(sums.PositionMatrix);
   const Vector6 positionRight = Full<6>(sums.PositionRight);
-  const Solution<6> positions = Solve<6>(positionMatrix, positionRight);
+  const Solution<6> positions = Solve<6>(positionMatrix, positionRight, true);
   if (!positions.Valid)
   {
     return result;
@@ -304,7 +331,7 @@ OrientedCircleResult FitOrientedCircles(const OrientedCircleSums& sums,
   {
     const Matrix5 normalMatrix = Full<5>(sums.NormalMatrix);
     const Vector5 normalRight = Full<5>(sums.NormalRight);
-    const Solution<5> normals = Solve<5>(normalMatrix, normalRight);
+    const Solution<5> normals = Solve<5>(normalMatrix, normalRight, false);
     if (normals.Valid)
     {
       const double normalVariance = std::max(
@@ -315,7 +342,7 @@ OrientedCircleResult FitOrientedCircles(const OrientedCircleSums& sums,
       Vector6 right = positionRight / positionVariance;
       matrix.topLeftCorner<5, 5>() += normalMatrix / normalVariance;
       right.head<5>() += normalRight / normalVariance;
-      const Solution<6> both = Solve<6>(matrix, right);
+      const Solution<6> both = Solve<6>(matrix, right, false);
       combined = both.Valid ? both : combined;
     }
   }

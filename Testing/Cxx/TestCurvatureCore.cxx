@@ -1,6 +1,7 @@
 // Tests of the numeric core alone (no VTK): frame, half-plane binning,
 // circle fits, sine fit and the per-point estimator.
 #include "AnalyticSurfaces.h"
+#include "OrientedCircleFit.h"
 #include "SimdKernels.h"
 #include "PrincipalCurvatureCore.h"
 #include "TestChecks.h"
@@ -629,6 +630,44 @@ void TestInvariance(Checks& checks)
 }
 } // namespace
 
+/// OrientedCircleSums files each neighbour under its sixteenth of the turn
+/// (phi) and its eighth of 2 phi, by comparisons instead of atan2: the
+/// same as floor((atan2 + pi) / (2 pi) * 16) and its 2 phi counterpart for
+/// directions off the boundaries, in every quadrant.
+void TestNeighborSectors(Checks& checks)
+{
+  const TangentFrame frame = MakeTangentFrame({ { 0.0, 0.0, 1.0 } });
+  const double pi = 3.141592653589793;
+  testing::Random random(77);
+  int wrong = 0;
+  for (int i = 0; i < 20000; ++i)
+  {
+    // Uniform angles, and the sixteenth in the middle of each as well.
+    const double phi = i < 16 ? -pi + (i + 0.5) * pi / 8.0 : -pi + 2.0 * pi * random.Uniform();
+    const double radius = 0.5 + random.Uniform();
+    const double u = radius * std::cos(phi), v = radius * std::sin(phi);
+    // The frame's own tangent axes, whatever MakeTangentFrame chose.
+    double d[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      d[k] = u * frame.V0[k] + v * frame.W0[k];
+    }
+    OrientedCircleSums sums;
+    sums.Add(frame, d, nullptr);
+    const double angle = std::atan2(v, u);
+    const int sector = static_cast<int>(std::floor((angle + pi) / (2.0 * pi) * 16.0));
+    const double twice = std::atan2(2.0 * u * v, u * u - v * v);
+    const int position = static_cast<int>(std::floor((twice + pi) / (pi / 4.0)));
+    const double offBoundary = std::fabs(std::remainder(angle, pi / 8.0));
+    if (offBoundary > 1e-9)
+    {
+      wrong += sums.Sectors != (1u << std::min(sector, 15)) ||
+        sums.HalfTurnPositions != (1u << std::min(position, 7));
+    }
+  }
+  checks.Equal("oriented circles: neighbours' sectors as atan2 gives them", wrong, 0);
+}
+
 int main()
 {
   Checks checks;
@@ -645,5 +684,6 @@ int main()
   TestEstimatorOnSurfaces(checks);
   TestDegenerateNeighborhoods(checks);
   TestInvariance(checks);
+  TestNeighborSectors(checks);
   return checks.Summary();
 }
