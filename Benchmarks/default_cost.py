@@ -19,16 +19,13 @@ lib/python3.X/site-packages).
 import argparse
 import math
 import statistics
-import time
 
 import numpy
-from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
-from vtkmodules.vtkCommonCore import vtkPoints
-from vtkmodules.vtkCommonDataModel import vtkPolyData
+from vtkmodules.util.numpy_support import vtk_to_numpy
 
-from principal_curvatures import vtkPrincipalCurvatureEstimation
+from dense_patch import MAJOR, MINOR, cloud_of, torus_points
+from dense_patch import run as timed_run
 
-MAJOR, MINOR = 3.0, 1.0
 SETTINGS = ("paper: New01, 375", "default")
 
 
@@ -43,36 +40,15 @@ def torus(points, noise, seed=11):
         vv = generator.uniform(0.0, 2.0 * math.pi, points)
         keep = generator.uniform(0.0, MAJOR + MINOR, points) < MAJOR + MINOR * numpy.cos(vv)
         u, v = numpy.concatenate([u, uu[keep]]), numpy.concatenate([v, vv[keep]])
-    u, v = u[:points], v[:points]
-    ring = MAJOR + MINOR * numpy.cos(v)
-    xyz = numpy.column_stack([ring * numpy.cos(u), ring * numpy.sin(u), MINOR * numpy.sin(v)])
-    normals = numpy.column_stack([numpy.cos(v) * numpy.cos(u), numpy.cos(v) * numpy.sin(u), numpy.sin(v)])
+    xyz, normals, kmin, kmax = torus_points(u[:points], v[:points])
     spacing = math.sqrt(4.0 * math.pi ** 2 * MAJOR * MINOR / points)
     xyz += generator.normal(0.0, noise * spacing, xyz.shape)
-    around = numpy.cos(v) / ring
-    kmin = numpy.minimum(1.0 / MINOR, around)
-    kmax = numpy.maximum(1.0 / MINOR, around)
-    data = vtkPolyData()
-    vtk_points = vtkPoints()
-    vtk_points.SetData(numpy_to_vtk(xyz, deep=True))
-    data.SetPoints(vtk_points)
-    array = numpy_to_vtk(normals, deep=True)
-    array.SetName("Normals")
-    data.GetPointData().SetNormals(array)
-    return data, kmin, kmax
+    return cloud_of(xyz, normals), kmin, kmax
 
 
 def run(data, setting, threads, estimate_normals):
-    curvatures = vtkPrincipalCurvatureEstimation()
-    curvatures.SetInputData(data)
-    curvatures.SetNumberOfThreads(threads)
-    if setting != "default":
-        curvatures.SetFitMode(1)  # New01 at the radius holding 375 neighbors
-    if estimate_normals:
-        curvatures.SetNormalsSourceToEstimated()
-    start = time.perf_counter()
-    curvatures.Update()
-    return time.perf_counter() - start, curvatures.GetOutput()
+    # The paper's fit: New01 at the radius holding 375 neighbors.
+    return timed_run(data, threads, estimate_normals, None if setting == "default" else 1)
 
 
 def quality(output, kmin, kmax):

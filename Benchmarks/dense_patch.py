@@ -38,6 +38,18 @@ def torus_points(u, v):
     return points, normals, numpy.minimum(tube, around), numpy.maximum(tube, around)
 
 
+def cloud_of(points, normals):
+    """A vtkPolyData of the points, with the normals as its Normals."""
+    data = vtkPolyData()
+    vtk_points = vtkPoints()
+    vtk_points.SetData(numpy_to_vtk(points, deep=True))
+    data.SetPoints(vtk_points)
+    array = numpy_to_vtk(normals, deep=True)
+    array.SetName("Normals")
+    data.GetPointData().SetNormals(array)
+    return data
+
+
 def cloud(with_patch, seed=7):
     generator = numpy.random.default_rng(seed)
     # Uniform in area: v by rejection on the ring's length.
@@ -53,20 +65,16 @@ def cloud(with_patch, seed=7):
         u, v = numpy.concatenate([u, pu]), numpy.concatenate([v, pv])
         patch = numpy.concatenate([patch, numpy.ones(20000, dtype=bool)])
     points, normals, kmin, kmax = torus_points(u, v)
-    data = vtkPolyData()
-    vtk_points = vtkPoints()
-    vtk_points.SetData(numpy_to_vtk(points, deep=True))
-    data.SetPoints(vtk_points)
-    array = numpy_to_vtk(normals, deep=True)
-    array.SetName("Normals")
-    data.GetPointData().SetNormals(array)
-    return data, patch, kmin, kmax
+    return cloud_of(points, normals), patch, kmin, kmax
 
 
-def run(data, threads, estimate):
+def run(data, threads, estimate, fit_mode=None):
+    """Seconds of one Update (the defaults, or `fit_mode`), and the output."""
     curvatures = vtkPrincipalCurvatureEstimation()
     curvatures.SetInputData(data)
     curvatures.SetNumberOfThreads(threads)
+    if fit_mode is not None:
+        curvatures.SetFitMode(fit_mode)
     if estimate:
         curvatures.SetNormalsSourceToEstimated()
     start = time.perf_counter()
