@@ -14,10 +14,14 @@ template<int N>
 using Vector = Eigen::Matrix<double, N, 1>;
 template<int N>
 using Matrix = Eigen::Matrix<double, N, N>;
-using Vector5 = Vector<5>;
-using Matrix5 = Matrix<5>;
-using Vector6 = Vector<6>;
-using Matrix6 = Matrix<6>;
+constexpr int PositionUnknowns = OrientedCircleSums::PositionUnknowns;
+constexpr int NormalUnknowns = OrientedCircleSums::NormalUnknowns;
+using PositionVector = Vector<PositionUnknowns>;
+using PositionMatrix = Matrix<PositionUnknowns>;
+using NormalVector = Vector<NormalUnknowns>;
+using NormalMatrix = Matrix<NormalUnknowns>;
+/// Fewer neighbours than this leave the fit without a residual to weigh it.
+constexpr int MinimumNeighbors = PositionUnknowns + 2;
 
 /// How many times the tilt that the query point's own displacement along
 /// the surface explains the fitted tilt's square must exceed before the
@@ -70,7 +74,8 @@ Vector<N> Full(const std::array<double, N>& right)
   return Eigen::Map<const Vector<N>>(right.data());
 }
 
-/// The unknowns (C, A, B, tilt u, tilt v[, height]) and, where asked for
+/// The unknowns (C, A, B, tilt u, tilt v, the cubic's four coefficients[,
+/// height]) and, where asked for
 /// (the covariance), the inverse of the normal matrix; invalid when it is
 /// singular to working precision.
 template<int N>
@@ -235,10 +240,21 @@ void OrientedCircleSums::Add(const TangentFrame& frame, const double d[3], const
     // 2 phi is in the eighth of the turn four after phi's sixteenth.
     this->HalfTurnPositions |= 1u << ((sector + 4) % 8);
   }
-  // The height column: the query point itself is noisy, and its height
-  // above the surface would otherwise bias every circle through it.
-  double row[6] = { squared, squared * cos2, squared * sin2, 2.0 * u, 2.0 * v, 1.0 };
-  AddRow<6>(row, 2.0 * h, 1.0, this->PositionMatrix, this->PositionRight);
+  // The cubic columns: the surface's third order, which would otherwise
+  // bias the circles (2 c in 2 h). The height column: the query point itself
+  // is noisy, and its height above the surface would otherwise bias every
+  // circle through it.
+  double row[PositionUnknowns] = { squared,
+    squared * cos2,
+    squared * sin2,
+    2.0 * u,
+    2.0 * v,
+    2.0 * u * u * u,
+    2.0 * u * u * v,
+    2.0 * u * v * v,
+    2.0 * v * v * v,
+    1.0 };
+  AddRow<PositionUnknowns>(row, 2.0 * h, 1.0, this->PositionMatrix, this->PositionRight);
   this->PositionTargets += 4.0 * h * h;
   ++this->Neighbors;
   this->SquaredDistances += squared;
@@ -249,10 +265,15 @@ void OrientedCircleSums::Add(const TangentFrame& frame, const double d[3], const
     // The paper's sign: a circle bending towards n has positive curvature.
     const double t = -((side * normal[0] - n[0]) * d[0] + (side * normal[1] - n[1]) * d[1] +
       (side * normal[2] - n[2]) * d[2]);
+    // A tilt adds delta . d to the normal term, a cubic term 3 c (Euler).
     row[3] = u;
     row[4] = v;
+    for (int k = 5; k < 9; ++k)
+    {
+      row[k] *= 1.5;
+    }
     const double weight = 1.0 / squared;
-    AddRow<5>(row, t, weight, this->NormalMatrix, this->NormalRight);
+    AddRow<NormalUnknowns>(row, t, weight, this->NormalMatrix, this->NormalRight);
     this->NormalTargets += t * t * weight;
     ++this->NeighborsWithNormal;
     this->Opposing += opposing;
@@ -301,7 +322,7 @@ OrientedCircleResult FitOrientedCircles(const OrientedCircleSums& sums,
   result.StandardError = std::numeric_limits<double>::quiet_NaN();
   out.NeighborCount = sums.Neighbors;
   out.ValidDirections = PopCount(sums.Sectors);
-  if (sums.Neighbors < std::max(minimumNeighbors, 7))
+  if (sums.Neighbors < std::max(minimumNeighbors, MinimumNeighbors))
   {
     out.Reason = UnestimatedReason::TooFewNeighbors;
     return result;
@@ -316,9 +337,10 @@ OrientedCircleResult FitOrientedCircles(const OrientedCircleSums& sums,
     out.Reason = UnestimatedReason::TooFewDirections;
     return result;
   }
-  const Matrix6 positionMatrix = Full<6>(sums.PositionMatrix);
-  const Vector6 positionRight = Full<6>(sums.PositionRight);
-  const Solution<6> positions = Solve<6>(positionMatrix, positionRight, true);
+  const PositionMatrix positionMatrix = Full<PositionUnknowns>(sums.PositionMatrix);
+  const PositionVector positionRight = Full<PositionUnknowns>(sums.PositionRight);
+  const Solution<PositionUnknowns> positions =
+    Solve<PositionUnknowns>(positionMatrix, positionRight, true);
   if (!positions.Valid)
   {
     return result;
@@ -326,28 +348,30 @@ OrientedCircleResult FitOrientedCircles(const OrientedCircleSums& sums,
   const double positionVariance =
     std::max(ResidualVariance(positions, positionRight, sums.PositionTargets, sums.Neighbors),
       VarianceFloor);
-  Solution<6> combined = positions;
-  if (sums.NeighborsWithNormal >= 6)
+  Solution<PositionUnknowns> combined = positions;
+  if (sums.NeighborsWithNormal > NormalUnknowns)
   {
-    const Matrix5 normalMatrix = Full<5>(sums.NormalMatrix);
-    const Vector5 normalRight = Full<5>(sums.NormalRight);
-    const Solution<5> normals = Solve<5>(normalMatrix, normalRight, false);
+    const NormalMatrix normalMatrix = Full<NormalUnknowns>(sums.NormalMatrix);
+    const NormalVector normalRight = Full<NormalUnknowns>(sums.NormalRight);
+    const Solution<NormalUnknowns> normals =
+      Solve<NormalUnknowns>(normalMatrix, normalRight, false);
     if (normals.Valid)
     {
       const double normalVariance = std::max(
         ResidualVariance(normals, normalRight, sums.NormalTargets, sums.NeighborsWithNormal),
         VarianceFloor);
-      // The normals do not see the height: their rows are zero there.
-      Matrix6 matrix = positionMatrix / positionVariance;
-      Vector6 right = positionRight / positionVariance;
-      matrix.topLeftCorner<5, 5>() += normalMatrix / normalVariance;
-      right.head<5>() += normalRight / normalVariance;
-      const Solution<6> both = Solve<6>(matrix, right, false);
+      // The normals do not see the height (the last unknown): their rows
+      // are zero there.
+      PositionMatrix matrix = positionMatrix / positionVariance;
+      PositionVector right = positionRight / positionVariance;
+      matrix.topLeftCorner<NormalUnknowns, NormalUnknowns>() += normalMatrix / normalVariance;
+      right.head<NormalUnknowns>() += normalRight / normalVariance;
+      const Solution<PositionUnknowns> both = Solve<PositionUnknowns>(matrix, right, false);
       combined = both.Valid ? both : combined;
     }
   }
 
-  const Matrix6 covariance = positions.Inverse * positionVariance;
+  const PositionMatrix covariance = positions.Inverse * positionVariance;
   const double c = combined.X[1], s = combined.X[2];
   const double amplitude = std::hypot(c, s);
   const double amplitudeVariance = amplitude > 0.0

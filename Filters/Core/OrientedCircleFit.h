@@ -17,7 +17,12 @@
  * 2 delta . d to 2 h: two tangential unknowns absorb it, so a noisy query
  * normal (PCA normals) does not bias the curvatures. A query point a height
  * e off the surface (every point of a noisy scan is) adds -2 e to every
- * 2 h: the positions' rows have that height as a sixth unknown. The two kinds of rows
+ * 2 h: the positions' rows have that height as an unknown. The surface's
+ * cubic terms c(u, v) add 2 c to 2 h and, by Euler's rule for homogeneous
+ * functions, 3 c to the normal term: both kinds of rows share their four
+ * coefficients as unknowns, so that the circles fit the surface's second
+ * order and not its third (which otherwise biases every curvature by an
+ * amount growing with the radius, and the tilt). The two kinds of rows
  * are weighted by the inverse of their own residual variance, each kind
  * fitted alone first: positions dominate where the normals are poor,
  * normals where the positions are noisy (normals' errors grow like |d|,
@@ -42,14 +47,17 @@ namespace pcurv
 /// the query point and in units of a fixed scale.
 struct OrientedCircleSums
 {
-  /// Upper triangles and right-hand sides of the positions' normal
-  /// equations (6 unknowns: C, A, B, the two tilts and the query point's
-  /// height) and the normals' (5: the height does not enter them), and the
-  /// sums of their squared targets.
-  std::array<double, 21> PositionMatrix{};
-  std::array<double, 6> PositionRight{};
-  std::array<double, 15> NormalMatrix{};
-  std::array<double, 5> NormalRight{};
+  /// The unknowns: C, A, B, the two tilts, the cubic term's coefficients
+  /// of u^3, u^2 v, u v^2, v^3, and (positions only) the query point's
+  /// height.
+  static constexpr int PositionUnknowns = 10;
+  static constexpr int NormalUnknowns = 9;
+  /// Upper triangles and right-hand sides of the positions' and the
+  /// normals' normal equations, and the sums of their squared targets.
+  std::array<double, PositionUnknowns*(PositionUnknowns + 1) / 2> PositionMatrix{};
+  std::array<double, PositionUnknowns> PositionRight{};
+  std::array<double, NormalUnknowns*(NormalUnknowns + 1) / 2> NormalMatrix{};
+  std::array<double, NormalUnknowns> NormalRight{};
   double PositionTargets = 0.0, NormalTargets = 0.0;
   int Neighbors = 0;
   int NeighborsWithNormal = 0;
@@ -90,7 +98,7 @@ struct OrientedCircleResult
   double StandardError = 0.0;
 };
 
-/// Fits the sums; invalid with fewer than `minimumNeighbors` (at least 7)
+/// Fits the sums; invalid with fewer than `minimumNeighbors` (at least 12)
 /// neighbours, angles within a closed half-turn of 2 phi, or a
 /// neighbourhood that reaches across the surface (ReachesAcross).
 OrientedCircleResult FitOrientedCircles(const OrientedCircleSums& sums,
