@@ -20,6 +20,8 @@ using PositionVector = Vector<PositionUnknowns>;
 using PositionMatrix = Matrix<PositionUnknowns>;
 using NormalVector = Vector<NormalUnknowns>;
 using NormalMatrix = Matrix<NormalUnknowns>;
+/// Where the cubic term's four columns begin, in both kinds of rows.
+constexpr int FirstCubicColumn = 5;
 /// Fewer neighbours than this leave the fit without a residual to weigh it.
 constexpr int MinimumNeighbors = PositionUnknowns + 2;
 
@@ -75,9 +77,8 @@ Vector<N> Full(const std::array<double, N>& right)
 }
 
 /// The unknowns (C, A, B, tilt u, tilt v, the cubic's four coefficients[,
-/// height]) and, where asked for
-/// (the covariance), the inverse of the normal matrix; invalid when it is
-/// singular to working precision.
+/// height]) and, where asked for (the covariance), the inverse of the
+/// normal matrix; invalid when it is singular to working precision.
 template<int N>
 struct Solution
 {
@@ -268,9 +269,9 @@ void OrientedCircleSums::Add(const TangentFrame& frame, const double d[3], const
     // A tilt adds delta . d to the normal term, a cubic term 3 c (Euler).
     row[3] = u;
     row[4] = v;
-    for (int k = 5; k < 9; ++k)
+    for (int k = FirstCubicColumn; k < FirstCubicColumn + 4; ++k)
     {
-      row[k] *= 1.5;
+      row[k] *= 1.5; // 2 c in the positions' rows, 3 c here
     }
     const double weight = 1.0 / squared;
     AddRow<NormalUnknowns>(row, t, weight, this->NormalMatrix, this->NormalRight);
