@@ -675,7 +675,8 @@ private:
     const double unit = std::nextafter(std::min(base, rule.LargestRadius), HUGE_VAL);
     const double inverseUnit = 1.0 / unit;
     const TangentFrame frame = MakeTangentFrame({ { n[0], n[1], n[2] } });
-    OrientedCircleSums sums;
+    OrientedCircleAccumulator& accumulator = scratch.OrientedSums;
+    accumulator.Begin(frame);
     OrientedCircleResult chosen;
     double chosenRadius = NaN;
     std::vector<OrientedCircleResult>& accepted = scratch.Scales;
@@ -697,10 +698,11 @@ private:
             const double d[3] = {
               offset[0] * inverseUnit, offset[1] * inverseUnit, offset[2] * inverseUnit
             };
-            sums.Add(frame, d, &this->Cloud.Normals[3 * id]);
+            accumulator.Add(d, &this->Cloud.Normals[3 * id]);
           }
         });
       inner = r;
+      const OrientedCircleSums& sums = accumulator.Sums();
       if (sums.ReachesAcross(this->Settings.MaximumOpposingFraction))
       {
         reason = UnestimatedReason::ReachesAcross;

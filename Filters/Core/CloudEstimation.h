@@ -168,6 +168,7 @@ struct EstimationScratch
 {
   PointCurvatureEstimator Estimator;
   OrientedCircleEstimator OrientedEstimator;
+  OrientedCircleAccumulator OrientedSums;
   DynamicAdjustment Adjustment;
   std::vector<double> Distances;
   NeighborOffsets Neighbors;

@@ -20,8 +20,6 @@ using PositionVector = Vector<PositionUnknowns>;
 using PositionMatrix = Matrix<PositionUnknowns>;
 using NormalVector = Vector<NormalUnknowns>;
 using NormalMatrix = Matrix<NormalUnknowns>;
-/// Where the cubic term's four columns begin, in both kinds of rows.
-constexpr int FirstCubicColumn = 5;
 /// Fewer neighbours than this leave the fit without a residual to weigh it.
 constexpr int MinimumNeighbors = PositionUnknowns + 2;
 
@@ -185,28 +183,6 @@ TangentFrame FittedFrame(const TangentFrame& frame,
   return turned;
 }
 
-/// floor((atan2(v, u) + pi) / (2 pi) * 16), by comparisons (a neighbour's
-/// sector is wanted for every neighbour, and atan2 was most of its cost):
-/// which sixteenth of the turn, counted from the negative u axis, the
-/// direction (u, v) is in (a direction on a boundary may go to either side).
-int SixteenthOfTurn(double u, double v)
-{
-  constexpr double Tan22_5 = 0.41421356237309503; // sqrt 2 - 1
-  const double a = std::fabs(u), b = std::fabs(v);
-  // The angle from the u axis within the quadrant, in sixteenths: 0..3.
-  const int within = b < Tan22_5 * a ? 0 : b < a ? 1 : a > Tan22_5 * b ? 2 : 3;
-  int sixteenth; // floor(atan2(v, u) / (pi / 8)), -8..7
-  if (u > 0.0)
-  {
-    sixteenth = v >= 0.0 ? within : -1 - within;
-  }
-  else
-  {
-    sixteenth = v > 0.0 ? 7 - within : -8 + within;
-  }
-  return sixteenth + 8;
-}
-
 int PopCount(std::uint32_t bits)
 {
   int count = 0;
@@ -218,74 +194,62 @@ int PopCount(std::uint32_t bits)
 }
 } // namespace
 
-void OrientedCircleSums::Add(const TangentFrame& frame, const double d[3], const double* normal)
+void OrientedCircleAccumulator::Begin(const TangentFrame& frame)
 {
-  const double squared = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-  if (!(squared > 0.0))
+  for (int k = 0; k < 3; ++k)
   {
-    return; // at the query point: no direction, no curvature
+    this->Frame.Normal[k] = frame.Normal[k];
+    this->Frame.V[k] = frame.V0[k];
+    this->Frame.W[k] = frame.W0[k];
   }
-  const Vector3& n = frame.Normal;
-  const double u = d[0] * frame.V0[0] + d[1] * frame.V0[1] + d[2] * frame.V0[2];
-  const double v = d[0] * frame.W0[0] + d[1] * frame.W0[1] + d[2] * frame.W0[2];
-  const double h = d[0] * n[0] + d[1] * n[1] + d[2] * n[2];
-  const double rho2 = u * u + v * v;
-  double cos2 = 0.0, sin2 = 0.0;
-  if (rho2 > 0.0) // on the normal line a neighbour has no angle
+  this->Banked = oriented::Sums{};
+  this->PendingCount = 0;
+}
+
+void OrientedCircleAccumulator::AddPending()
+{
+  oriented::AddNeighbors(this->Frame,
+    this->Pending[0].data(),
+    this->Pending[1].data(),
+    this->Pending[2].data(),
+    this->Pending[3].data(),
+    this->Pending[4].data(),
+    this->Pending[5].data(),
+    static_cast<std::size_t>(this->PendingCount),
+    this->Banked);
+  this->PendingCount = 0;
+}
+
+const OrientedCircleSums& OrientedCircleAccumulator::Sums()
+{
+  this->AddPending();
+  // Each sum's eight banks, added in a fixed order.
+  double totals[oriented::NumberOfEntries];
+  for (int e = 0; e < oriented::NumberOfEntries; ++e)
   {
-    const double inverse = 1.0 / rho2;
-    cos2 = (u * u - v * v) * inverse;
-    sin2 = 2.0 * u * v * inverse;
-    const int sector = SixteenthOfTurn(u, v);
-    this->Sectors |= 1u << sector;
-    // 2 phi is in the eighth of the turn four after phi's sixteenth.
-    this->HalfTurnPositions |= 1u << ((sector + 4) % 8);
+    const double* b = &this->Banked.Banks[e * oriented::NumberOfBanks];
+    totals[e] = ((b[0] + b[1]) + (b[2] + b[3])) + ((b[4] + b[5]) + (b[6] + b[7]));
   }
-  // The cubic columns: the surface's third order, which would otherwise
-  // bias the circles (2 c in 2 h). The height column: the query point itself
-  // is noisy, and its height above the surface would otherwise bias every
-  // circle through it.
-  double row[PositionUnknowns] = { squared,
-    squared * cos2,
-    squared * sin2,
-    2.0 * u,
-    2.0 * v,
-    2.0 * u * u * u,
-    2.0 * u * u * v,
-    2.0 * u * v * v,
-    2.0 * v * v * v,
-    1.0 };
-  AddRow<PositionUnknowns>(row, 2.0 * h, 1.0, this->PositionMatrix, this->PositionRight);
-  this->PositionTargets += 4.0 * h * h;
-  ++this->Neighbors;
-  this->SquaredDistances += squared;
-  if (normal && (normal[0] != 0.0 || normal[1] != 0.0 || normal[2] != 0.0))
-  {
-    const bool opposing = normal[0] * n[0] + normal[1] * n[1] + normal[2] * n[2] < 0.0;
-    const double side = opposing ? -1.0 : 1.0;
-    // The paper's sign: a circle bending towards n has positive curvature.
-    const double t = -((side * normal[0] - n[0]) * d[0] + (side * normal[1] - n[1]) * d[1] +
-      (side * normal[2] - n[2]) * d[2]);
-    // A tilt adds delta . d to the normal term, a cubic term 3 c (Euler).
-    row[3] = u;
-    row[4] = v;
-    for (int k = FirstCubicColumn; k < FirstCubicColumn + 4; ++k)
-    {
-      row[k] *= 1.5; // 2 c in the positions' rows, 3 c here
-    }
-    const double weight = 1.0 / squared;
-    AddRow<NormalUnknowns>(row, t, weight, this->NormalMatrix, this->NormalRight);
-    this->NormalTargets += t * t * weight;
-    ++this->NeighborsWithNormal;
-    this->Opposing += opposing;
-    (opposing ? this->OpposingHeights : this->AgreeingHeights) += h;
-    (opposing ? this->OpposingSquaredHeights : this->AgreeingSquaredHeights) += h * h;
-  }
-  else
-  {
-    this->AgreeingHeights += h;
-    this->AgreeingSquaredHeights += h * h;
-  }
+  OrientedCircleSums& sums = this->Totals;
+  std::copy_n(
+    totals + oriented::PositionMatrix, sums.PositionMatrix.size(), sums.PositionMatrix.begin());
+  std::copy_n(
+    totals + oriented::PositionRight, sums.PositionRight.size(), sums.PositionRight.begin());
+  std::copy_n(totals + oriented::NormalMatrix, sums.NormalMatrix.size(), sums.NormalMatrix.begin());
+  std::copy_n(totals + oriented::NormalRight, sums.NormalRight.size(), sums.NormalRight.begin());
+  sums.PositionTargets = totals[oriented::PositionTargets];
+  sums.NormalTargets = totals[oriented::NormalTargets];
+  sums.Neighbors = static_cast<int>(totals[oriented::Neighbors]);
+  sums.NeighborsWithNormal = static_cast<int>(totals[oriented::NeighborsWithNormal]);
+  sums.Opposing = static_cast<int>(totals[oriented::Opposing]);
+  sums.OpposingHeights = totals[oriented::OpposingHeights];
+  sums.AgreeingHeights = totals[oriented::AgreeingHeights];
+  sums.OpposingSquaredHeights = totals[oriented::OpposingSquaredHeights];
+  sums.AgreeingSquaredHeights = totals[oriented::AgreeingSquaredHeights];
+  sums.SquaredDistances = totals[oriented::SquaredDistances];
+  sums.Sectors = this->Banked.Sectors;
+  sums.HalfTurnPositions = this->Banked.HalfTurnPositions;
+  return sums;
 }
 
 bool OrientedCircleSums::ReachesAcross(double maximumOpposing) const
@@ -411,7 +375,7 @@ void OrientedCircleEstimator::Begin(const Vector3& unitNormal, double scale)
 {
   this->Frame = MakeTangentFrame(unitNormal);
   this->InverseScale = 1.0 / scale;
-  this->Sums = OrientedCircleSums{};
+  this->Sums.Begin(this->Frame);
 }
 
 void OrientedCircleEstimator::AddNeighbor(const double offset[3], const double normal[3])
@@ -419,7 +383,7 @@ void OrientedCircleEstimator::AddNeighbor(const double offset[3], const double n
   const double d[3] = {
     offset[0] * this->InverseScale, offset[1] * this->InverseScale, offset[2] * this->InverseScale
   };
-  this->Sums.Add(this->Frame, d, normal);
+  this->Sums.Add(d, normal);
 }
 
 } // namespace pcurv

@@ -36,6 +36,7 @@
 #define OrientedCircleFit_h
 
 #include "PrincipalCurvatureCore.h"
+#include "SimdKernels.h"
 
 #include <array>
 #include <cstdint>
@@ -50,8 +51,8 @@ struct OrientedCircleSums
   /// The unknowns: C, A, B, the two tilts, the cubic term's coefficients
   /// of u^3, u^2 v, u v^2, v^3, and (positions only) the query point's
   /// height.
-  static constexpr int PositionUnknowns = 10;
-  static constexpr int NormalUnknowns = 9;
+  static constexpr int PositionUnknowns = oriented::PositionUnknowns;
+  static constexpr int NormalUnknowns = oriented::NormalUnknowns;
   /// Upper triangles and right-hand sides of the positions' and the
   /// normals' normal equations, and the sums of their squared targets.
   std::array<double, PositionUnknowns*(PositionUnknowns + 1) / 2> PositionMatrix{};
@@ -70,12 +71,6 @@ struct OrientedCircleSums
   std::uint32_t Sectors = 0;
   std::uint32_t HalfTurnPositions = 0;
 
-  /// Adds a neighbour: its offset (in units of the scale), its unit normal
-  /// or null, in the query's frame. At the query point: ignored. A normal
-  /// opposing the query's is turned first: scans' normals are often not
-  /// consistently oriented, and a normal's line is what it tells.
-  void Add(const TangentFrame& frame, const double d[3], const double* normal);
-
   /// The neighbourhood reaches across the surface (a thin part, two close
   /// sheets): more than the fraction `maximumOpposing` of the neighbours
   /// have a normal opposing the query's, and they lie on another level than
@@ -84,6 +79,49 @@ struct OrientedCircleSums
   /// Opposing normals on the query's own sheet are only inconsistently
   /// oriented normals.
   bool ReachesAcross(double maximumOpposing) const;
+};
+
+/// Adds neighbours to OrientedCircleSums several at a time (eight lanes of
+/// SimdKernels.h's oriented::AddNeighbors): Begin, Add per neighbour, Sums
+/// whenever the sums so far are wanted. The same neighbours in the same
+/// order give the same sums on every instruction set.
+class OrientedCircleAccumulator
+{
+public:
+  /// Starts afresh in the tangent frame of a query point.
+  void Begin(const TangentFrame& frame);
+
+  /// Adds a neighbour: its offset (in units of the scale) and its unit
+  /// normal, or null or zero (the position alone is used). At the query
+  /// point: ignored. A normal opposing the query's is turned first: scans'
+  /// normals are often not consistently oriented, and a normal's line is
+  /// what it tells.
+  void Add(const double d[3], const double* normal)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      this->Pending[k][this->PendingCount] = d[k];
+      this->Pending[3 + k][this->PendingCount] = normal ? normal[k] : 0.0;
+    }
+    if (++this->PendingCount == Capacity)
+    {
+      this->AddPending();
+    }
+  }
+
+  /// The sums of every neighbour added since Begin.
+  const OrientedCircleSums& Sums();
+
+private:
+  void AddPending();
+
+  static constexpr int Capacity = 64;
+  oriented::Frame Frame{};
+  oriented::Sums Banked{};
+  /// Offsets and normals not yet in Banked, one array per coordinate.
+  std::array<std::array<double, Capacity>, 6> Pending{};
+  int PendingCount = 0;
+  OrientedCircleSums Totals;
 };
 
 /// What the fit of some sums gives: the curvatures (output sign, in
@@ -119,16 +157,16 @@ public:
   /// position alone is used).
   void AddNeighbor(const double offset[3], const double normal[3]);
 
-  OrientedCircleResult Estimate(int minimumNeighbors, double maximumOpposing) const
+  OrientedCircleResult Estimate(int minimumNeighbors, double maximumOpposing)
   {
     return FitOrientedCircles(
-      this->Sums, this->Frame, this->InverseScale, minimumNeighbors, maximumOpposing);
+      this->Sums.Sums(), this->Frame, this->InverseScale, minimumNeighbors, maximumOpposing);
   }
 
 private:
   TangentFrame Frame{};
   double InverseScale = 1.0;
-  OrientedCircleSums Sums;
+  OrientedCircleAccumulator Sums;
 };
 
 } // namespace pcurv

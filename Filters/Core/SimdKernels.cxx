@@ -35,6 +35,15 @@ using namespace binning;
 using ClassifyKernel =
   void (*)(const Frame&, const double*, const double*, const double*, std::size_t, Block&);
 using CircleKernel = void (*)(const double*, const double*, std::size_t, const double*, double*);
+using OrientedKernel = void (*)(const oriented::Frame&,
+  const double*,
+  const double*,
+  const double*,
+  const double*,
+  const double*,
+  const double*,
+  std::size_t,
+  oriented::Sums&);
 using GatherKernel = std::size_t (*)(const double*,
   const double*,
   const double*,
@@ -339,24 +348,34 @@ struct NamedKernel
   ClassifyKernel Classify;
   GatherKernel Gather;
   CircleKernel Circles;
+  OrientedKernel Oriented;
 };
 
 std::vector<NamedKernel> Kernels()
 {
-  std::vector<NamedKernel> kernels{
-    { "generic", &generic::ClassifyBlock, &GatherScalar, &generic::CircleDistanceSums }
-  };
+  std::vector<NamedKernel> kernels{ { "generic",
+    &generic::ClassifyBlock,
+    &GatherScalar,
+    &generic::CircleDistanceSums,
+    &generic::AddOrientedNeighbors } };
 #ifdef PCURV_MULTIVERSION
   __builtin_cpu_init();
   if (__builtin_cpu_supports("avx2"))
   {
-    kernels.push_back({ "avx2", &avx2::ClassifyBlock, &GatherScalar, &avx2::CircleDistanceSums });
+    kernels.push_back({ "avx2",
+      &avx2::ClassifyBlock,
+      &GatherScalar,
+      &avx2::CircleDistanceSums,
+      &avx2::AddOrientedNeighbors });
   }
   if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") &&
     __builtin_cpu_supports("avx512vl") && __builtin_cpu_supports("avx512bw"))
   {
-    kernels.push_back(
-      { "avx512", &avx512::ClassifyBlock, &avx512::Gather, &avx512::CircleDistanceSums });
+    kernels.push_back({ "avx512",
+      &avx512::ClassifyBlock,
+      &avx512::Gather,
+      &avx512::CircleDistanceSums,
+      &avx512::AddOrientedNeighbors });
   }
 #endif
   return kernels;
@@ -493,6 +512,41 @@ bool DistanceSumsWith(const std::string& kernel,
   return named != nullptr;
 }
 } // namespace circles
+
+namespace oriented
+{
+void AddNeighbors(const Frame& frame,
+  const double* dx,
+  const double* dy,
+  const double* dz,
+  const double* nx,
+  const double* ny,
+  const double* nz,
+  std::size_t count,
+  Sums& sums)
+{
+  Best().Oriented(frame, dx, dy, dz, nx, ny, nz, count, sums);
+}
+
+bool AddNeighborsWith(const std::string& kernel,
+  const Frame& frame,
+  const double* dx,
+  const double* dy,
+  const double* dz,
+  const double* nx,
+  const double* ny,
+  const double* nz,
+  std::size_t count,
+  Sums& sums)
+{
+  const NamedKernel* named = Named(kernel);
+  if (named)
+  {
+    named->Oriented(frame, dx, dy, dz, nx, ny, nz, count, sums);
+  }
+  return named != nullptr;
+}
+} // namespace oriented
 
 std::vector<std::string> AvailableKernels()
 {

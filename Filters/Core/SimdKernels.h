@@ -3,7 +3,8 @@
  * @brief The innermost loops, with SIMD chosen at run time (no VTK): which
  * of the 16 half planes each neighbour of a query point falls into
  * (binning), which points of a run of grid cells lie within the radius
- * (gather), and New02's summed distances to its two circles (circles).
+ * (gather), New02's summed distances to its two circles (circles), and the
+ * least-squares sums of OrientedCircles' rows (oriented).
  *
  * Binning is the innermost loop of the method: about 375 neighbours per point,
  * each put into its tangent frame, tested against the half planes and added
@@ -191,6 +192,90 @@ bool DistanceSumsWith(const std::string& kernel,
   const double kappa[2],
   double sums[2]);
 } // namespace circles
+
+namespace oriented
+{
+/// The query point's tangent frame: unit normal and tangent axes.
+struct Frame
+{
+  double Normal[3];
+  double V[3];
+  double W[3];
+};
+
+/// The unknowns of the positions' rows (C, A, B, two tilts, four cubic
+/// coefficients, the query point's height) and of the normals' rows (the
+/// same without the height).
+constexpr int PositionUnknowns = 10;
+constexpr int NormalUnknowns = 9;
+/// Where the cubic term's four columns begin, in both kinds of rows.
+constexpr int FirstCubicColumn = 5;
+constexpr int PositionMatrixSize = PositionUnknowns * (PositionUnknowns + 1) / 2;
+constexpr int NormalMatrixSize = NormalUnknowns * (NormalUnknowns + 1) / 2;
+
+/// Where each running sum is: upper triangles (row by row) and right-hand
+/// sides of both kinds of normal equations, the sums of their weighted
+/// squared targets, the neighbours' counts and the sums of their heights
+/// (h, h^2: those whose normal opposes the query's, and the others) and of
+/// their squared distances D.
+enum Entry : int
+{
+  PositionMatrix = 0,
+  PositionRight = PositionMatrix + PositionMatrixSize,
+  PositionTargets = PositionRight + PositionUnknowns,
+  NormalMatrix = PositionTargets + 1,
+  NormalRight = NormalMatrix + NormalMatrixSize,
+  NormalTargets = NormalRight + NormalUnknowns,
+  Neighbors,
+  NeighborsWithNormal,
+  Opposing,
+  OpposingHeights,
+  AgreeingHeights,
+  OpposingSquaredHeights,
+  AgreeingSquaredHeights,
+  SquaredDistances,
+  NumberOfEntries
+};
+
+/// Every sum is kept in eight banks: the j-th neighbour of a call adds to
+/// bank j mod 8, whatever the vector width, so that every instruction set
+/// adds the same numbers in the same order (and consecutive neighbours do
+/// not wait for each other's adds). Entry e of bank b: Banks[e * 8 + b].
+constexpr int NumberOfBanks = 8;
+struct Sums
+{
+  double Banks[NumberOfEntries * NumberOfBanks];
+  /// Occupied sixteenths of the turn (phi), and eighths of 2 phi.
+  std::uint32_t Sectors;
+  std::uint32_t HalfTurnPositions;
+};
+
+/// Adds `count` neighbours to `sums` (zeroed before the first call): their
+/// offsets from the query point in the units of the fit (dx, dy, dz) and
+/// their unit normals (nx, ny, nz; all three 0: none). A neighbour at the
+/// query point is ignored. The rows are those of OrientedCircleFit.h.
+void AddNeighbors(const Frame& frame,
+  const double* dx,
+  const double* dy,
+  const double* dz,
+  const double* nx,
+  const double* ny,
+  const double* nz,
+  std::size_t count,
+  Sums& sums);
+
+/// AddNeighbors with a named kernel (for tests); false when not available.
+bool AddNeighborsWith(const std::string& kernel,
+  const Frame& frame,
+  const double* dx,
+  const double* dy,
+  const double* dz,
+  const double* nx,
+  const double* ny,
+  const double* nz,
+  std::size_t count,
+  Sums& sums);
+} // namespace oriented
 
 /// The instruction sets this build and this processor can use, widest last
 /// ("generic" is always there), and the one the kernels use.

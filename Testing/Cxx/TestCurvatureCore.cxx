@@ -7,6 +7,7 @@
 #include "TestChecks.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -314,6 +315,189 @@ void TestCircleDistanceKernelsAgree(Checks& checks)
   }
   checks.Equal("circle sums where a kernel differs from the generic one", differences, 0L);
   checks.Near("circle sums against DistanceToCircle (relative)", largestRelative, 0.0, 1e-13);
+}
+
+/// OrientedCircleFit.h's rows written out one neighbour at a time: the
+/// positions' row (D, D cos 2 phi, D sin 2 phi, 2 u, 2 v, 2 u^3, 2 u^2 v,
+/// 2 u v^2, 2 v^3, 1) with target 2 h; the normals' row (D, D cos 2 phi,
+/// D sin 2 phi, u, v, 3 u^3, 3 u^2 v, 3 u v^2, 3 v^3) with target
+/// -(n_q - n) . d (n_q turned when it opposes n) and weight 1 / D.
+OrientedCircleSums ReferenceOrientedSums(const TangentFrame& frame,
+  const std::vector<std::array<double, 6>>& neighbors)
+{
+  OrientedCircleSums sums;
+  auto add = [](const double* row, int n, double y, double w, double* matrix, double* right)
+  {
+    for (int a = 0, k = 0; a < n; ++a)
+    {
+      right[a] += w * row[a] * y;
+      for (int b = a; b < n; ++b)
+      {
+        matrix[k++] += w * row[a] * row[b];
+      }
+    }
+  };
+  for (const std::array<double, 6>& q : neighbors)
+  {
+    const double u = testing::Dot({ { q[0], q[1], q[2] } }, frame.V0);
+    const double v = testing::Dot({ { q[0], q[1], q[2] } }, frame.W0);
+    const double h = testing::Dot({ { q[0], q[1], q[2] } }, frame.Normal);
+    const double squared = q[0] * q[0] + q[1] * q[1] + q[2] * q[2];
+    if (squared == 0.0)
+    {
+      continue;
+    }
+    const double phi = std::atan2(v, u);
+    const double c = u * u + v * v > 0.0 ? std::cos(2.0 * phi) : 0.0;
+    const double s = u * u + v * v > 0.0 ? std::sin(2.0 * phi) : 0.0;
+    const double positions[10] = { squared,
+      squared * c,
+      squared * s,
+      2 * u,
+      2 * v,
+      2 * u * u * u,
+      2 * u * u * v,
+      2 * u * v * v,
+      2 * v * v * v,
+      1.0 };
+    add(positions, 10, 2.0 * h, 1.0, sums.PositionMatrix.data(), sums.PositionRight.data());
+    sums.PositionTargets += 4.0 * h * h;
+    ++sums.Neighbors;
+    sums.SquaredDistances += squared;
+    const testing::Vec normal{ { q[3], q[4], q[5] } };
+    const bool opposing = testing::Dot(normal, frame.Normal) < 0.0;
+    const bool hasNormal = q[3] != 0.0 || q[4] != 0.0 || q[5] != 0.0;
+    (hasNormal && opposing ? sums.OpposingHeights : sums.AgreeingHeights) += h;
+    (hasNormal && opposing ? sums.OpposingSquaredHeights : sums.AgreeingSquaredHeights) += h * h;
+    if (!hasNormal)
+    {
+      continue;
+    }
+    const double side = opposing ? -1.0 : 1.0;
+    double t = 0.0;
+    for (int k = 0; k < 3; ++k)
+    {
+      t -= (side * normal[k] - frame.Normal[k]) * q[k];
+    }
+    const double normals[9] = { squared,
+      squared * c,
+      squared * s,
+      u,
+      v,
+      3 * u * u * u,
+      3 * u * u * v,
+      3 * u * v * v,
+      3 * v * v * v };
+    add(normals, 9, t, 1.0 / squared, sums.NormalMatrix.data(), sums.NormalRight.data());
+    sums.NormalTargets += t * t / squared;
+    ++sums.NeighborsWithNormal;
+    sums.Opposing += opposing;
+  }
+  return sums;
+}
+
+/// OrientedCircleAccumulator's sums (eight lanes of oriented::AddNeighbors)
+/// are the rows' sums, and bit for bit the same on every instruction set:
+/// neighbours with and without normals, opposing ones, some at the query
+/// point or on the normal line, in batches of every length.
+void TestOrientedSumKernelsAgree(Checks& checks)
+{
+  Random random(41);
+  long differences = 0, countsWrong = 0;
+  double largestRelative = 0.0;
+  for (int trial = 0; trial < 400; ++trial)
+  {
+    testing::Vec n{ { random.Normal(), random.Normal(), random.Normal() } };
+    const TangentFrame frame = MakeTangentFrame(testing::Unit(n));
+    const std::size_t count = static_cast<std::size_t>(trial % 150);
+    std::vector<std::array<double, 6>> neighbors(count);
+    std::vector<double> columns[6];
+    for (std::size_t j = 0; j < count; ++j)
+    {
+      std::array<double, 6>& q = neighbors[j];
+      const int kind = static_cast<int>(random.Uniform() * 10.0);
+      for (int k = 0; k < 3; ++k)
+      {
+        // At the query point, on the normal line, or anywhere.
+        q[k] = kind == 0 ? 0.0 : kind == 1 ? 0.3 * frame.Normal[k] : random.Normal();
+        q[3 + k] = kind == 2 ? 0.0 : frame.Normal[k] + 0.3 * random.Normal();
+      }
+      const double length = std::sqrt(q[3] * q[3] + q[4] * q[4] + q[5] * q[5]);
+      const double flip = kind == 3 ? -1.0 : 1.0; // an opposing normal
+      for (int k = 0; k < 6; ++k)
+      {
+        q[k] = k < 3 || length == 0.0 ? q[k] : flip * q[k] / length;
+        columns[k].push_back(q[k]);
+      }
+    }
+    oriented::Sums reference{};
+    const oriented::Frame f{ { frame.Normal[0], frame.Normal[1], frame.Normal[2] },
+      { frame.V0[0], frame.V0[1], frame.V0[2] },
+      { frame.W0[0], frame.W0[1], frame.W0[2] } };
+    oriented::AddNeighborsWith("generic",
+      f,
+      columns[0].data(),
+      columns[1].data(),
+      columns[2].data(),
+      columns[3].data(),
+      columns[4].data(),
+      columns[5].data(),
+      count,
+      reference);
+    for (const std::string& kernel : AvailableKernels())
+    {
+      oriented::Sums sums{};
+      checks.True("oriented kernel runs",
+        oriented::AddNeighborsWith(kernel,
+          f,
+          columns[0].data(),
+          columns[1].data(),
+          columns[2].data(),
+          columns[3].data(),
+          columns[4].data(),
+          columns[5].data(),
+          count,
+          sums));
+      differences += std::memcmp(&sums, &reference, sizeof sums) == 0 ? 0 : 1;
+    }
+    OrientedCircleAccumulator accumulator;
+    accumulator.Begin(frame);
+    for (const std::array<double, 6>& q : neighbors)
+    {
+      accumulator.Add(q.data(), q[2] == 0.0 && trial % 2 ? nullptr : q.data() + 3);
+    }
+    const OrientedCircleSums& sums = accumulator.Sums();
+    const OrientedCircleSums plain = ReferenceOrientedSums(frame, neighbors);
+    auto compare = [&](double value, double expected, double size)
+    { largestRelative = std::max(largestRelative, std::fabs(value - expected) / size); };
+    const double size = std::max(1.0, plain.PositionMatrix[0]);
+    for (std::size_t k = 0; k < plain.PositionMatrix.size(); ++k)
+    {
+      compare(sums.PositionMatrix[k], plain.PositionMatrix[k], size);
+    }
+    for (std::size_t k = 0; k < plain.NormalMatrix.size(); ++k)
+    {
+      compare(sums.NormalMatrix[k], plain.NormalMatrix[k], size);
+    }
+    for (std::size_t k = 0; k < plain.PositionRight.size(); ++k)
+    {
+      compare(sums.PositionRight[k], plain.PositionRight[k], size);
+    }
+    for (std::size_t k = 0; k < plain.NormalRight.size(); ++k)
+    {
+      compare(sums.NormalRight[k], plain.NormalRight[k], size);
+    }
+    compare(sums.PositionTargets, plain.PositionTargets, size);
+    compare(sums.NormalTargets, plain.NormalTargets, size);
+    compare(sums.OpposingHeights, plain.OpposingHeights, size);
+    compare(sums.AgreeingSquaredHeights, plain.AgreeingSquaredHeights, size);
+    compare(sums.SquaredDistances, plain.SquaredDistances, size);
+    countsWrong += sums.Neighbors != plain.Neighbors ||
+      sums.NeighborsWithNormal != plain.NeighborsWithNormal || sums.Opposing != plain.Opposing;
+  }
+  checks.Equal("oriented sums where a kernel differs from the generic one", differences, 0L);
+  checks.Equal("oriented sums' neighbour counts wrong", countsWrong, 0L);
+  checks.Near("oriented sums against the rows one by one (relative)", largestRelative, 0.0, 1e-12);
 }
 
 /// Neighbours given as coordinates or as offsets: the same estimate.
@@ -630,7 +814,7 @@ void TestInvariance(Checks& checks)
 }
 } // namespace
 
-/// OrientedCircleSums files each neighbour under its sixteenth of the turn
+/// OrientedCircleAccumulator files each neighbour under its sixteenth of the turn
 /// (phi) and its eighth of 2 phi, by comparisons instead of atan2: the
 /// same as floor((atan2 + pi) / (2 pi) * 16) and its 2 phi counterpart for
 /// directions off the boundaries, in every quadrant.
@@ -652,8 +836,10 @@ void TestNeighborSectors(Checks& checks)
     {
       d[k] = u * frame.V0[k] + v * frame.W0[k];
     }
-    OrientedCircleSums sums;
-    sums.Add(frame, d, nullptr);
+    OrientedCircleAccumulator accumulator;
+    accumulator.Begin(frame);
+    accumulator.Add(d, nullptr);
+    const OrientedCircleSums& sums = accumulator.Sums();
     const double angle = std::atan2(v, u);
     const int sector = static_cast<int>(std::floor((angle + pi) / (2.0 * pi) * 16.0));
     const double twice = std::atan2(2.0 * u * v, u * u - v * v);
@@ -676,6 +862,7 @@ int main()
   TestBinningKernelsAgree(checks);
   TestGatherKernelsAgree(checks);
   TestCircleDistanceKernelsAgree(checks);
+  TestOrientedSumKernelsAgree(checks);
   TestOffsetsEqualCoordinates(checks);
   TestCircleFits(checks);
   TestPreviousMatchesEigenSolver(checks);
