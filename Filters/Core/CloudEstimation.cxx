@@ -686,21 +686,16 @@ private:
     for (int level = 0; level < rule.Levels; ++level)
     {
       const double r = std::min(unit * std::pow(2.0, 0.5 * level), rule.LargestRadius);
-      const double innerSquared = inner * inner;
-      this->Grid.ForEachWithinRadiusFine(x,
-        r,
-        [&](const double* q, std::int64_t id)
-        {
-          const double offset[3] = { q[0] - x[0], q[1] - x[1], q[2] - x[2] };
-          // The inner radii's neighbours are in the sums already.
-          if (offset[0] * offset[0] + offset[1] * offset[1] + offset[2] * offset[2] >= innerSquared)
-          {
-            const double d[3] = {
-              offset[0] * inverseUnit, offset[1] * inverseUnit, offset[2] * inverseUnit
-            };
-            accumulator.Add(d, &this->Cloud.Normals[3 * id]);
-          }
-        });
+      // The inner radii's neighbours are in the sums already.
+      const ShellPoints& shell = scratch.Shell;
+      this->Grid.GatherShell(x, inner, r, scratch.Shell);
+      for (std::size_t i = 0; i < shell.Count; ++i)
+      {
+        const double d[3] = {
+          shell.Dx[i] * inverseUnit, shell.Dy[i] * inverseUnit, shell.Dz[i] * inverseUnit
+        };
+        accumulator.Add(d, &this->Cloud.Normals[3 * shell.Ids[i]]);
+      }
       inner = r;
       const OrientedCircleSums& sums = accumulator.Sums();
       if (sums.ReachesAcross(this->Settings.MaximumOpposingFraction))

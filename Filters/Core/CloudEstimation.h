@@ -169,6 +169,7 @@ struct EstimationScratch
   PointCurvatureEstimator Estimator;
   OrientedCircleEstimator OrientedEstimator;
   OrientedCircleAccumulator OrientedSums;
+  ShellPoints Shell;
   DynamicAdjustment Adjustment;
   std::vector<double> Distances;
   NeighborOffsets Neighbors;

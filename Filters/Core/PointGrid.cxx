@@ -322,6 +322,50 @@ std::size_t PointGrid::GatherOffsetsWithinRadius(const double x[3],
   return kept;
 }
 
+std::size_t PointGrid::GatherShell(const double x[3],
+  double inner,
+  double radius,
+  ShellPoints& out) const
+{
+  out.Count = 0;
+  const double innerSquared = inner * inner, radiusSquared = radius * radius;
+  this->ForEachCandidateRun(x,
+    radius,
+    [&](const double* xs,
+      const double* ys,
+      const double* zs,
+      const std::int64_t* ids,
+      std::int64_t begin,
+      std::int64_t end)
+    {
+      // Every candidate is written, at the first free place; only those in
+      // the shell advance it.
+      const std::size_t needed = out.Count + static_cast<std::size_t>(end - begin);
+      if (out.Dx.size() < needed)
+      {
+        const std::size_t size = std::max(needed, 2 * out.Dx.size());
+        for (std::vector<double>* axis : { &out.Dx, &out.Dy, &out.Dz })
+        {
+          axis->resize(size);
+        }
+        out.Ids.resize(size);
+      }
+      std::size_t kept = out.Count;
+      for (std::int64_t j = begin; j < end; ++j)
+      {
+        const double dx = xs[j] - x[0], dy = ys[j] - x[1], dz = zs[j] - x[2];
+        const double squared = dx * dx + dy * dy + dz * dz;
+        out.Dx[kept] = dx;
+        out.Dy[kept] = dy;
+        out.Dz[kept] = dz;
+        out.Ids[kept] = ids[j];
+        kept += (squared >= innerSquared) & (squared < radiusSquared);
+      }
+      out.Count = kept;
+    });
+  return out.Count;
+}
+
 double PointGrid::SquaredDistanceToKth(const double x[3], int k, std::vector<double>& scratch) const
 {
   const std::int64_t wanted = std::min<std::int64_t>(std::max(k, 1), this->GetNumberOfPoints());

@@ -76,6 +76,15 @@ struct NeighborOffsets
   std::size_t Count = 0;
 };
 
+/// Points of a shell about a query point: offsets and ids, in buffers
+/// reused from query to query (Count of them are the shell's).
+struct ShellPoints
+{
+  std::vector<double> Dx, Dy, Dz;
+  std::vector<std::int64_t> Ids;
+  std::size_t Count = 0;
+};
+
 class PointGrid
 {
 public:
@@ -147,6 +156,13 @@ public:
   /// scanner) are searched through finer cells of their own.
   template<typename Visit>
   void ForEachWithinRadiusFine(const double x[3], double radius, Visit&& visit) const;
+  /// The points q with inner <= |q - x| < radius (one shell of a growing
+  /// neighbourhood), in ForEachWithinRadiusFine's order: their offsets
+  /// q - x and ids replace `out`'s; sets and returns out.Count. Branch
+  /// free: a shell's edges cut through its cells too randomly for branch
+  /// prediction.
+  std::size_t GatherShell(const double x[3], double inner, double radius, ShellPoints& out) const;
+
   /// Cells searched through finer cells of their own.
   std::int64_t GetNumberOfDenseCells() const
   {
@@ -154,6 +170,13 @@ public:
   }
 
 private:
+  /// Calls visit(xs, ys, zs, ids, begin, end) for runs [begin, end) of
+  /// points (coordinate arrays, ids) that hold every point within `radius`
+  /// of x, in ForEachWithinRadiusFine's order: rows of cells, a dense
+  /// cell's rows of finer cells in their place.
+  template<typename VisitRun>
+  void ForEachCandidateRun(const double x[3], double radius, VisitRun&& visit) const;
+
   /// The cells a query of `radius` around x visits (low..high per axis),
   /// and the number of points in them.
   std::int64_t QueryCells(const double x[3],
@@ -228,51 +251,35 @@ private:
   std::vector<std::int64_t> FineIds;
 };
 
-template<typename Visit>
-void PointGrid::ForEachWithinRadiusFine(const double x[3], double radius, Visit&& visit) const
+template<typename VisitRun>
+void PointGrid::ForEachCandidateRun(const double x[3], double radius, VisitRun&& visit) const
 {
-  if (this->DenseCells.empty())
-  {
-    this->ForEachWithinRadius(x, radius, visit);
-    return;
-  }
   if (this->Ids.empty() || !(radius > 0.0))
   {
     return;
   }
   std::array<std::int64_t, 3> low, high;
   this->CellRange(x, radius, low, high);
-  const double radiusSquared = radius * radius;
-  auto test =
-    [&](const double* xs, const double* ys, const double* zs, std::int64_t j, std::int64_t id)
-  {
-    const double q[3] = { xs[j], ys[j], zs[j] };
-    const double dx = q[0] - x[0], dy = q[1] - x[1], dz = q[2] - x[2];
-    if (dx * dx + dy * dy + dz * dz < radiusSquared)
-    {
-      visit(q, id);
-    }
-  };
+  const double* xs = this->Sorted[0].data();
+  const double* ys = this->Sorted[1].data();
+  const double* zs = this->Sorted[2].data();
   for (std::int64_t iz = low[2]; iz <= high[2]; ++iz)
   {
     for (std::int64_t iy = low[1]; iy <= high[1]; ++iy)
     {
+      // Cells of one row are contiguous in the sorted order: one run up to
+      // each dense cell, whose fine rows are runs of their own.
       const std::int64_t row = (iz * this->Dimensions[1] + iy) * this->Dimensions[0];
-      for (std::int64_t ix = low[0]; ix <= high[0]; ++ix)
+      std::int64_t begin = this->CellStart[row + low[0]];
+      for (std::int64_t ix = low[0]; ix <= high[0] && !this->DenseCells.empty(); ++ix)
       {
         const std::int32_t d = this->DenseOfCell[row + ix];
         if (d < 0)
         {
-          for (std::int64_t j = this->CellStart[row + ix]; j < this->CellStart[row + ix + 1]; ++j)
-          {
-            test(this->Sorted[0].data(),
-              this->Sorted[1].data(),
-              this->Sorted[2].data(),
-              j,
-              this->Ids[j]);
-          }
           continue;
         }
+        visit(xs, ys, zs, this->Ids.data(), begin, this->CellStart[row + ix]);
+        begin = this->CellStart[row + ix + 1];
         const DenseCell& dense = this->DenseCells[d];
         std::array<std::int64_t, 3> fineLow, fineHigh;
         for (int k = 0; k < 3; ++k)
@@ -286,21 +293,43 @@ void PointGrid::ForEachWithinRadiusFine(const double x[3], double radius, Visit&
           for (std::int64_t fy = fineLow[1]; fy <= fineHigh[1]; ++fy)
           {
             const std::int64_t fineRow = dense.Starts + (fz * split + fy) * split;
-            for (std::int64_t j = this->FineStart[fineRow + fineLow[0]];
-                 j < this->FineStart[fineRow + fineHigh[0] + 1];
-                 ++j)
-            {
-              test(this->Fine[0].data(),
-                this->Fine[1].data(),
-                this->Fine[2].data(),
-                j,
-                this->FineIds[j]);
-            }
+            visit(this->Fine[0].data(),
+              this->Fine[1].data(),
+              this->Fine[2].data(),
+              this->FineIds.data(),
+              this->FineStart[fineRow + fineLow[0]],
+              this->FineStart[fineRow + fineHigh[0] + 1]);
           }
         }
       }
+      visit(xs, ys, zs, this->Ids.data(), begin, this->CellStart[row + high[0] + 1]);
     }
   }
+}
+
+template<typename Visit>
+void PointGrid::ForEachWithinRadiusFine(const double x[3], double radius, Visit&& visit) const
+{
+  const double radiusSquared = radius * radius;
+  this->ForEachCandidateRun(x,
+    radius,
+    [&](const double* xs,
+      const double* ys,
+      const double* zs,
+      const std::int64_t* ids,
+      std::int64_t begin,
+      std::int64_t end)
+    {
+      for (std::int64_t j = begin; j < end; ++j)
+      {
+        const double q[3] = { xs[j], ys[j], zs[j] };
+        const double dx = q[0] - x[0], dy = q[1] - x[1], dz = q[2] - x[2];
+        if (dx * dx + dy * dy + dz * dz < radiusSquared)
+        {
+          visit(q, ids[j]);
+        }
+      }
+    });
 }
 
 } // namespace pcurv

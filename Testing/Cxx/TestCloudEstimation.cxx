@@ -860,7 +860,8 @@ void TestClippedMean(Checks& checks)
 
 /// A grid over a sparse cloud with a patch thousands of times denser: the
 /// fine query finds exactly the points within the radius (as the plain one
-/// and brute force do), and the k-th nearest distances equal brute force.
+/// and brute force do), a shell gathers the same points from an inner radius
+/// on, and the k-th nearest distances equal brute force.
 void TestDenseCells(Checks& checks)
 {
   std::vector<double> xyz;
@@ -882,8 +883,9 @@ void TestDenseCells(Checks& checks)
   const double lower[3] = { 0.0, 0.0, 0.0 }, upper[3] = { 4.0, 4.0, 0.01 };
   PointGrid grid;
   grid.Build(xyz.data(), n, GridLattice::Make(lower, upper, n, 0.2));
-  int wrongSets = 0, wrongKth = 0;
+  int wrongSets = 0, wrongKth = 0, wrongShells = 0;
   std::vector<double> scratch;
+  ShellPoints shell;
   for (int query = 0; query < 300; ++query)
   {
     const double* x = &xyz[3 * ((query * 7919) % n)];
@@ -904,6 +906,30 @@ void TestDenseCells(Checks& checks)
         brute.push_back(i);
       }
     }
+    // A shell: the fine query's points from an inner radius on, in its
+    // order, with their offsets.
+    const double inner = (query % 4) * 0.3 * radius;
+    std::vector<std::int64_t> expectedShell;
+    std::vector<double> expectedOffsets;
+    grid.ForEachWithinRadiusFine(x,
+      radius,
+      [&](const double* q, std::int64_t id)
+      {
+        const double d[3] = { q[0] - x[0], q[1] - x[1], q[2] - x[2] };
+        if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] >= inner * inner)
+        {
+          expectedShell.push_back(id);
+          expectedOffsets.insert(expectedOffsets.end(), d, d + 3);
+        }
+      });
+    grid.GatherShell(x, inner, radius, shell);
+    bool shellRight = shell.Count == expectedShell.size();
+    for (std::size_t i = 0; shellRight && i < shell.Count; ++i)
+    {
+      shellRight = shell.Ids[i] == expectedShell[i] && shell.Dx[i] == expectedOffsets[3 * i] &&
+        shell.Dy[i] == expectedOffsets[3 * i + 1] && shell.Dz[i] == expectedOffsets[3 * i + 2];
+    }
+    wrongShells += !shellRight;
     std::sort(fine.begin(), fine.end());
     std::sort(plain.begin(), plain.end());
     wrongSets += fine != brute || plain != brute;
@@ -916,6 +942,9 @@ void TestDenseCells(Checks& checks)
   checks.True(
     "dense patch: the fine query finds exactly the points within the radius", wrongSets == 0);
   checks.True("dense patch: k-th nearest distances equal brute force", wrongKth == 0);
+  checks.True("dense patch: a shell's points are the fine query's beyond the inner radius, in "
+              "its order",
+    wrongShells == 0);
 }
 
 int main()
