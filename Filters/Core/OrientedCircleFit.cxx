@@ -208,15 +208,14 @@ void OrientedCircleAccumulator::Begin(const TangentFrame& frame)
 
 void OrientedCircleAccumulator::AddPending()
 {
-  oriented::AddNeighbors(this->Frame,
-    this->Pending[0].data(),
+  const oriented::NeighborBatch pending{ this->Pending[0].data(),
     this->Pending[1].data(),
     this->Pending[2].data(),
     this->Pending[3].data(),
     this->Pending[4].data(),
     this->Pending[5].data(),
-    static_cast<std::size_t>(this->PendingCount),
-    this->Banked);
+    static_cast<std::size_t>(this->PendingCount) };
+  oriented::AddNeighbors(this->Frame, pending, this->Banked);
   this->PendingCount = 0;
 }
 

@@ -331,16 +331,11 @@ std::size_t PointGrid::GatherShell(const double x[3],
   const double innerSquared = inner * inner, radiusSquared = radius * radius;
   this->ForEachCandidateRun(x,
     radius,
-    [&](const double* xs,
-      const double* ys,
-      const double* zs,
-      const std::int64_t* ids,
-      std::int64_t begin,
-      std::int64_t end)
+    [&](const CandidateRun& run)
     {
       // Every candidate is written, at the first free place; only those in
       // the shell advance it.
-      const std::size_t needed = out.Count + static_cast<std::size_t>(end - begin);
+      const std::size_t needed = out.Count + static_cast<std::size_t>(run.End - run.Begin);
       if (out.Dx.size() < needed)
       {
         const std::size_t size = std::max(needed, 2 * out.Dx.size());
@@ -351,14 +346,14 @@ std::size_t PointGrid::GatherShell(const double x[3],
         out.Ids.resize(size);
       }
       std::size_t kept = out.Count;
-      for (std::int64_t j = begin; j < end; ++j)
+      for (std::int64_t j = run.Begin; j < run.End; ++j)
       {
-        const double dx = xs[j] - x[0], dy = ys[j] - x[1], dz = zs[j] - x[2];
+        const double dx = run.X[j] - x[0], dy = run.Y[j] - x[1], dz = run.Z[j] - x[2];
         const double squared = dx * dx + dy * dy + dz * dz;
         out.Dx[kept] = dx;
         out.Dy[kept] = dy;
         out.Dz[kept] = dz;
-        out.Ids[kept] = ids[j];
+        out.Ids[kept] = run.Ids[j];
         kept += (squared >= innerSquared) & (squared < radiusSquared);
       }
       out.Count = kept;

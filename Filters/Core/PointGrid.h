@@ -76,6 +76,17 @@ struct NeighborOffsets
   std::size_t Count = 0;
 };
 
+/// A run of candidate points of a query: entries [Begin, End) of the
+/// coordinate arrays X, Y, Z and of the ids.
+struct CandidateRun
+{
+  const double* X;
+  const double* Y;
+  const double* Z;
+  const std::int64_t* Ids;
+  std::int64_t Begin, End;
+};
+
 /// Points of a shell about a query point: offsets and ids, in buffers
 /// reused from query to query (Count of them are the shell's).
 struct ShellPoints
@@ -170,8 +181,8 @@ public:
   }
 
 private:
-  /// Calls visit(xs, ys, zs, ids, begin, end) for runs [begin, end) of
-  /// points (coordinate arrays, ids) that hold every point within `radius`
+  /// Calls visit(const CandidateRun&) for runs of points that hold every
+  /// point within `radius`
   /// of x, in ForEachWithinRadiusFine's order: rows of cells, a dense
   /// cell's rows of finer cells in their place.
   template<typename VisitRun>
@@ -278,7 +289,7 @@ void PointGrid::ForEachCandidateRun(const double x[3], double radius, VisitRun&&
         {
           continue;
         }
-        visit(xs, ys, zs, this->Ids.data(), begin, this->CellStart[row + ix]);
+        visit(CandidateRun{ xs, ys, zs, this->Ids.data(), begin, this->CellStart[row + ix] });
         begin = this->CellStart[row + ix + 1];
         const DenseCell& dense = this->DenseCells[d];
         std::array<std::int64_t, 3> fineLow, fineHigh;
@@ -293,16 +304,17 @@ void PointGrid::ForEachCandidateRun(const double x[3], double radius, VisitRun&&
           for (std::int64_t fy = fineLow[1]; fy <= fineHigh[1]; ++fy)
           {
             const std::int64_t fineRow = dense.Starts + (fz * split + fy) * split;
-            visit(this->Fine[0].data(),
+            visit(CandidateRun{ this->Fine[0].data(),
               this->Fine[1].data(),
               this->Fine[2].data(),
               this->FineIds.data(),
               this->FineStart[fineRow + fineLow[0]],
-              this->FineStart[fineRow + fineHigh[0] + 1]);
+              this->FineStart[fineRow + fineHigh[0] + 1] });
           }
         }
       }
-      visit(xs, ys, zs, this->Ids.data(), begin, this->CellStart[row + high[0] + 1]);
+      visit(
+        CandidateRun{ xs, ys, zs, this->Ids.data(), begin, this->CellStart[row + high[0] + 1] });
     }
   }
 }
@@ -313,20 +325,15 @@ void PointGrid::ForEachWithinRadiusFine(const double x[3], double radius, Visit&
   const double radiusSquared = radius * radius;
   this->ForEachCandidateRun(x,
     radius,
-    [&](const double* xs,
-      const double* ys,
-      const double* zs,
-      const std::int64_t* ids,
-      std::int64_t begin,
-      std::int64_t end)
+    [&](const CandidateRun& run)
     {
-      for (std::int64_t j = begin; j < end; ++j)
+      for (std::int64_t j = run.Begin; j < run.End; ++j)
       {
-        const double q[3] = { xs[j], ys[j], zs[j] };
+        const double q[3] = { run.X[j], run.Y[j], run.Z[j] };
         const double dx = q[0] - x[0], dy = q[1] - x[1], dz = q[2] - x[2];
         if (dx * dx + dy * dy + dz * dz < radiusSquared)
         {
-          visit(q, ids[j]);
+          visit(q, run.Ids[j]);
         }
       }
     });

@@ -36,13 +36,7 @@ using ClassifyKernel =
   void (*)(const Frame&, const double*, const double*, const double*, std::size_t, Block&);
 using CircleKernel = void (*)(const double*, const double*, std::size_t, const double*, double*);
 using OrientedKernel = void (*)(const oriented::Frame&,
-  const double*,
-  const double*,
-  const double*,
-  const double*,
-  const double*,
-  const double*,
-  std::size_t,
+  const oriented::NeighborBatch&,
   oriented::Sums&);
 using GatherKernel = std::size_t (*)(const double*,
   const double*,
@@ -515,34 +509,20 @@ bool DistanceSumsWith(const std::string& kernel,
 
 namespace oriented
 {
-void AddNeighbors(const Frame& frame,
-  const double* dx,
-  const double* dy,
-  const double* dz,
-  const double* nx,
-  const double* ny,
-  const double* nz,
-  std::size_t count,
-  Sums& sums)
+void AddNeighbors(const Frame& frame, const NeighborBatch& neighbors, Sums& sums)
 {
-  Best().Oriented(frame, dx, dy, dz, nx, ny, nz, count, sums);
+  Best().Oriented(frame, neighbors, sums);
 }
 
 bool AddNeighborsWith(const std::string& kernel,
   const Frame& frame,
-  const double* dx,
-  const double* dy,
-  const double* dz,
-  const double* nx,
-  const double* ny,
-  const double* nz,
-  std::size_t count,
+  const NeighborBatch& neighbors,
   Sums& sums)
 {
   const NamedKernel* named = Named(kernel);
   if (named)
   {
-    named->Oriented(frame, dx, dy, dz, nx, ny, nz, count, sums);
+    named->Oriented(frame, neighbors, sums);
   }
   return named != nullptr;
 }

@@ -250,30 +250,28 @@ struct Sums
   std::uint32_t HalfTurnPositions;
 };
 
-/// Adds `count` neighbours to `sums` (zeroed before the first call): their
-/// offsets from the query point in the units of the fit (dx, dy, dz) and
-/// their unit normals (nx, ny, nz; all three 0: none). A neighbour at the
-/// query point is ignored. The rows are those of OrientedCircleFit.h.
-void AddNeighbors(const Frame& frame,
-  const double* dx,
-  const double* dy,
-  const double* dz,
-  const double* nx,
-  const double* ny,
-  const double* nz,
-  std::size_t count,
-  Sums& sums);
+/// Neighbours of a query: their offsets from the query point in the units
+/// of the fit (Dx, Dy, Dz) and their unit normals (Nx, Ny, Nz; all three 0:
+/// none), Count of each.
+struct NeighborBatch
+{
+  const double* Dx;
+  const double* Dy;
+  const double* Dz;
+  const double* Nx;
+  const double* Ny;
+  const double* Nz;
+  std::size_t Count;
+};
+
+/// Adds neighbours to `sums` (zeroed before the first call). A neighbour at
+/// the query point is ignored. The rows are those of OrientedCircleFit.h.
+void AddNeighbors(const Frame& frame, const NeighborBatch& neighbors, Sums& sums);
 
 /// AddNeighbors with a named kernel (for tests); false when not available.
 bool AddNeighborsWith(const std::string& kernel,
   const Frame& frame,
-  const double* dx,
-  const double* dy,
-  const double* dz,
-  const double* nx,
-  const double* ny,
-  const double* nz,
-  std::size_t count,
+  const NeighborBatch& neighbors,
   Sums& sums);
 } // namespace oriented
 

@@ -430,34 +430,24 @@ void TestOrientedSumKernelsAgree(Checks& checks)
         columns[k].push_back(q[k]);
       }
     }
-    oriented::Sums reference{};
     const oriented::Frame f{ { frame.Normal[0], frame.Normal[1], frame.Normal[2] },
       { frame.V0[0], frame.V0[1], frame.V0[2] },
       { frame.W0[0], frame.W0[1], frame.W0[2] } };
-    oriented::AddNeighborsWith("generic",
-      f,
-      columns[0].data(),
+    const oriented::NeighborBatch batch{ columns[0].data(),
       columns[1].data(),
       columns[2].data(),
       columns[3].data(),
       columns[4].data(),
       columns[5].data(),
-      count,
-      reference);
+      count };
+    auto add = [&](const std::string& kernel, oriented::Sums& sums)
+    { return oriented::AddNeighborsWith(kernel, f, batch, sums); };
+    oriented::Sums reference{};
+    add("generic", reference);
     for (const std::string& kernel : AvailableKernels())
     {
       oriented::Sums sums{};
-      checks.True("oriented kernel runs",
-        oriented::AddNeighborsWith(kernel,
-          f,
-          columns[0].data(),
-          columns[1].data(),
-          columns[2].data(),
-          columns[3].data(),
-          columns[4].data(),
-          columns[5].data(),
-          count,
-          sums));
+      checks.True("oriented kernel runs", add(kernel, sums));
       differences += std::memcmp(&sums, &reference, sizeof sums) == 0 ? 0 : 1;
     }
     OrientedCircleAccumulator accumulator;
