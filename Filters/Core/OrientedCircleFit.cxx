@@ -32,27 +32,6 @@ constexpr double DisplacementTiltAllowance = 8.0;
 /// data would otherwise get an infinite weight.
 constexpr double VarianceFloor = 1e-24;
 
-/// Adds weight * row row^T to an upper triangle, weight * target * row to
-/// a right-hand side.
-template<int N>
-void AddRow(const double* row,
-  double target,
-  double weight,
-  std::array<double, N*(N + 1) / 2>& matrix,
-  std::array<double, N>& right)
-{
-  int k = 0;
-  for (int a = 0; a < N; ++a)
-  {
-    const double wa = weight * row[a];
-    right[a] += wa * target;
-    for (int b = a; b < N; ++b)
-    {
-      matrix[k++] += wa * row[b];
-    }
-  }
-}
-
 template<int N>
 Matrix<N> Full(const std::array<double, N*(N + 1) / 2>& upper)
 {

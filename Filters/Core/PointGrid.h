@@ -182,9 +182,8 @@ public:
 
 private:
   /// Calls visit(const CandidateRun&) for runs of points that hold every
-  /// point within `radius`
-  /// of x, in ForEachWithinRadiusFine's order: rows of cells, a dense
-  /// cell's rows of finer cells in their place.
+  /// point within `radius` of x, in ForEachWithinRadiusFine's order: rows
+  /// of cells, a dense cell's rows of finer cells in their place.
   template<typename VisitRun>
   void ForEachCandidateRun(const double x[3], double radius, VisitRun&& visit) const;
 
