@@ -105,6 +105,10 @@ struct CurvatureArrays
     // With the fits that give one: the standard error of the curvatures.
     b.StandardError =
       standardError ? this->Add<vtkDoubleArray>("Curvature_Standard_Error", 1, n, true) : nullptr;
+    // With the same fits: 1 where the curvatures are within their stated
+    // error of the cloud's scale (not a diagnostic: what a user filters by).
+    b.Trusted =
+      standardError ? this->Add<vtkUnsignedCharArray>("Curvature_Trusted", 1, n) : nullptr;
     // With the same fits: the normal their directions are tangent to.
     b.FittedNormal = standardError ? this->Add<vtkDoubleArray>("Fitted_Normal", 3, n) : nullptr;
   }
@@ -340,6 +344,14 @@ int vtkPrincipalCurvatureEstimation::RequestData(vtkInformation*,
   pcurv::CopyGeometry(input, output);
   arrays.AddTo(output->GetPointData(), this->SinglePrecisionOutput, this->DiagnosticArrays);
   ReportUnestimated(this, summary, processes, output);
+  if (arrays.Buffers.Trusted)
+  {
+    // What Curvature_Trusted compared the standard errors with.
+    vtkNew<vtkDoubleArray> scale;
+    scale->SetName("Trusted_Curvature_Scale");
+    scale->InsertNextValue(summary.TrustedCurvatureScale);
+    output->GetFieldData()->AddArray(scale);
+  }
   if (estimatedNormals)
   {
     output->GetPointData()->SetNormals(this->SinglePrecisionOutput

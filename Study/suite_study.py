@@ -116,8 +116,31 @@ def measure(shape, data, evaluation, output, exact_normals):
         n = vtk_to_numpy(normals)[evaluation]
         dots = numpy.abs(numpy.sum(n * exact[:, 3:6], axis=1))
         normal_angle = float(numpy.median(numpy.degrees(numpy.arccos(numpy.clip(dots, 0.0, 1.0)))))
-    return {"error": max(error_min, error_max) / largest, "angle": angle,
-            "unestimated": float(numpy.mean(~valid)), "normal_angle": normal_angle}
+    result = {"error": max(error_min, error_max) / largest, "angle": angle,
+              "unestimated": float(numpy.mean(~valid)), "normal_angle": normal_angle}
+    result.update(trust(pd, evaluation, exact, valid, kmin, kmax, largest))
+    return result
+
+
+def trust(pd, evaluation, exact, valid, kmin, kmax, largest):
+    """How well Curvature_Standard_Error covers the error max(|dk_min|, |dk_max|)
+    of the valid points: the share within 2 standard errors and the median
+    error / standard error; valid and trusted (Curvature_Trusted) points off
+    by more than a fifth of the shape's largest |k|, and the share trusted."""
+    standard_error = pd.GetArray("Curvature_Standard_Error")
+    if standard_error is None or not valid.any():
+        return {}
+    se = vtk_to_numpy(standard_error)[evaluation][valid]
+    error = numpy.maximum(numpy.abs(kmin - exact[:, 6]), numpy.abs(kmax - exact[:, 7]))[valid]
+    far = error > 0.2 * largest
+    trusted_array = pd.GetArray("Curvature_Trusted")
+    trusted = (vtk_to_numpy(trusted_array)[evaluation][valid] > 0) if trusted_array is not None \
+        else numpy.ones_like(far)
+    with numpy.errstate(divide="ignore", invalid="ignore"):
+        ratio = float(numpy.median(error / se))
+    return {"within_2se": float(numpy.mean(error <= 2.0 * se)), "error_over_se": ratio,
+            "far_valid": int(far.sum()), "far_trusted": int((far & trusted).sum()),
+            "trusted": float(numpy.mean(trusted))}
 
 
 def peers_best(path):
@@ -182,6 +205,18 @@ def main(argv):
             writer = csv.DictWriter(handle, fieldnames=list(rows[0].keys()))
             writer.writeheader()
             writer.writerows(rows)
+
+    if any("within_2se" in row for row in rows):
+        print("\nCoverage of Curvature_Standard_Error, per cloud (valid points at the evaluation points):\n")
+        print("| shape | points | noise | normals | setting | error | within 2 SE | median error / SE "
+              "| valid off > 20 % | trusted | trusted off > 20 % |")
+        print("|---|---|---|---|---|---|---|---|---|---|---|")
+        for row in rows:
+            if "within_2se" in row:
+                print("| %s | %d | %g h | %s | %s | %.5f | %.1f %% | %.2f | %d | %.1f %% | %d |" % (
+                    row["shape"], row["N"], row["noise"], row["normals"], row["setting"], row["error"],
+                    100 * row["within_2se"], row["error_over_se"], row["far_valid"], 100 * row["trusted"],
+                    row["far_trusted"]))
 
     print("\nMedians over the shapes (relative error; median angle of the maximum direction, degrees):\n")
     groups = defaultdict(list)

@@ -11,6 +11,9 @@ namespace pcurv
 namespace
 {
 constexpr double NaN = std::numeric_limits<double>::quiet_NaN();
+/// A curvature is trusted when twice its reported standard error is within
+/// this share of the cloud's curvature scale (WriteTrusted).
+constexpr double TrustedErrorShare = 0.2;
 
 /// The filter's working length unit (lengths multiplied by Scale, a power
 /// of two) and the way back to the input's: the only place lengths and
@@ -651,8 +654,12 @@ private:
       });
     const OrientedCircleResult result = estimator.Estimate(
       this->Settings.MinimumPointsPerDirection, this->Settings.MaximumOpposingFraction);
-    this->Out.Store(
-      this->Cloud.InputIds[point], result.Curvature, s, p, target, result.StandardError);
+    this->Out.Store(this->Cloud.InputIds[point],
+      result.Curvature,
+      s,
+      p,
+      target,
+      ReportedStandardError(result, nullptr, this->Rule.Automatic.Precision));
   }
 
   /// NeighborhoodMode::Automatic (OrientedCircles): the neighbourhood grows
@@ -738,8 +745,16 @@ private:
     {
       chosen.Curvature.Reason = reason;
     }
-    this->Out.Store(
-      this->Cloud.InputIds[point], chosen.Curvature, chosenRadius, 0.0, 0, chosen.StandardError);
+    // The radius before the chosen one tells how much the growth moved
+    // the estimate: the bias it may have added.
+    const OrientedCircleResult* previous =
+      accepted.size() >= 2 ? &accepted[accepted.size() - 2] : nullptr;
+    this->Out.Store(this->Cloud.InputIds[point],
+      chosen.Curvature,
+      chosenRadius,
+      0.0,
+      0,
+      ReportedStandardError(chosen, previous, rule.Precision));
   }
 
   /// Lepski's test: the principal curvatures agree with each smaller
@@ -770,6 +785,36 @@ private:
   const ResultWriter& Out;
   StageProgress& Progress;
 };
+
+/// CurvatureBuffers::Trusted from the reported standard errors, in the
+/// input's unit; returns the cloud's curvature scale it used. Collective:
+/// every process calls it when any has the buffer.
+double WriteTrusted(const CurvatureBuffers& out,
+  std::int64_t numberOfPoints,
+  const Collectives& processes)
+{
+  std::vector<double> largest(static_cast<std::size_t>(numberOfPoints), NaN);
+  std::vector<double> radii(static_cast<std::size_t>(numberOfPoints), NaN);
+  for (std::int64_t i = 0; i < numberOfPoints; ++i)
+  {
+    if (out.Valid[i])
+    {
+      largest[i] = std::max(std::fabs(out.Minimum[i]), std::fabs(out.Maximum[i]));
+      radii[i] = out.Surroundings[i];
+    }
+  }
+  // The curvatures that matter in this cloud: its large ones, or, where it
+  // is (nearly) flat, the bending its typical neighbourhood could resolve.
+  const double typicalRadius = MagnitudeQuantile(radii.data(), numberOfPoints, 0.5, processes);
+  const double scale = std::max(MagnitudeQuantile(largest.data(), numberOfPoints, 0.95, processes),
+    typicalRadius > 0.0 ? 1.0 / typicalRadius : 0.0);
+  for (std::int64_t i = 0; i < numberOfPoints; ++i)
+  {
+    const double error = out.StandardError ? out.StandardError[i] : NaN;
+    out.Trusted[i] = out.Valid[i] && 2.0 * error <= TrustedErrorShare * scale ? 1 : 0;
+  }
+  return scale;
+}
 
 /// The used thresholds of the summary, in the input's unit.
 void SummarizeThresholds(const NeighborhoodRule& rule,
@@ -1028,6 +1073,12 @@ EstimationSummary EstimateCloud(CloudPoints cloud,
   if (out.ClippedMean)
   {
     writer.WriteClippedMean(numberOfPoints, summary.MeanCurvatureClip);
+  }
+  const bool trusted = processes.IsDistributed() ? processes.Max(out.Trusted ? 1.0 : 0.0) > 0.0
+                                                 : out.Trusted != nullptr;
+  if (trusted)
+  {
+    summary.TrustedCurvatureScale = WriteTrusted(out, numberOfPoints, processes);
   }
   return summary;
 }

@@ -118,8 +118,14 @@ struct CurvatureBuffers
   /// outliers, and is centred on 0 (flat).
   double* ClippedMean = nullptr;
   /// With FitMode::OrientedCircles only (may be null): the standard error
-  /// of the curvatures, 1/length.
+  /// of the curvatures, 1/length: it covers the fit's variance, the bias
+  /// of the chosen neighbourhood and the normals' errors, calibrated so
+  /// that most errors are within twice it (docs/output-arrays.md).
   double* StandardError = nullptr;
+  /// With FitMode::OrientedCircles only (may be null): 1 where the point is
+  /// estimated and twice its standard error is within a fifth of the
+  /// cloud's curvature scale (EstimationSummary::TrustedCurvatureScale).
+  unsigned char* Trusted = nullptr;
   /// With FitMode::OrientedCircles only (may be null): the fitted
   /// surface's unit normal, 3 per point, to which the directions are
   /// tangent (zero where not estimated).
@@ -150,6 +156,11 @@ struct EstimationSummary
   /// The c of CurvatureBuffers::ClippedMean (0 when nothing is estimated,
   /// or without that buffer).
   double MeanCurvatureClip = 0.0;
+  /// What CurvatureBuffers::Trusted compares the standard errors with
+  /// (1/length): the larger of the 95th percentile of max(|k_min|, |k_max|)
+  /// and one over the median neighbourhood radius, over the estimated
+  /// points of every process (0 without that buffer).
+  double TrustedCurvatureScale = 0.0;
   /// Points that repeat another exactly (coordinates and normal): estimated
   /// once, every copy given the same results, counted once as a neighbour.
   std::int64_t NumberOfRepeatedPoints = 0;

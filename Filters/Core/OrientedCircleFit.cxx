@@ -64,21 +64,36 @@ struct Solution
   Matrix<N> Inverse = Matrix<N>::Zero();
 };
 
+/// Solves the normal equations, scaled to a unit diagonal first: the
+/// unknowns differ in scale by orders of magnitude (curvatures, cubic
+/// coefficients, the height), and so do the two kinds of rows once weighted
+/// (exact normals fit with no residual, and their weight dwarfs the
+/// positions'). A singularity test against the largest diagonal entry
+/// would then reject a well-posed system (the height, seen by the positions
+/// only, looks negligible beside the normals' unknowns), and the fit would
+/// fall back to the positions alone; on the unit diagonal the test asks
+/// only whether some unknowns are determined by the others.
 template<int N>
 Solution<N> Solve(const Matrix<N>& normal, const Vector<N>& right, bool withInverse)
 {
   Solution<N> solution;
-  const double largest = normal.diagonal().maxCoeff();
-  Eigen::LDLT<Matrix<N>> ldlt(normal);
-  if (ldlt.info() != Eigen::Success || !(largest > 0.0) ||
-    !(ldlt.vectorD().cwiseAbs().minCoeff() > 1e-12 * largest))
+  const Vector<N> diagonal = normal.diagonal();
+  if (!(diagonal.minCoeff() > 0.0) || !diagonal.allFinite())
   {
     return solution;
   }
-  solution.X = ldlt.solve(right);
+  const Vector<N> unscale = diagonal.cwiseSqrt().cwiseInverse();
+  const Matrix<N> scaled = unscale.asDiagonal() * normal * unscale.asDiagonal();
+  Eigen::LDLT<Matrix<N>> ldlt(scaled);
+  if (ldlt.info() != Eigen::Success || !(ldlt.vectorD().cwiseAbs().minCoeff() > 1e-12))
+  {
+    return solution;
+  }
+  solution.X = unscale.cwiseProduct(ldlt.solve(unscale.cwiseProduct(right)));
   if (withInverse)
   {
-    solution.Inverse = ldlt.solve(Matrix<N>::Identity());
+    solution.Inverse =
+      unscale.asDiagonal() * ldlt.solve(Matrix<N>::Identity()) * unscale.asDiagonal();
   }
   solution.Valid = solution.X.allFinite() && solution.Inverse.allFinite();
   return solution;
@@ -160,6 +175,24 @@ TangentFrame FittedFrame(const TangentFrame& frame,
     turned.W0[i] = w[i];
   }
   return turned;
+}
+
+/// How much the reported standard error exceeds the root sum of squares of
+/// its parts: calibrated on the shared accuracy suite (the parts are
+/// estimates of errors, not their spread, and the positions' residual
+/// variance has few degrees of freedom at small radii).
+constexpr double ReportedErrorFactor = 1.5;
+
+/// The standard error of the principal curvatures C +- hypot(A, B) from
+/// the covariance of the unknowns (C, A, B first), to first order.
+double CurvatureStandardError(const PositionMatrix& covariance, double c, double s)
+{
+  const double amplitude = std::hypot(c, s);
+  const double amplitudeVariance = amplitude > 0.0
+    ? (c * c * covariance(1, 1) + 2.0 * c * s * covariance(1, 2) + s * s * covariance(2, 2)) /
+      (amplitude * amplitude)
+    : std::max(covariance(1, 1), covariance(2, 2));
+  return std::sqrt(std::max(0.0, covariance(0, 0)) + std::max(0.0, amplitudeVariance));
 }
 
 int PopCount(std::uint32_t bits)
@@ -317,13 +350,14 @@ OrientedCircleResult FitOrientedCircles(const OrientedCircleSums& sums,
   const PositionMatrix covariance = positions.Inverse * positionVariance;
   const double c = combined.X[1], s = combined.X[2];
   const double amplitude = std::hypot(c, s);
-  const double amplitudeVariance = amplitude > 0.0
-    ? (c * c * covariance(1, 1) + 2.0 * c * s * covariance(1, 2) + s * s * covariance(2, 2)) /
-      (amplitude * amplitude)
-    : std::max(covariance(1, 1), covariance(2, 2));
-  result.StandardError =
-    std::sqrt(std::max(0.0, covariance(0, 0)) + std::max(0.0, amplitudeVariance)) * inverseScale;
+  result.StandardError = CurvatureStandardError(covariance, c, s) * inverseScale;
+  result.PositionsDiscrepancy =
+    (std::fabs(combined.X[0] - positions.X[0]) +
+      std::fabs(amplitude - std::hypot(positions.X[1], positions.X[2]))) *
+    inverseScale;
 
+  result.TiltBias = (combined.X[3] * combined.X[3] + combined.X[4] * combined.X[4]) *
+    (std::fabs(combined.X[0]) + amplitude) * inverseScale;
   SineFit sine;
   sine.Valid = true;
   sine.Offset = combined.X[0] * inverseScale;
@@ -347,6 +381,28 @@ OrientedCircleResult FitOrientedCircles(const OrientedCircleSums& sums,
     result.StandardError = std::numeric_limits<double>::quiet_NaN();
   }
   return result;
+}
+
+double ReportedStandardError(const OrientedCircleResult& chosen,
+  const OrientedCircleResult* previous,
+  double precision)
+{
+  const PointCurvature& k = chosen.Curvature;
+  const double grown = previous
+    ? std::max(std::fabs(k.MinimumCurvature - previous->Curvature.MinimumCurvature),
+        std::fabs(k.MaximumCurvature - previous->Curvature.MaximumCurvature))
+    : 0.0;
+  const double floor =
+    precision * std::max(std::fabs(k.MinimumCurvature), std::fabs(k.MaximumCurvature));
+  const double parts[] = {
+    chosen.StandardError, chosen.PositionsDiscrepancy, chosen.TiltBias, grown, floor
+  };
+  double sum = 0.0;
+  for (const double part : parts)
+  {
+    sum += part * part;
+  }
+  return ReportedErrorFactor * std::sqrt(sum);
 }
 
 void OrientedCircleEstimator::Begin(const Vector3& unitNormal, double scale)

@@ -125,16 +125,33 @@ private:
 };
 
 /// What the fit of some sums gives: the curvatures (output sign, in
-/// 1/length after `inverseScale`), and their standard error (1/length): the
-/// positions-only fit's (the neighbours' estimated normals share their
-/// neighbourhoods, so their errors are correlated and a combined
-/// covariance would understate the error; the combined fit is at least as
-/// good as the positions alone).
+/// 1/length after `inverseScale`), the positions-only fit's standard error
+/// of them (the automatic scale compares radii by it: the positions' rows
+/// are independent, the neighbours' estimated normals are not), and two
+/// errors that no covariance shows, both in 1/length: how far the
+/// positions-only fit's curvatures lie from the combined ones
+/// (|d offset| + |d amplitude| of the sine), and the second-order error of
+/// fitting in a frame tilted by the query normal's error (the fitted
+/// tilt's square times the largest |curvature|), which the first-order tilt
+/// unknowns leave.
 struct OrientedCircleResult
 {
   PointCurvature Curvature;
   double StandardError = 0.0;
+  double PositionsDiscrepancy = 0.0;
+  double TiltBias = 0.0;
 };
+
+/// The standard error reported for `chosen`, 1/length: it covers what the
+/// positions' covariance leaves out (OrientedCircleResult) and, where the
+/// neighbourhood grew (the automatic scale), the bias the chosen radius
+/// adds over the radius before it (`previous`, or null). `precision`: the
+/// relative precision below which the automatic scale stops growing (a
+/// smaller error is not claimed). The sum is scaled by a factor calibrated
+/// on the shared accuracy suite (docs/output-arrays.md gives its coverage).
+double ReportedStandardError(const OrientedCircleResult& chosen,
+  const OrientedCircleResult* previous,
+  double precision);
 
 /// Fits the sums; invalid with fewer than `minimumNeighbors` (at least 12)
 /// neighbours, angles within a closed half-turn of 2 phi, or a
