@@ -328,11 +328,18 @@ File::~File()
 //------------------------------------------------------------------------------
 std::string File::Open(const char* fileName)
 {
-  this->Handle = std::fopen(fileName, "rb");
-  if (!this->Handle)
+  std::FILE* stream = std::fopen(fileName, "rb");
+  if (!stream)
   {
     return std::string("cannot open the file: ") + std::strerror(errno);
   }
+  return this->Open(stream);
+}
+
+//------------------------------------------------------------------------------
+std::string File::Open(std::FILE* stream)
+{
+  this->Handle = stream;
   if (std::fseek(this->Handle, 0, SEEK_END) != 0)
   {
     return std::string("cannot read the file: ") + std::strerror(errno);

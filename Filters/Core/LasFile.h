@@ -97,6 +97,9 @@ public:
 
   /// Opens and checks the file; an empty string, or what is wrong.
   std::string Open(const char* fileName);
+  /// The same on an open stream (which this then closes; for example
+  /// fmemopen's, as the fuzz target does).
+  std::string Open(std::FILE* stream);
   const Header& GetHeader() const { return this->TheHeader; }
   /// Reads points [begin, end) into out (index 0 is point begin), in chunks
   /// of a fixed size; an empty string, or what went wrong.

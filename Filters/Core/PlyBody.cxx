@@ -85,7 +85,7 @@ void Store(const Column& column, std::size_t row, int component, double value)
 Body::Body(std::FILE* file, Format format)
   : Handle(file)
   , BodyFormat(format)
-  , Buffer(1 << 20)
+  , Buffer(1 << 16)
 {
 }
 

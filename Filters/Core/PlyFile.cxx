@@ -372,23 +372,38 @@ File::~File()
 //------------------------------------------------------------------------------
 std::string File::Open(const char* fileName)
 {
-  this->Handle = std::fopen(fileName, "rb");
-  if (!this->Handle)
+  std::FILE* stream = std::fopen(fileName, "rb");
+  if (!stream)
   {
     return std::string("cannot open the file: ") + std::strerror(errno);
   }
+  return this->Open(stream);
+}
+
+//------------------------------------------------------------------------------
+std::string File::Open(std::FILE* stream)
+{
+  this->Handle = stream;
+  long size = -1;
+  if (std::fseek(this->Handle, 0, SEEK_END) == 0)
+  {
+    size = std::ftell(this->Handle);
+  }
+  if (size < 0 || std::fseek(this->Handle, 0, SEEK_SET) != 0)
+  {
+    return std::string("cannot read the file: ") + std::strerror(errno);
+  }
   // The header is text before the body; a megabyte holds any real one.
-  std::vector<char> start(1 << 20);
+  std::vector<char> start(std::min<std::size_t>(static_cast<std::size_t>(size), 1 << 20));
   start.resize(std::fread(start.data(), 1, start.size(), this->Handle));
   std::string error = ParseHeader(start.data(), start.size(), this->TheHeader);
   if (error.empty())
   {
     error = FindVertexElement(this->TheHeader, this->Vertex);
   }
-  if (error.empty() && std::fseek(this->Handle, 0, SEEK_END) == 0)
+  if (error.empty())
   {
-    const long size = std::ftell(this->Handle);
-    error = CheckBodySize(this->TheHeader, this->Vertex, size < 0 ? 0 : size);
+    error = CheckBodySize(this->TheHeader, this->Vertex, static_cast<std::uint64_t>(size));
   }
   if (error.empty())
   {

@@ -115,6 +115,9 @@ public:
   /// Opens the file and checks its header and vertex element; an empty
   /// string, or what is wrong.
   std::string Open(const char* fileName);
+  /// The same on an open stream (which this then closes; for example
+  /// fmemopen's, as the fuzz target does).
+  std::string Open(std::FILE* stream);
   const Header& GetHeader() const { return this->TheHeader; }
   const Element& Vertices() const { return this->TheHeader.Elements[this->Vertex]; }
   VertexLayout& Layout() { return this->TheLayout; }
