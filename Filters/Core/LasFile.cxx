@@ -64,6 +64,117 @@ std::string Printable(const unsigned char* p, std::size_t n)
   return text;
 }
 
+std::string CheckSignature(const unsigned char* data,
+  std::size_t size,
+  std::uint64_t fileSize,
+  Header&)
+{
+  if (size < 4 || std::memcmp(data, "LASF", 4) != 0)
+  {
+    return "not a LAS file: it starts with '" + Printable(data, size < 4 ? size : 4) +
+      "', not the signature 'LASF'";
+  }
+  if (size < 227)
+  {
+    return "truncated: the file has " + std::to_string(fileSize) +
+      " bytes, less than a LAS header (227)";
+  }
+  return std::string();
+}
+
+/// The version, and a header as large as the version's.
+std::string CheckVersion(const unsigned char* data,
+  std::size_t size,
+  std::uint64_t fileSize,
+  Header& header)
+{
+  header.VersionMajor = data[24];
+  header.VersionMinor = data[25];
+  if (header.VersionMajor != 1 || header.VersionMinor > 4)
+  {
+    return "unknown LAS version " + std::to_string(header.VersionMajor) + "." +
+      std::to_string(header.VersionMinor) + " (this reader knows 1.0 to 1.4)";
+  }
+  const std::string version = "LAS 1." + std::to_string(header.VersionMinor);
+  header.HeaderSize = U16(data + 94);
+  const std::uint32_t required = RequiredHeaderSize(header.VersionMinor);
+  if (header.HeaderSize < required)
+  {
+    return "the header size is " + std::to_string(header.HeaderSize) + " bytes, " + version +
+      " needs " + std::to_string(required);
+  }
+  if (size < header.HeaderSize)
+  {
+    return "truncated: the file has " + std::to_string(fileSize) + " bytes, less than its " +
+      version + " header (" + std::to_string(header.HeaderSize) + ")";
+  }
+  return std::string();
+}
+
+/// The point format (LAZ's compression bits first) and the record length.
+std::string CheckRecords(const unsigned char* data, std::size_t, std::uint64_t, Header& header)
+{
+  const int format = data[104];
+  header.RecordLength = U16(data + 105);
+  if (format & 0xC0)
+  {
+    return "the file is LAZ-compressed (point data format " + std::to_string(format & 0x3F) +
+      " with the compression bit set), which this reader does not read; decompress it first, "
+      "e.g. 'laszip -i in.laz -o out.las' or 'pdal translate in.laz out.las'";
+  }
+  header.PointFormat = format;
+  const RecordLayout layout = LayoutOf(format);
+  if (layout.MinimumLength == 0)
+  {
+    return "unknown point data format " + std::to_string(format) + " (this reader knows 0 to 10)";
+  }
+  if (header.RecordLength < layout.MinimumLength)
+  {
+    return "the point data record length is " + std::to_string(header.RecordLength) +
+      " bytes, smaller than point data format " + std::to_string(format) + " needs (" +
+      std::to_string(layout.MinimumLength) + ")";
+  }
+  return std::string();
+}
+
+std::string CheckOffsets(const unsigned char* data,
+  std::size_t,
+  std::uint64_t fileSize,
+  Header& header)
+{
+  header.OffsetToPointData = U32(data + 96);
+  if (header.OffsetToPointData < header.HeaderSize)
+  {
+    return "the offset to point data (" + std::to_string(header.OffsetToPointData) +
+      ") is inside the header (" + std::to_string(header.HeaderSize) + " bytes)";
+  }
+  if (header.OffsetToPointData > fileSize)
+  {
+    return "the offset to point data (" + std::to_string(header.OffsetToPointData) +
+      ") is beyond the end of the file (" + std::to_string(fileSize) + " bytes)";
+  }
+  return std::string();
+}
+
+std::string CheckScales(const unsigned char* data, std::size_t, std::uint64_t, Header& header)
+{
+  for (int c = 0; c < 3; ++c)
+  {
+    header.Scale[c] = F64(data + 131 + 8 * c);
+    header.Offset[c] = F64(data + 155 + 8 * c);
+    if (!std::isfinite(header.Scale[c]) || header.Scale[c] == 0 || !std::isfinite(header.Offset[c]))
+    {
+      std::ostringstream text;
+      text.precision(17);
+      text << "the "
+           << "xyz"[c] << " scale (" << header.Scale[c] << ") or offset (" << header.Offset[c]
+           << ") is not a finite number, or the scale is 0";
+      return text.str();
+    }
+  }
+  return std::string();
+}
+
 /// The point count: the legacy 32-bit one, or LAS 1.4's 64-bit one when the
 /// legacy one is 0 (as 1.4 writers do for more than 2^32 - 1 points).
 std::string PointCountOf(const unsigned char* data, Header& header)
@@ -237,79 +348,13 @@ std::string ParseHeader(const unsigned char* data,
   std::uint64_t fileSize,
   Header& header)
 {
-  if (size < 4 || std::memcmp(data, "LASF", 4) != 0)
+  // Each check reads only fields the earlier ones have shown to be there.
+  for (auto check : { CheckSignature, CheckVersion, CheckRecords, CheckOffsets, CheckScales })
   {
-    return "not a LAS file: it starts with '" + Printable(data, size < 4 ? size : 4) +
-      "', not the signature 'LASF'";
-  }
-  if (size < 227)
-  {
-    return "truncated: the file has " + std::to_string(fileSize) +
-      " bytes, less than a LAS header (227)";
-  }
-  header.VersionMajor = data[24];
-  header.VersionMinor = data[25];
-  if (header.VersionMajor != 1 || header.VersionMinor > 4)
-  {
-    return "unknown LAS version " + std::to_string(header.VersionMajor) + "." +
-      std::to_string(header.VersionMinor) + " (this reader knows 1.0 to 1.4)";
-  }
-  const std::string version = "LAS 1." + std::to_string(header.VersionMinor);
-  header.HeaderSize = U16(data + 94);
-  const std::uint32_t required = RequiredHeaderSize(header.VersionMinor);
-  if (header.HeaderSize < required)
-  {
-    return "the header size is " + std::to_string(header.HeaderSize) + " bytes, " + version +
-      " needs " + std::to_string(required);
-  }
-  if (size < header.HeaderSize)
-  {
-    return "truncated: the file has " + std::to_string(fileSize) + " bytes, less than its " +
-      version + " header (" + std::to_string(header.HeaderSize) + ")";
-  }
-  header.OffsetToPointData = U32(data + 96);
-  const int format = data[104];
-  header.RecordLength = U16(data + 105);
-  if (format & 0xC0)
-  {
-    return "the file is LAZ-compressed (point data format " + std::to_string(format & 0x3F) +
-      " with the compression bit set), which this reader does not read; decompress it first, "
-      "e.g. 'laszip -i in.laz -o out.las' or 'pdal translate in.laz out.las'";
-  }
-  header.PointFormat = format;
-  const RecordLayout layout = LayoutOf(format);
-  if (layout.MinimumLength == 0)
-  {
-    return "unknown point data format " + std::to_string(format) + " (this reader knows 0 to 10)";
-  }
-  if (header.RecordLength < layout.MinimumLength)
-  {
-    return "the point data record length is " + std::to_string(header.RecordLength) +
-      " bytes, smaller than point data format " + std::to_string(format) + " needs (" +
-      std::to_string(layout.MinimumLength) + ")";
-  }
-  if (header.OffsetToPointData < header.HeaderSize)
-  {
-    return "the offset to point data (" + std::to_string(header.OffsetToPointData) +
-      ") is inside the header (" + std::to_string(header.HeaderSize) + " bytes)";
-  }
-  if (header.OffsetToPointData > fileSize)
-  {
-    return "the offset to point data (" + std::to_string(header.OffsetToPointData) +
-      ") is beyond the end of the file (" + std::to_string(fileSize) + " bytes)";
-  }
-  for (int c = 0; c < 3; ++c)
-  {
-    header.Scale[c] = F64(data + 131 + 8 * c);
-    header.Offset[c] = F64(data + 155 + 8 * c);
-    if (!std::isfinite(header.Scale[c]) || header.Scale[c] == 0 || !std::isfinite(header.Offset[c]))
+    const std::string error = check(data, size, fileSize, header);
+    if (!error.empty())
     {
-      std::ostringstream text;
-      text.precision(17);
-      text << "the "
-           << "xyz"[c] << " scale (" << header.Scale[c] << ") or offset (" << header.Offset[c]
-           << ") is not a finite number, or the scale is 0";
-      return text.str();
+      return error;
     }
   }
   std::string error = PointCountOf(data, header);

@@ -48,6 +48,50 @@ bool InRange(Type type, double value)
   return value >= range[0] && value <= range[1] && value == std::floor(value);
 }
 
+/// The value of type at p, in the file's byte order.
+double DecodeBinary(const char* p, Type type, bool swap)
+{
+  switch (type)
+  {
+    case Type::Int8:
+      return static_cast<std::int8_t>(*p);
+    case Type::UInt8:
+      return static_cast<std::uint8_t>(*p);
+    case Type::Int16:
+      return Decode<std::int16_t>(p, swap);
+    case Type::UInt16:
+      return Decode<std::uint16_t>(p, swap);
+    case Type::Int32:
+      return Decode<std::int32_t>(p, swap);
+    case Type::UInt32:
+      return Decode<std::uint32_t>(p, swap);
+    case Type::Float32:
+      return Decode<float>(p, swap);
+    case Type::Float64:
+      break;
+  }
+  return Decode<double>(p, swap);
+}
+
+/// The ascii word as a value of type; false if it is not one.
+bool ParseWord(const char* word, std::size_t length, Type type, double& value)
+{
+  std::from_chars_result result;
+  if (type == Type::Float32)
+  {
+    float single = 0; // parsed as float: the nearest float, as the writer meant
+    result = std::from_chars(word, word + length, single);
+    value = single;
+  }
+  else
+  {
+    result = std::from_chars(word, word + length, value);
+  }
+  const bool integer = type != Type::Float32 && type != Type::Float64;
+  return result.ptr == word + length && result.ec == std::errc() &&
+    (!integer || InRange(type, value));
+}
+
 template<typename T>
 void Put(void* data, std::size_t at, double value)
 {
@@ -117,36 +161,9 @@ bool Body::NextBinary(Type type, double& value)
   {
     return false;
   }
-  const char* p = this->Buffer.data() + this->Position;
+  value = DecodeBinary(
+    this->Buffer.data() + this->Position, type, this->BodyFormat == Format::BinaryBigEndian);
   this->Position += size;
-  const bool swap = this->BodyFormat == Format::BinaryBigEndian;
-  switch (type)
-  {
-    case Type::Int8:
-      value = static_cast<std::int8_t>(*p);
-      break;
-    case Type::UInt8:
-      value = static_cast<std::uint8_t>(*p);
-      break;
-    case Type::Int16:
-      value = Decode<std::int16_t>(p, swap);
-      break;
-    case Type::UInt16:
-      value = Decode<std::uint16_t>(p, swap);
-      break;
-    case Type::Int32:
-      value = Decode<std::int32_t>(p, swap);
-      break;
-    case Type::UInt32:
-      value = Decode<std::uint32_t>(p, swap);
-      break;
-    case Type::Float32:
-      value = Decode<float>(p, swap);
-      break;
-    case Type::Float64:
-      value = Decode<double>(p, swap);
-      break;
-  }
   return true;
 }
 
@@ -181,22 +198,10 @@ bool Body::NextText(Type type, double& value)
   }
   const char* word = this->Buffer.data() + this->Position;
   this->Position += length;
-  std::from_chars_result result;
-  if (type == Type::Float32)
-  {
-    float single = 0; // parsed as float: the nearest float, as a writer meant
-    result = std::from_chars(word, word + length, single);
-    value = single;
-  }
-  else
-  {
-    result = std::from_chars(word, word + length, value);
-  }
-  const bool integer = type != Type::Float32 && type != Type::Float64;
-  if (result.ptr != word + length || result.ec != std::errc() || (integer && !InRange(type, value)))
+  if (!ParseWord(word, length, type, value))
   {
     this->Problem = "'" + std::string(word, std::min<std::size_t>(length, 40)) + "' is not a" +
-      (type == Type::Int8 || type == Type::Int32 ? "n " : " ") + NameOf(type) + " value";
+      (type == Type::Int32 ? "n " : " ") + NameOf(type) + " value";
     return false;
   }
   return true;
