@@ -6,6 +6,7 @@
 #include "vtkInformation.h"
 #include "vtkNew.h"
 #include "vtkPolyData.h"
+#include "vtkTypeInt32Array.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 
 namespace pcurv
@@ -28,24 +29,42 @@ PieceRange RequestedPiece(vtkInformation* outInfo, std::uint64_t total)
   return range;
 }
 
-void AddVertexCells(vtkPolyData* output, vtkIdType count)
+namespace
 {
-  vtkNew<vtkIdTypeArray> offsets, connectivity;
+template<typename IdArray>
+void SetVertexCells(vtkPolyData* output, vtkIdType count)
+{
+  vtkNew<IdArray> offsets, connectivity;
   offsets->SetNumberOfValues(count + 1);
   connectivity->SetNumberOfValues(count);
-  vtkIdType* offset = offsets->GetPointer(0);
-  vtkIdType* id = connectivity->GetPointer(0);
+  auto* offset = offsets->GetPointer(0);
+  auto* id = connectivity->GetPointer(0);
   for (vtkIdType i = 0; i <= count; ++i)
   {
-    offset[i] = i;
+    offset[i] = static_cast<typename IdArray::ValueType>(i);
   }
   for (vtkIdType i = 0; i < count; ++i)
   {
-    id[i] = i;
+    id[i] = static_cast<typename IdArray::ValueType>(i);
   }
   vtkNew<vtkCellArray> vertices;
   vertices->SetData(offsets, connectivity);
   output->SetVerts(vertices);
+}
+} // namespace
+
+void AddVertexCells(vtkPolyData* output, vtkIdType count)
+{
+  // 32-bit ids where they suffice (vtkCellArray takes either): half the
+  // memory of the cells, 8 instead of 16 bytes a point.
+  if (count < VTK_INT_MAX)
+  {
+    SetVertexCells<vtkTypeInt32Array>(output, count);
+  }
+  else
+  {
+    SetVertexCells<vtkIdTypeArray>(output, count);
+  }
 }
 
 vtkSmartPointer<vtkDataArray> NewArray(int vtkType,
