@@ -197,23 +197,6 @@ def producer_of(cloud):
     return producer
 
 
-def polydata_cloud(points, normals):
-    """A vtkPolyData without cells: the points and a 'Normals' point array."""
-    import numpy
-    from vtkmodules.util.numpy_support import numpy_to_vtk
-    from vtkmodules.vtkCommonCore import vtkPoints
-    from vtkmodules.vtkCommonDataModel import vtkPolyData
-
-    cloud = vtkPolyData()
-    vtk_points = vtkPoints()
-    vtk_points.SetData(numpy_to_vtk(numpy.ascontiguousarray(points, dtype=numpy.float64), deep=True))
-    cloud.SetPoints(vtk_points)
-    vtk_normals = numpy_to_vtk(numpy.ascontiguousarray(normals, dtype=numpy.float64), deep=True)
-    vtk_normals.SetName("Normals")
-    cloud.GetPointData().SetNormals(vtk_normals)
-    return cloud
-
-
 def normal_columns(names):
     """Indices of the x y z and normal components among column or property
     names (ignoring case), or None where missing."""

@@ -243,7 +243,8 @@ std::string ParseHeader(const char* data, std::size_t size, Header& header)
   while (!done)
   {
     const char* start = data + position;
-    const void* newline = std::memchr(start, '\n', size - position);
+    // (memchr wants a buffer even for no bytes: an empty file has none.)
+    const void* newline = position < size ? std::memchr(start, '\n', size - position) : nullptr;
     if (!newline)
     {
       return lineNumber == 0 ? "not a PLY file (it does not start with a line 'ply')"
