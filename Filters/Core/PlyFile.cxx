@@ -200,7 +200,8 @@ std::string CheckBodySize(const Header& header, std::size_t vertex, std::uint64_
   double needed = 0;
   for (std::size_t e = 0; e <= vertex; ++e)
   {
-    needed += header.Elements[e].Count * SmallestRecord(header.Elements[e], header.BodyFormat);
+    needed += static_cast<double>(header.Elements[e].Count) *
+      SmallestRecord(header.Elements[e], header.BodyFormat);
   }
   // The last ascii value needs no separator.
   const double body =
