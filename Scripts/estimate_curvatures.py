@@ -18,8 +18,13 @@ INPUT may be:
 
   .vtp .vtu       VTK XML point sets with a 3-component point-data normals
                   array (or scalar arrays nx ny nz, combined into one);
-  .ply            PLY, normals as the vertex properties nx ny nz (or
-                  normal_x normal_y normal_z);
+  .ply            PLY (ascii or binary), its vertices: x y z (double kept
+                  double), normals as nx ny nz (or normal_x normal_y
+                  normal_z), every other vertex property as an array; read
+                  by the plugin's PLY Point Cloud Reader;
+  .las            LAS 1.0-1.4 lidar points (formats 0-10, uncompressed;
+                  decompress .laz first), double coordinates and PDAL's
+                  array names; read by the plugin's LAS Point Cloud Reader;
   .xyz .pwn .txt .pts .csv
                   text, one point per line: x y z nx ny nz [more columns],
                   separated by white space, commas or semicolons; '#' or '//'
@@ -66,7 +71,8 @@ REPOSITORY = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 DEFAULT_PLUGIN = os.path.join(
     REPOSITORY, "build", "lib", "paraview-plugins", "PrincipalCurvatures", "PrincipalCurvatures.so")
 TEXT_EXTENSIONS = (".xyz", ".pwn", ".txt", ".pts", ".csv")
-INPUT_EXTENSIONS = (".vtp", ".vtu", ".ply", ".off") + TEXT_EXTENSIONS
+LAS_EXTENSIONS = (".las", ".laz")
+INPUT_EXTENSIONS = (".vtp", ".vtu", ".ply") + LAS_EXTENSIONS + (".off",) + TEXT_EXTENSIONS
 OUTPUT_EXTENSIONS = (".vtp", ".ply", ".csv")
 FIT_MODES = ("Previous", "New01", "New02", "OrientedCircles")
 
@@ -191,23 +197,6 @@ def producer_of(cloud):
     return producer
 
 
-def polydata_cloud(points, normals):
-    """A vtkPolyData without cells: the points and a 'Normals' point array."""
-    import numpy
-    from vtkmodules.util.numpy_support import numpy_to_vtk
-    from vtkmodules.vtkCommonCore import vtkPoints
-    from vtkmodules.vtkCommonDataModel import vtkPolyData
-
-    cloud = vtkPolyData()
-    vtk_points = vtkPoints()
-    vtk_points.SetData(numpy_to_vtk(numpy.ascontiguousarray(points, dtype=numpy.float64), deep=True))
-    cloud.SetPoints(vtk_points)
-    vtk_normals = numpy_to_vtk(numpy.ascontiguousarray(normals, dtype=numpy.float64), deep=True)
-    vtk_normals.SetName("Normals")
-    cloud.GetPointData().SetNormals(vtk_normals)
-    return cloud
-
-
 def normal_columns(names):
     """Indices of the x y z and normal components among column or property
     names (ignoring case), or None where missing."""
@@ -226,64 +215,33 @@ def read_text_cloud(path):
     return simple.PointCloudTextReader(FileName=path)
 
 
-PLY_TYPES = {"char": "i1", "int8": "i1", "uchar": "u1", "uint8": "u1", "short": "i2", "int16": "i2",
-             "ushort": "u2", "uint16": "u2", "int": "i4", "int32": "i4", "uint": "u4", "uint32": "u4",
-             "float": "f4", "float32": "f4", "double": "f8", "float64": "f8"}
+READER_ERRORS = {}  # the plugin readers' error messages, by file
 
 
-def read_ply_header(handle):
-    """Format and elements ([name, count, [(type, property name)]]) of a PLY
-    file; leaves handle at the start of the data."""
-    if handle.readline().strip() != b"ply":
-        return None, []
-    file_format, elements = None, []
-    for line in handle:
-        words = line.decode("ascii", "replace").split()
-        if not words or words[0] in ("comment", "obj_info"):
-            continue
-        if words[0] == "end_header":
-            break
-        if words[0] == "format":
-            file_format = words[1]
-        elif words[0] == "element":
-            elements.append([words[1], int(words[2]), []])
-        elif words[0] == "property" and elements:
-            elements[-1][2].append((" ".join(words[1:-1]), words[-1]))
-    return file_format, elements
+def read_point_cloud_file(path, extension):
+    """A source reading a .ply (its vertices) or .las with the plugin's PLY
+    or LAS Point Cloud Reader. The PLY reader keeps double coordinates and
+    every vertex property, takes normals named nx ny nz or normal_x ..., and
+    reports a header without a vertex element or without x, y, z (where
+    VTK's own PLY reader crashes); the LAS reader reports LAZ compression
+    and headers that do not match the file. Either gives no points after an
+    error, whose messages are kept in READER_ERRORS[path]."""
+    if extension == ".ply":
+        source = simple.PLYPointCloudReader(FileName=path)
+    else:
+        source = simple.LASPointCloudReader(FileName=path)
+    errors = READER_ERRORS.setdefault(path, [])
 
+    from vtkmodules.util.misc import calldata_type
+    from vtkmodules.vtkCommonCore import VTK_STRING
 
-def read_ply_with_named_normals(path):
-    """The vertices of a PLY file whose normals VTK's reader ignores (it
-    knows only nx ny nz): normal_x normal_y normal_z and the like. Needs the
-    vertices as the first element, with scalar properties. None if the file
-    declares no normals at all."""
-    import numpy
+    @calldata_type(VTK_STRING)
+    def keep(caller, event, message):
+        # "ERROR: In file, line N\nclass (address): the message": the message.
+        errors.append(message.strip().splitlines()[-1].split("): ", 1)[-1])
 
-    with open(path, "rb") as handle:
-        file_format, elements = read_ply_header(handle)
-        vertex = next((e for e in elements if e[0] == "vertex"), None)
-        if vertex is None:
-            return None
-        names = [name for _, name in vertex[2]]
-        position, normal = normal_columns(names)
-        if normal is None or None in position:
-            return None
-        if elements[0] is not vertex or any(t not in PLY_TYPES for t, _ in vertex[2]):
-            fail("%s: normals as %s, but not in a layout this script reads (the vertex element "
-                 "first, scalar properties): rename them nx ny nz" % (path, " ".join(names[i] for i in normal)))
-        count = vertex[1]
-        print("normals from the PLY vertex properties %s" % " ".join(names[i] for i in normal))
-        if file_format == "ascii":
-            lines = [handle.readline() for _ in range(count)]
-            values = numpy.loadtxt(lines, dtype=numpy.float64, ndmin=2)
-        elif file_format in ("binary_little_endian", "binary_big_endian"):
-            order = "<" if file_format == "binary_little_endian" else ">"
-            dtype = numpy.dtype([(name, order + PLY_TYPES[t]) for t, name in vertex[2]])
-            records = numpy.frombuffer(handle.read(count * dtype.itemsize), dtype=dtype, count=count)
-            values = numpy.column_stack([records[name].astype(numpy.float64) for name in names])
-        else:
-            fail("%s: unknown PLY format %s" % (path, file_format))
-    return producer_of(polydata_cloud(values[:, position], values[:, normal]))
+    source.GetClientSideObject().AddObserver("ErrorEvent", keep)
+    return source
 
 
 def read_off_mesh(path):
@@ -380,8 +338,8 @@ def open_cloud(path):
         source = simple.XMLPolyDataReader(FileName=[path])
     elif extension == ".vtu":
         source = simple.XMLUnstructuredGridReader(FileName=[path])
-    elif extension == ".ply":
-        source = simple.PLYReader(FileNames=[path])
+    elif extension in (".ply",) + LAS_EXTENSIONS:
+        source = read_point_cloud_file(path, extension)
     elif extension in TEXT_EXTENSIONS:
         source = read_text_cloud(path)
     elif extension == ".off":
@@ -390,10 +348,8 @@ def open_cloud(path):
         fail("unknown input type '%s' of %s (use %s)" % (extension, path, " ".join(INPUT_EXTENSIONS)))
     source.UpdatePipeline()  # fills the array lists the filter's Normals domain reads
     if source.GetDataInformation().GetNumberOfPoints() == 0:
-        fail("%s: no points (unreadable or empty file; see the messages above)" % path)
-    if extension == ".ply" and not has_normals(source):
-        source = read_ply_with_named_normals(path) or source
-        source.UpdatePipeline()
+        errors = READER_ERRORS.get(path)
+        fail(errors[-1] if errors else "%s: no points (unreadable or empty file; see the messages above)" % path)
     if not has_normals(source):
         source = combine_normal_components(source) or source
     return source

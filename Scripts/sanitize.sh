@@ -27,7 +27,8 @@ nice cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAG
   -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=address,undefined" \
   -DPCURV_BUILD_BENCHMARKS=OFF -DPCURV_BUILD_STUDY=OFF > /dev/null
 nice cmake --build build-asan -j 2 --target TestCurvatureCore TestPrincipalCurvatureEstimation \
-  TestCloudEstimation TestDynamicAdjustment TestBadInputConfiguration TestBadInputPoints TestBadInputScale
+  TestCloudEstimation TestDynamicAdjustment TestBadInputConfiguration TestBadInputPoints TestBadInputScale \
+  TestLASReader TestPLYReader ReplayReaderSeeds
 built=$(date +%s)
 export ASAN_OPTIONS="detect_leaks=0:abort_on_error=1:halt_on_error=1:detect_stack_use_after_return=1:strict_init_order=1:check_initialization_order=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
@@ -35,5 +36,5 @@ cd build-asan
 # A test that reports anything aborts and fails; the timeout covers the
 # slowdown of the sanitizers on a busy 2-core machine.
 nice ctest --output-on-failure --timeout 3600 \
-  -R "${PCURV_SANITIZE_TESTS:-^((CurvatureCore|CloudEstimation|PrincipalCurvatureEstimation|DynamicAdjustment|BadInput(Configuration|Points|Scale))(_STDThread)?|BadInputExtreme_.*)$}"
+  -R "${PCURV_SANITIZE_TESTS:-^((CurvatureCore|CloudEstimation|PrincipalCurvatureEstimation|DynamicAdjustment|BadInput(Configuration|Points|Scale))(_STDThread)?|BadInputExtreme_.*|LASReader|PLYReader|FuzzReaderSeeds)$}"
 echo "sanitizers: build $((built - start)) s, tests $(($(date +%s) - built)) s"

@@ -28,8 +28,10 @@
 // no crash, no undefined behaviour; a valid point has finite curvatures
 // with max >= min, an invalid one NaN curvatures; the summary's count of
 // unestimated points matches the flags.
+// LAS and PLY files (first bytes 251 and 252): FuzzReaders.cxx.
 #include "CloudEstimation.h"
 #include "DynamicAdjustment.h"
+#include "FuzzReaders.h"
 #include "PointGrid.h"
 #include "PrincipalCurvatureCore.h"
 
@@ -713,6 +715,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 {
   Bytes in(data, size);
   const std::uint8_t check = in.Byte();
+  if (check == 251 || check == 252)
+  {
+    (check == 251 ? FuzzLasFile : FuzzPlyFile)(data + 1, size - 1);
+    return 0;
+  }
   if (check == 253)
   {
     CheckCloudEstimation(in);

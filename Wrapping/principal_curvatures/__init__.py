@@ -4,6 +4,7 @@ conformal geometric algebra (Getto & Hildenbrand 2011), for VTK Python.
     from principal_curvatures import vtkPrincipalCurvatureEstimation
     from principal_curvatures import vtkPointCloudNormalEstimation
     from principal_curvatures import vtkTextPointCloudReader
+    from principal_curvatures import vtkLASPointCloudReader, vtkPLYPointCloudReader
 
 Needs the VTK that ParaView bundles (run it in pvpython or pvbatch).
 """
@@ -12,9 +13,12 @@ Needs the VTK that ParaView bundles (run it in pvpython or pvbatch).
 import vtkmodules.vtkCommonExecutionModel  # noqa: F401
 
 from .vtkPrincipalCurvatureFilters import (  # noqa: F401
+    vtkLASPointCloudReader,
+    vtkPLYPointCloudReader,
     vtkPointCloudNormalEstimation,
     vtkPrincipalCurvatureEstimation,
     vtkTextPointCloudReader,
 )
 
-__all__ = ["vtkPointCloudNormalEstimation", "vtkPrincipalCurvatureEstimation", "vtkTextPointCloudReader"]
+__all__ = ["vtkLASPointCloudReader", "vtkPLYPointCloudReader", "vtkPointCloudNormalEstimation",
+           "vtkPrincipalCurvatureEstimation", "vtkTextPointCloudReader"]

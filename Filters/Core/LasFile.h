@@ -1,0 +1,116 @@
+/**
+ * LAS 1.0-1.4 point files (ASPRS LAS specification), uncompressed, point
+ * data formats 0-10: the header checked against the file, then the point
+ * records decoded in chunks straight into the caller's arrays. No VTK here;
+ * vtkLASPointCloudReader is the VTK glue.
+ *
+ * The names of the fields are PDAL's (Intensity, ReturnNumber, ...), so that
+ * scripts written for PDAL's output find the same arrays.
+ */
+#ifndef pcurv_LasFile_h
+#define pcurv_LasFile_h
+
+#include <cstdint>
+#include <cstdio>
+#include <string>
+
+namespace pcurv
+{
+namespace las
+{
+
+/// The parts of the public header block this reader uses.
+struct Header
+{
+  int VersionMajor = 0;
+  int VersionMinor = 0;
+  std::uint32_t HeaderSize = 0;
+  std::uint32_t OffsetToPointData = 0;
+  int PointFormat = 0;
+  std::uint32_t RecordLength = 0;
+  std::uint64_t PointCount = 0;
+  double Scale[3] = { 1, 1, 1 };
+  double Offset[3] = { 0, 0, 0 };
+};
+
+/// Where a point data format keeps its optional fields (-1: absent).
+struct RecordLayout
+{
+  std::uint32_t MinimumLength = 0;
+  bool Extended = false; // formats 6-10: 4-bit return numbers, a full classification byte
+  int GpsTime = -1;
+  int Colour = -1;   // Red, Green, Blue: three uint16
+  int Infrared = -1; // formats 8 and 10
+};
+
+/// The layout of point data format 0-10; MinimumLength 0 for any other.
+RecordLayout LayoutOf(int pointFormat);
+
+/**
+ * The caller's arrays, one value (three for Points) per point; a null
+ * pointer skips that field. Fields the format lacks are left untouched.
+ */
+struct PointBuffers
+{
+  double* Points = nullptr; // x y z: the int32 record value times scale plus offset
+  std::uint16_t* Intensity = nullptr;
+  std::uint8_t* ReturnNumber = nullptr;
+  std::uint8_t* NumberOfReturns = nullptr;
+  std::uint8_t* Classification = nullptr;
+  std::int8_t* ScanAngleRank = nullptr; // formats 0-5: whole degrees
+  float* ScanAngle = nullptr;           // formats 6-10: degrees (0.006 per unit)
+  std::uint8_t* UserData = nullptr;
+  std::uint16_t* PointSourceId = nullptr;
+  double* GpsTime = nullptr;
+  std::uint16_t* Red = nullptr;
+  std::uint16_t* Green = nullptr;
+  std::uint16_t* Blue = nullptr;
+  std::uint16_t* Infrared = nullptr;
+};
+
+/// Decodes count records of the header's format from records (little
+/// endian, header.RecordLength bytes apart) into out, from out's index first.
+void DecodeRecords(const Header& header,
+  const unsigned char* records,
+  std::size_t count,
+  std::size_t first,
+  const PointBuffers& out);
+
+/**
+ * Checks the header in data (the file's first size bytes; the whole header
+ * is needed) against the file's size. Returns an empty string when it
+ * holds, else what is wrong, in words that name the field and its value.
+ */
+std::string ParseHeader(const unsigned char* data,
+  std::size_t size,
+  std::uint64_t fileSize,
+  Header& header);
+
+/// An open LAS file: the header on Open, the points on Read.
+class File
+{
+public:
+  File() = default;
+  ~File();
+  File(const File&) = delete;
+  File& operator=(const File&) = delete;
+
+  /// Opens and checks the file; an empty string, or what is wrong.
+  std::string Open(const char* fileName);
+  /// The same on an open stream (which this then closes; for example
+  /// fmemopen's, as the fuzz target does).
+  std::string Open(std::FILE* stream);
+  const Header& GetHeader() const { return this->TheHeader; }
+  /// Reads points [begin, end) into out (index 0 is point begin), in chunks
+  /// of a fixed size; an empty string, or what went wrong.
+  std::string Read(std::uint64_t begin, std::uint64_t end, const PointBuffers& out);
+
+private:
+  std::FILE* Handle = nullptr;
+  Header TheHeader;
+};
+
+} // namespace las
+} // namespace pcurv
+
+#endif

@@ -1,0 +1,138 @@
+/**
+ * PLY files (ascii, binary_little_endian, binary_big_endian) read as point
+ * clouds: the header checked, then the vertex element's properties read
+ * into the caller's arrays, in their own types (x y z stay double when the
+ * file has double). Other elements are skipped. No VTK here;
+ * vtkPLYPointCloudReader is the VTK glue.
+ */
+#ifndef pcurv_PlyFile_h
+#define pcurv_PlyFile_h
+
+#include <cstdint>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace pcurv
+{
+namespace ply
+{
+
+enum class Type
+{
+  Int8,
+  UInt8,
+  Int16,
+  UInt16,
+  Int32,
+  UInt32,
+  Float32,
+  Float64
+};
+
+/// The type's name in PLY headers (char, uchar, ...).
+const char* NameOf(Type type);
+
+/// Bytes of one value of the type.
+int SizeOf(Type type);
+
+struct Property
+{
+  std::string Name;
+  Type ValueType = Type::Float32;
+  bool IsList = false;
+  Type CountType = Type::UInt8; // of a list
+};
+
+struct Element
+{
+  std::string Name;
+  std::uint64_t Count = 0;
+  std::vector<Property> Properties;
+};
+
+enum class Format
+{
+  Ascii,
+  BinaryLittleEndian,
+  BinaryBigEndian
+};
+
+struct Header
+{
+  Format BodyFormat = Format::Ascii;
+  std::vector<Element> Elements;
+  std::size_t BodyOffset = 0; // the first byte after end_header's line
+};
+
+/**
+ * Parses the header at the start of data (the file's first size bytes).
+ * Returns an empty string, or what is wrong with the line number.
+ */
+std::string ParseHeader(const char* data, std::size_t size, Header& header);
+
+/// Index of the vertex element, or an error if there is none or it lacks
+/// scalar x, y and z properties (naming the missing ones).
+std::string FindVertexElement(const Header& header, std::size_t& vertex);
+
+/// An output array: its values are written through Data (Count x Components).
+struct Column
+{
+  std::string Name;
+  Type ValueType = Type::Float64;
+  int Components = 1;
+  void* Data = nullptr; // set by the caller before reading
+};
+
+/**
+ * What each vertex property becomes: x y z the column Points (float when
+ * all three are float, else double); nx ny nz (or normal_x ..., normalx
+ * ..., n_x ...) Normals, the same way; red green blue, when all uchar, RGB
+ * (3 x uchar); any other scalar property a column of its own name and type.
+ * List properties are skipped.
+ */
+struct VertexLayout
+{
+  std::vector<Column> Columns;
+  /// Per vertex property: its column (-1: skipped) and component.
+  std::vector<int> ColumnOf;
+  std::vector<int> ComponentOf;
+  int Points = -1;
+  int Normals = -1;
+  int Colours = -1;
+};
+VertexLayout PlanVertexColumns(const Element& vertex);
+
+/// An open PLY file: the header on Open, the vertices on Read.
+class File
+{
+public:
+  File() = default;
+  ~File();
+  File(const File&) = delete;
+  File& operator=(const File&) = delete;
+
+  /// Opens the file and checks its header and vertex element; an empty
+  /// string, or what is wrong.
+  std::string Open(const char* fileName);
+  /// The same on an open stream (which this then closes; for example
+  /// fmemopen's, as the fuzz target does).
+  std::string Open(std::FILE* stream);
+  const Header& GetHeader() const { return this->TheHeader; }
+  const Element& Vertices() const { return this->TheHeader.Elements[this->Vertex]; }
+  VertexLayout& Layout() { return this->TheLayout; }
+  /// Reads vertices [begin, end) into the layout's columns (set their Data
+  /// first; row 0 is vertex begin); an empty string, or what went wrong.
+  std::string Read(std::uint64_t begin, std::uint64_t end);
+
+private:
+  std::FILE* Handle = nullptr;
+  Header TheHeader;
+  std::size_t Vertex = 0;
+  VertexLayout TheLayout;
+};
+
+} // namespace ply
+} // namespace pcurv
+
+#endif

@@ -1,0 +1,75 @@
+/**
+ * @class   vtkLASPointCloudReader
+ * @brief   reads LAS 1.0-1.4 lidar point files (.las), point data formats 0-10
+ *
+ * The points are the records' int32 coordinates times the header's scale
+ * plus its offset, in double (georeferenced coordinates keep every digit the
+ * file has). Point-data arrays, named as PDAL names them:
+ * - `Intensity` (unsigned short), `ReturnNumber`, `NumberOfReturns`,
+ *   `Classification`, `UserData` (unsigned char), `PointSourceId` (unsigned
+ *   short), in every format. Formats 6-10 keep 4-bit return numbers and a
+ *   whole classification byte; formats 0-5 3-bit ones and the class in the
+ *   low 5 bits (the synthetic, key-point and withheld flags are left out).
+ * - `ScanAngleRank` (signed char, whole degrees) in formats 0-5, `ScanAngle`
+ *   (float, degrees: the file's 0.006-degree units) in formats 6-10.
+ * - `GpsTime` (double) in formats 1 and 3-10.
+ * - `Red`, `Green`, `Blue` (unsigned short, as stored: LAS colours are
+ *   16-bit) in formats 2, 3, 5, 7, 8, 10, and `Infrared` in 8 and 10. Three
+ *   arrays rather than one 3-component one: ParaView offers a 3-component
+ *   array as normals, and a colour is not one.
+ * Wave packets (formats 4, 5, 9, 10) and extra bytes are skipped. One vertex
+ * cell per point. Piece requests are honoured (consecutive ranges).
+ *
+ * The points are read in chunks of 64k records straight into the output
+ * arrays: the file is never held in memory.
+ *
+ * Errors (the file named, then what is wrong: not a LAS file, a truncated
+ * file, an unknown version or point format, LAZ compression, a header that
+ * claims more points than the file holds, an offset beyond the file, a
+ * record length too small for the format) are one vtkErrorMacro; the output
+ * is then empty and GetErrorCode() is set. RequestData still succeeds, as in
+ * vtkTextPointCloudReader.
+ *
+ * The parsing is pcurv::las (Filters/Core/LasFile.h), free of VTK.
+ */
+#ifndef vtkLASPointCloudReader_h
+#define vtkLASPointCloudReader_h
+
+#include "vtkPolyDataAlgorithm.h"
+#include "vtkPrincipalCurvatureFiltersModule.h" // for export macro
+
+class VTKPRINCIPALCURVATUREFILTERS_EXPORT vtkLASPointCloudReader : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkLASPointCloudReader* New();
+  vtkTypeMacro(vtkLASPointCloudReader, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /// The file to read.
+  vtkSetStringMacro(FileName);
+  vtkGetStringMacro(FileName);
+  ///@}
+
+  /**
+   * 1 if the file can be opened. A file that is not a good LAS file is
+   * accepted too, so that ParaView's reader factory gives it to this reader,
+   * which says what is wrong, rather than to the GDAL raster reader.
+   */
+  int CanReadFile(const char* fileName);
+
+protected:
+  vtkLASPointCloudReader();
+  ~vtkLASPointCloudReader() override;
+
+  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  char* FileName = nullptr;
+
+private:
+  vtkLASPointCloudReader(const vtkLASPointCloudReader&) = delete;
+  void operator=(const vtkLASPointCloudReader&) = delete;
+};
+
+#endif
