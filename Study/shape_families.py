@@ -30,6 +30,7 @@ the largest |k| (1/rho for the boxes, the shape's for the others):
              2 x Curvature_Standard_Error
   err/SE     median of that error / Curvature_Standard_Error
   off>20%    share of the valid whose error exceeds 0.2 K
+  max        the largest error of a valid point, in K
   dir        median angle (degrees) between the estimated and exact maximum
              directions, as lines, where exact k_max - k_min > 0.05 K
   s/h        median Surroundings_Threshold (the radius used), in spacings h
@@ -45,13 +46,16 @@ paraboloid patch, the points farther than their own radius s from the
 patch's border (parameter distance, a lower bound; 2 s would leave a dozen
 points of the 2.5k cloud); closed shapes, all.
 
-Run (about 2 minutes on 2 shared cores, one family at a time with --family):
+Run (one family at a time with --family: on 2 shared cores, boxes about 6
+minutes, or one fillet radius at a time with --rho 5; structured about 5;
+scanlines about 1.5):
 
     export PYTHONPATH=/work/main/build/lib/python3.11/site-packages
     export VTK_SMP_BACKEND_IN_USE=STDThread
     nice /usr/bin/python3 Study/shape_families.py [--family boxes|structured|scanlines] [--quick]
 
---quick: one setting per family (rho = 10 h, 20k points ...), a few seconds.
+--quick: a small subset of each family (rho = 10 h at 30k points, 20k-point
+smooth shapes, 2.5k-point scan lines), about a minute.
 --check: only the generator checks and the filter's sign check.
 Seeds are fixed (SEED + a per-cloud offset): every run gives the same clouds.
 """
@@ -290,9 +294,10 @@ def line_samples(rng, length, step):
 
 
 def scan_sphere(rng, n, radius=SPHERE_R):
-    """Circles x = const, gap g across (in x), arc spacing g / SCAN_RATIO along."""
+    """Circles x = const, gap g across (in x), arc spacing g / SCAN_RATIO along. The
+    circles' total length is pi^2 R^2 / g = (pi / 4) area / g: g from that, for about n."""
     area = 4 * math.pi * radius ** 2
-    gap = math.sqrt(SCAN_RATIO * area / n)
+    gap = math.sqrt(SCAN_RATIO * math.pi / 4 * area / n)
     lines = int(round(2 * radius / gap))
     xs = -radius + (rng.random() + numpy.arange(lines)) * (2 * radius / lines)
     pieces = []
@@ -468,7 +473,7 @@ def score(cloud, out, mask):
     K = cloud["K"]
     valid = out["valid"] & mask
     result = {"scored": int(mask.sum()), "valid": float(valid.sum() / max(mask.sum(), 1)), "flipped": flipped}
-    nan_keys = ("e_min", "e_max", "err", "le2se", "err_se", "off20", "dir", "s_h", "inside", "n_deg",
+    nan_keys = ("e_min", "e_max", "err", "le2se", "err_se", "off20", "max", "dir", "s_h", "inside", "n_deg",
                 "err_in", "off_in")
     if not valid.any():
         result.update({key: math.nan for key in nan_keys})
@@ -484,6 +489,7 @@ def score(cloud, out, mask):
     result["le2se"] = float(numpy.mean(error <= 2 * se)) if numpy.isfinite(se).any() else math.nan
     result["err_se"] = float(numpy.median(ratio)) if numpy.isfinite(se).any() else math.nan
     result["off20"] = float(numpy.mean(error > 0.2 * K))
+    result["max"] = float(error.max() / K)
     aniso = valid & (cloud["kmax"] - cloud["kmin"] > 0.05 * K)
     result["dir"] = math.nan
     if aniso.any():
@@ -522,11 +528,11 @@ def run_both_normals(cloud, points, label, masks):
     return rows
 
 
-def family_boxes(quick):
-    n = 30000 if quick else 60000
+def family_boxes(quick, fillets=(5, 10, 20)):
+    n = 30000 if quick else 50000
     rows = []
-    for si, spacings in enumerate((10,) if quick else (5, 10, 20)):
-        rng = numpy.random.default_rng(SEED + 10 * si)
+    for spacings in (10,) if quick else fillets:
+        rng = numpy.random.default_rng(SEED + spacings)
         box = rounded_box(rng, n, spacings)
         eps = rng.standard_normal(box["points"].shape)
         away = box["border"] > MARGIN_SPACINGS * box["h"]
@@ -541,7 +547,7 @@ def family_boxes(quick):
 
 def family_structured(quick):
     rows = []
-    sizes = (20000,) if quick else (20000, 100000)
+    sizes = (20000,) if quick else (20000, 50000)
     rms = GRID_FRACTION / math.sqrt(12)           # per axis, of the rounding error, in h
     for si, (shape, make) in enumerate((("ellipsoid", ellipsoid), ("torus", torus))):
         for ni, n in enumerate(sizes):
@@ -567,7 +573,9 @@ def family_scanlines(quick):
             eps = rng.standard_normal(cloud["points"].shape)
 
             def inner(out, cloud=cloud):
-                s = numpy.where(numpy.isfinite(out["s"]), out["s"], numpy.inf)
+                # unestimated points (no radius) are scored with the median radius
+                finite = numpy.isfinite(out["s"])
+                s = numpy.where(finite, out["s"], numpy.median(out["s"][finite]) if finite.any() else 0.0)
                 return cloud["border"] > s
 
             for noise in ((0.1,) if quick else (0.0, 0.1)):
@@ -584,7 +592,7 @@ LABELS = {"boxes": ("rho", "noise", "normals", "part"),
           "structured": ("shape", "N", "positions", "normals"),
           "scanlines": ("shape", "N", "gap", "noise", "normals")}
 SCORES = (("scored", "%d"), ("valid", "%.3f"), ("e_min", "%.4f"), ("e_max", "%.4f"), ("err", "%.4f"),
-          ("le2se", "%.3f"), ("err_se", "%.2f"), ("off20", "%.4f"), ("dir", "%.2f"), ("n_deg", "%.2f"), ("s_h", "%.2f"))
+          ("le2se", "%.3f"), ("err_se", "%.2f"), ("off20", "%.4f"), ("max", "%.3g"), ("dir", "%.2f"), ("n_deg", "%.2f"), ("s_h", "%.2f"))
 
 
 def table(family, rows):
@@ -618,13 +626,16 @@ def main(argv):
     parser.add_argument("--family", choices=sorted(FAMILIES), action="append", help="repeatable; default all")
     parser.add_argument("--quick", action="store_true", help="one small setting per family")
     parser.add_argument("--check", action="store_true", help="only the generator and sign checks")
+    parser.add_argument("--rho", type=lambda text: tuple(int(v) for v in text.split(",")),
+                        help="boxes: the fillet radii in spacings, e.g. 5,10 (default 5,10,20)")
     arguments = parser.parse_args(argv)
     run_checks()
     if arguments.check:
         return
     print(build_description() + "\n")
     for family in arguments.family or list(FAMILIES):
-        rows = FAMILIES[family](arguments.quick)
+        extra = {"fillets": arguments.rho} if family == "boxes" and arguments.rho else {}
+        rows = FAMILIES[family](arguments.quick, **extra)
         print("### %s\n\n%s\n" % (family, table(family, rows)), flush=True)
 
 
