@@ -610,15 +610,24 @@ def table(family, rows):
     return "\n".join(lines)
 
 
+def build_stamp():
+    """The filter module's file and modification time (the build may change under a run)."""
+    import principal_curvatures
+    folder = os.path.dirname(principal_curvatures.__file__)
+    modules = [os.path.join(folder, name) for name in os.listdir(folder) if ".so" in name]
+    latest = max(modules, key=os.path.getmtime) if modules else principal_curvatures.__file__
+    stamp = datetime.datetime.fromtimestamp(os.path.getmtime(latest), datetime.timezone.utc)
+    return "%s of %s UTC" % (latest, stamp.strftime("%Y-%m-%d %H:%M:%S"))
+
+
 def build_description():
-    here = os.environ.get("PYTHONPATH", "").split(os.pathsep)[0]
     try:
-        head = subprocess.run(["git", "-C", "/work/main", "log", "-1", "--format=%h %cI"], capture_output=True,
+        head = subprocess.run(["git", "-C", "/work/main", "log", "-1", "--format=%h"], capture_output=True,
                               text=True, timeout=10).stdout.strip()
     except (OSError, subprocess.SubprocessError):
         head = "?"
-    return "run %s UTC; build %s (main at %s)" % (
-        datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M"), here or "?", head)
+    return "run %s UTC; build %s (main's HEAD %s, plus any uncommitted work)" % (
+        datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M"), build_stamp(), head or "?")
 
 
 def main(argv):
@@ -632,11 +641,15 @@ def main(argv):
     run_checks()
     if arguments.check:
         return
+    stamp = build_stamp()
     print(build_description() + "\n")
     for family in arguments.family or list(FAMILIES):
         extra = {"fillets": arguments.rho} if family == "boxes" and arguments.rho else {}
         rows = FAMILIES[family](arguments.quick, **extra)
         print("### %s\n\n%s\n" % (family, table(family, rows)), flush=True)
+    if build_stamp() != stamp:
+        print("WARNING: the build changed during the run (now %s; the run used the one loaded at its start)"
+              % build_stamp(), flush=True)
 
 
 if __name__ == "__main__":
