@@ -3,13 +3,15 @@
 1. boxes:      rounded boxes (a 10 x 7 x 5 half-size box's Minkowski sum with a
                ball of radius rho = 5, 10 or 20 point spacings): flat faces,
                quarter-cylinder fillets and eighth-sphere corners, scored
-               separately; position noise 0, 0.1 h and 0.5 h.
-2. structured: the suite's ellipsoid 10 / 7 / 4 and torus 10 / 3 with positions
+               separately; 50k points, position noise 0, 0.1 h and 0.5 h.
+2. structured: the suite's ellipsoid 10 / 7 / 4 and torus 10 / 3 (20k, 50k
+               points) with positions
                rounded to a grid of h / 3 (a structured error), beside Gaussian
                noise of the same RMS (0.096 h per axis).
 3. scanlines:  a sphere R = 10 and the suite's paraboloid patch sampled along
                parallel lines, 12 times denser along the lines than across
-               them (h_along = g / 12, g the gap between lines), like a lidar.
+               them (h_along = g / 12, g the gap between lines, about 3 h),
+               like a lidar; about 2.5k and 20k points, noise 0 and 0.1 h.
 
 Every cloud is given with its exact normals ("exact") and without normals, the
 filter estimating them ("estimated", SetNormalsSourceToEstimated()). The
