@@ -83,6 +83,45 @@ def fail(message):
 
 
 # ---------------------------------------------------------------------------
+# VTK's messages
+
+
+def vtk_message_text(text):
+    """A VTK error or warning as one plain line: without the "ERROR: In
+    file, line N" preamble and the object's address."""
+    import re
+
+    text = re.sub(r"^(ERROR|Warning|Generic Warning): In [^\n]*\n", "", text.strip())
+    return re.sub(r"^(\w+) \(0x[0-9a-fA-F]+\): ", r"\1: ", text).strip()
+
+
+def plain_vtk_messages():
+    """Shows VTK's errors and warnings as plain "estimate_curvatures: error:
+    ..." lines on stderr: VTK's own log lines carry a time and thread
+    prefix and terminal colour codes, even into a pipe or a file. Fatal
+    messages (a crash's stack trace) still go through VTK's log."""
+    from vtkmodules.util.misc import calldata_type
+    from vtkmodules.vtkCommonCore import VTK_STRING, vtkLogger, vtkOutputWindow
+
+    fatal = vtkLogger.ConvertToVerbosity(-3)  # loguru's FATAL, not wrapped by name
+    vtkLogger.SetStderrVerbosity(fatal)
+    window = vtkOutputWindow.GetInstance()
+    window.SetDisplayModeToNever()  # the events below still fire
+
+    def show(kind):
+        @calldata_type(VTK_STRING)
+        def observer(caller, event, text):
+            # Straight to the stream: printing through Python's sys.stderr
+            # from here can re-enter VTK's output window.
+            sys.__stderr__.write("estimate_curvatures: %s: %s\n" % (kind, vtk_message_text(text)))
+            sys.__stderr__.flush()
+        return observer
+
+    window.AddObserver("ErrorEvent", show("error"))
+    window.AddObserver("WarningEvent", show("warning"))
+
+
+# ---------------------------------------------------------------------------
 # Command line
 
 
@@ -219,11 +258,35 @@ def normal_columns(names):
     return position, None
 
 
+class ReaderErrors:
+    """The error messages of a reader's VTK object, kept to be reported as
+    the tool's own (the reader then prints none itself)."""
+
+    def __init__(self, proxy):
+        from vtkmodules.util.misc import calldata_type
+        from vtkmodules.vtkCommonCore import VTK_STRING
+
+        self.messages = []
+
+        @calldata_type(VTK_STRING)
+        def keep(caller, event, text):
+            self.messages.append(vtk_message_text(text).split(": ", 1)[-1])
+
+        proxy.GetClientSideObject().AddObserver("ErrorEvent", keep)
+
+
 def read_text_cloud(path):
     """A source reading a text cloud (x y z nx ny nz ... per line) with the
-    plugin's Point Cloud Text Reader (vtkTextPointCloudReader); it reports
-    a bad line with its number and then gives no points."""
-    return simple.PointCloudTextReader(FileName=path)
+    plugin's Point Cloud Text Reader (vtkTextPointCloudReader), as the GUI
+    does, so that both read the same files alike: a bad line is an error
+    naming it, NaN coordinates are kept (and left unestimated), with one
+    warning. Exits with the reader's message if it fails."""
+    source = simple.PointCloudTextReader(FileName=path)
+    errors = ReaderErrors(source)
+    source.UpdatePipeline()
+    if errors.messages:
+        fail("; ".join(errors.messages))
+    return source
 
 
 PLY_TYPES = {"char": "i1", "int8": "i1", "uchar": "u1", "uint8": "u1", "short": "i2", "int16": "i2",
@@ -749,11 +812,16 @@ def write_output(curvatures, result, normals, path, compress=False, single=False
 
 
 def main(argv):
+    # pvpython's sys.stdout and sys.stderr send text through VTK's output
+    # window (for the GUI's message window), which plain_vtk_messages
+    # silences: a command-line tool writes to the streams themselves.
+    sys.stdout, sys.stderr = sys.__stdout__, sys.__stderr__
     arguments = parse_arguments(argv)
     output_folder = os.path.dirname(os.path.abspath(arguments.output))
     if not os.path.isdir(output_folder):
         fail("the output's folder does not exist: %s" % output_folder)
     progress = Progress(arguments.progress)
+    plain_vtk_messages()
     load_plugin(arguments.plugin)
     progress.begin("reading %s" % arguments.input)
     source = open_cloud(arguments.input)
