@@ -628,11 +628,20 @@ def summarize(output, seconds, description):
         if name.startswith("Unestimated_") and name != "Unestimated_Points" and count > 0:
             print("%-26s %d" % ("  " + name[len("Unestimated_"):].replace("_", " ").lower(), count))
     if estimated:
-        for name in ("Neighbor_Count", "Surroundings_Threshold", "Plane_Distance_Threshold"):
+        # Surroundings_Threshold is each point's neighborhood radius, the
+        # distance within which its Neighbor_Count neighbors lie.
+        rows = (("Neighbor_Count", "Neighbor_Count", ""),
+                ("Surroundings_Threshold", "neighborhood radius", "; Surroundings_Threshold, a length"),
+                ("Plane_Distance_Threshold", "Plane_Distance_Threshold", ""))
+        for name, label, note in rows:
             if data.GetArray(name) is None:
                 continue
-            print("%-26s %.6g (median)" % (name, numpy.median(array(name)[valid])))
+            print("%-26s %.6g (median%s)" % (label, numpy.median(array(name)[valid]), note))
     print("%-26s %.3f s" % ("filter time", seconds))
+    unit = field.GetAbstractArray("Curvature_Unit")
+    if unit is not None and unit.GetNumberOfValues():
+        # Lengths (radius, coordinates) are in the input's unit, curvatures in its inverse.
+        print("%-26s %s (Gauss_Curvature: its square)" % ("curvature unit", unit.GetValue(0)))
     if not estimated:
         sys.stderr.write("estimate_curvatures: warning: no point was estimated (too few neighbors? "
                          "try a larger --radius or --neighbors)\n")
