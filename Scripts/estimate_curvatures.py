@@ -30,7 +30,10 @@ INPUT may be:
                   (vtkTextPointCloudReader: its class documentation has the
                   rules for colours and further columns);
   .off            a triangle mesh: its vertices, with normals computed from
-                  the triangles and turned outwards.
+                  the triangles and turned outwards;
+  .obj            Wavefront OBJ (ParaView's reader): its vertices, with
+                  their normals (vn) if it has them, else normals from its
+                  faces as for .off, else (vertices only) estimated ones.
 
 Writes OUTPUT with the input's arrays and the curvature arrays, in the
 format of its extension: .vtp (VTK XML, inline binary); .ply (binary little
@@ -66,7 +69,7 @@ REPOSITORY = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 DEFAULT_PLUGIN = os.path.join(
     REPOSITORY, "build", "lib", "paraview-plugins", "PrincipalCurvatures", "PrincipalCurvatures.so")
 TEXT_EXTENSIONS = (".xyz", ".pwn", ".txt", ".pts", ".csv")
-INPUT_EXTENSIONS = (".vtp", ".vtu", ".ply", ".off") + TEXT_EXTENSIONS
+INPUT_EXTENSIONS = (".vtp", ".vtu", ".ply", ".off", ".obj") + TEXT_EXTENSIONS
 OUTPUT_EXTENSIONS = (".vtp", ".ply", ".csv")
 FIT_MODES = ("Previous", "New01", "New02", "OrientedCircles")
 
@@ -357,7 +360,6 @@ def read_off_mesh(path):
     from vtkmodules.numpy_interface import dataset_adapter
     from vtkmodules.util.numpy_support import numpy_to_vtkIdTypeArray
     from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
-    from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
 
     with open(path) as handle:
         words = [line.split("#")[0].split() for line in handle]
@@ -377,8 +379,18 @@ def read_off_mesh(path):
     legacy = numpy.concatenate(polygons).astype(numpy.int64)  # count, ids, count, ids, ...
     cells.ImportLegacyFormat(numpy_to_vtkIdTypeArray(legacy, deep=True))
     mesh.VTKObject.SetPolys(cells)
+    return producer_of(with_outward_normals(mesh.VTKObject))
+
+
+def with_outward_normals(mesh):
+    """The polydata mesh with point normals computed from its polygons,
+    made consistent, and turned to point away from the centroid."""
+    import numpy
+    from vtkmodules.numpy_interface import dataset_adapter
+    from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
+
     normals = vtkPolyDataNormals()
-    normals.SetInputData(mesh.VTKObject)
+    normals.SetInputData(mesh)
     normals.ComputePointNormalsOn()
     normals.ComputeCellNormalsOff()
     normals.SplittingOff()
@@ -388,7 +400,23 @@ def read_off_mesh(path):
     outward = ((cloud.Points - cloud.Points.mean(axis=0)) * cloud.PointData["Normals"]).sum(axis=1)
     if numpy.median(outward) < 0:
         cloud.PointData["Normals"][:] *= -1
-    return producer_of(cloud.VTKObject)
+    return cloud.VTKObject
+
+
+def read_obj(path):
+    """A Wavefront OBJ file with ParaView's reader: its vertices, with their
+    normals (vn) where the file gives them; else, for a mesh, normals from
+    its faces as for OFF; else (vertices only) none, for the filter to
+    estimate."""
+    source = simple.WavefrontOBJReader(FileName=path)
+    source.UpdatePipeline()
+    mesh = servermanager.Fetch(source)
+    if mesh is None or mesh.GetNumberOfPoints() == 0:
+        fail("%s: no vertices (not an OBJ file, or an empty one; see the messages above)" % path)
+    if mesh.GetPointData().GetNormals() is None and mesh.GetNumberOfPolys() > 0:
+        print("normals from the OBJ faces")
+        return producer_of(with_outward_normals(mesh))
+    return source
 
 
 def point_arrays(source):
@@ -449,6 +477,8 @@ def open_cloud(path):
         source = read_text_cloud(path)
     elif extension == ".off":
         source = read_off_mesh(path)
+    elif extension == ".obj":
+        source = read_obj(path)
     else:
         fail("unknown input type '%s' of %s (use %s)" % (extension, path, " ".join(INPUT_EXTENSIONS)))
     source.UpdatePipeline()  # fills the array lists the filter's Normals domain reads
