@@ -353,33 +353,17 @@ def read_ply_with_named_normals(path):
 
 
 def read_off_mesh(path):
-    """The vertices of an OFF triangle mesh, with point normals computed from
-    the triangles and turned to point away from the centroid (for a closed,
-    roughly star-shaped scan such as the Stanford bunny)."""
-    import numpy
-    from vtkmodules.numpy_interface import dataset_adapter
-    from vtkmodules.util.numpy_support import numpy_to_vtkIdTypeArray
-    from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
-
-    with open(path) as handle:
-        words = [line.split("#")[0].split() for line in handle]
-    words = [w for w in words if w]
-    if not words or words[0][0] != "OFF":
-        fail("%s: not an OFF file" % path)
-    header = words[1] if len(words[0]) == 1 else words[0][1:]
-    first = 2 if len(words[0]) == 1 else 1
-    vertices, faces = int(header[0]), int(header[1])
-    points = numpy.array([[float(v) for v in row[:3]] for row in words[first:first + vertices]])
-    polygons = [[int(v) for v in row[:1 + int(row[0])]] for row in words[first + vertices:first + vertices + faces]]
-    if not polygons:
-        fail("%s: an OFF mesh without faces has no normals" % path)
-    mesh = dataset_adapter.WrapDataObject(vtkPolyData())
-    mesh.Points = points
-    cells = vtkCellArray()
-    legacy = numpy.concatenate(polygons).astype(numpy.int64)  # count, ids, count, ids, ...
-    cells.ImportLegacyFormat(numpy_to_vtkIdTypeArray(legacy, deep=True))
-    mesh.VTKObject.SetPolys(cells)
-    return producer_of(with_outward_normals(mesh.VTKObject))
+    """An OFF triangle mesh with the plugin's OFF Mesh Reader
+    (vtkOFFMeshReader), as the GUI reads it: its vertices, with point normals
+    from the triangles turned to point away from the centroid (for a closed,
+    roughly star-shaped scan such as the Stanford bunny); without faces,
+    none (they are estimated). Exits with the reader's message if it fails."""
+    source = simple.OFFMeshReader(FileName=path)
+    errors = ReaderErrors(source)
+    source.UpdatePipeline()
+    if errors.messages:
+        fail("; ".join(errors.messages))
+    return source
 
 
 def with_outward_normals(mesh):

@@ -1,5 +1,6 @@
-"""The command-line tool on Wavefront OBJ files, which ParaView reads and
-the tool used to refuse:
+"""Meshes as input: Wavefront OBJ files in the command-line tool (ParaView
+reads them; the tool used to refuse them), and OFF files, which the tool
+read and ParaView did not, through the plugin's OFF Mesh Reader in both.
 
     pvpython TestCommandLineMeshes.py TOOL.py PLUGIN.so FOLDER
 
@@ -8,7 +9,12 @@ the tool used to refuse:
 * a triangle mesh without normals (a sphere of radius 2 from
   vtkSphereSource): normals from the faces, turned outwards, mean
   curvature 1/2;
-* a file with no vertices: exit status 2 and a message.
+* an OBJ file with no vertices: exit status 2 and a message;
+* an OFF sphere of radius 2 with its faces ordered clockwise: OpenDataFile
+  picks the OFF Mesh Reader, its normals point outward; the tool gives mean
+  curvature 1/2 from it; bad OFF files (not OFF, a short vertex line, an
+  index out of range, missing faces) are an error naming the line, in
+  OpenDataFile and in the tool (exit status 2).
 
 Every check prints one line; the exit code is 0 when all pass, 1 otherwise.
 """
@@ -19,7 +25,10 @@ import subprocess
 import sys
 
 import numpy
+from paraview import servermanager, simple
+from vtkmodules.util.misc import calldata_type
 from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkCommonCore import VTK_STRING
 from vtkmodules.vtkFiltersSources import vtkSphereSource
 from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
 
@@ -94,8 +103,62 @@ def main(tool, plugin, folder):
     done = run(tool, plugin, empty, os.path.join(folder, "empty_obj.vtp"))
     check(done.returncode == 2 and "empty.obj: no vertices" in done.stderr,
           "OBJ without vertices: exit %d, %s" % (done.returncode, done.stderr.strip().splitlines()[-1:]))
+    check_off(tool, plugin, folder, points, polys)
     print("%d failed" % len(failures))
     return 1 if failures else 0
+
+
+def open_with_errors(path):
+    """OpenDataFile, updated; its reader's error messages; its output."""
+    reader = simple.OpenDataFile(path)
+    messages = []
+
+    @calldata_type(VTK_STRING)
+    def keep(caller, event, text):
+        messages.append(text)
+
+    reader.GetClientSideObject().AddObserver("ErrorEvent", keep)
+    reader.UpdatePipeline()
+    return reader, " ".join(messages), servermanager.Fetch(reader)
+
+
+def check_off(tool, plugin, folder, points, polys):
+    simple.LoadPlugin(plugin, remote=False)
+    path = os.path.join(folder, "sphere_mesh.off")
+    with open(path, "w") as handle:
+        handle.write("OFF\n# a sphere, faces clockwise seen from outside\n%d %d 0\n" % (len(points), len(polys)))
+        handle.writelines("%.17g %.17g %.17g\n" % tuple(p) for p in points)
+        handle.writelines("3 %d %d %d\n" % (t[0], t[2], t[1]) for t in polys)
+    reader, errors, mesh = open_with_errors(path)
+    check(reader.GetXMLName() == "OFFMeshReader" and not errors,
+          "OFF: OpenDataFile chose %s (OFFMeshReader), no error" % reader.GetXMLName())
+    normals = mesh.GetPointData().GetNormals()
+    if check(normals is not None and mesh.GetNumberOfPoints() == len(points) and mesh.GetNumberOfPolys() == len(polys),
+             "OFF: %d vertices, %d faces, Normals" % (mesh.GetNumberOfPoints(), mesh.GetNumberOfPolys())):
+        outward = (vtk_to_numpy(mesh.GetPoints().GetData()) * vtk_to_numpy(normals)).sum(axis=1)
+        check((outward > 0).all(), "OFF: clockwise faces, normals turned outward (%d of %d)"
+              % ((outward > 0).sum(), len(outward)))
+    output = os.path.join(folder, "sphere_mesh_off.vtp")
+    done = run(tool, plugin, path, output)
+    if check(done.returncode == 0, "OFF in the tool: exit %d" % done.returncode):
+        count, mean = median_mean_curvature(output)
+        check(count == len(points) and abs(mean - 1.0 / RADIUS) < 0.01,
+              "OFF in the tool: %d points, median mean curvature %.5f (1/%g)" % (count, mean, RADIUS))
+    bad = (("notoff.off", "hello\n", "line 1: 'hello' where the OFF header belongs"),
+           ("short.off", "OFF\n2 0 0\n0 0 0\n1 0\n", "line 4: vertex 1: 2 number(s); a vertex needs x y z"),
+           ("index.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n",
+            "line 6: face 0: '7' is not a vertex index (0 to 2)"),
+           ("truncated.off", "OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", "the file ends after 1 of its 2 faces"))
+    for name, text, expected in bad:
+        path = os.path.join(folder, name)
+        with open(path, "w") as handle:
+            handle.write(text)
+        reader, errors, mesh = open_with_errors(path)
+        check(reader.GetXMLName() == "OFFMeshReader" and (name + ": " + expected) in errors
+              and mesh.GetNumberOfPoints() == 0, "bad OFF %s: %s" % (name, errors.strip().splitlines()[-1:]))
+        done = run(tool, plugin, path, os.path.join(folder, "bad_off.vtp"))
+        check(done.returncode == 2 and expected in done.stderr,
+              "bad OFF %s in the tool: exit %d, %s" % (name, done.returncode, done.stderr.strip().splitlines()[-1:]))
 
 
 if __name__ == "__main__":
