@@ -29,8 +29,9 @@ INPUT may be:
                   columns. Read by the plugin's Point Cloud Text Reader
                   (vtkTextPointCloudReader: its class documentation has the
                   rules for colours and further columns);
-  .off            a triangle mesh: its vertices, with normals computed from
-                  the triangles and turned outwards;
+  .off            a triangle mesh, read by the plugin's OFF Mesh Reader
+                  (vtkOFFMeshReader): its vertices, with normals computed
+                  from the triangles and turned outwards;
   .obj            Wavefront OBJ (ParaView's reader): its vertices, with
                   their normals (vn) if it has them, else normals from its
                   faces as for .off, else (vertices only) estimated ones.
@@ -278,18 +279,23 @@ class ReaderErrors:
         proxy.GetClientSideObject().AddObserver("ErrorEvent", keep)
 
 
+def updated_reader(source):
+    """The plugin's reader source, updated; exits with its messages (file,
+    line, what is wrong) if it failed."""
+    errors = ReaderErrors(source)
+    source.UpdatePipeline()
+    if errors.messages:
+        fail("; ".join(errors.messages))
+    return source
+
+
 def read_text_cloud(path):
     """A source reading a text cloud (x y z nx ny nz ... per line) with the
     plugin's Point Cloud Text Reader (vtkTextPointCloudReader), as the GUI
     does, so that both read the same files alike: a bad line is an error
     naming it, NaN coordinates are kept (and left unestimated), with one
     warning. Exits with the reader's message if it fails."""
-    source = simple.PointCloudTextReader(FileName=path)
-    errors = ReaderErrors(source)
-    source.UpdatePipeline()
-    if errors.messages:
-        fail("; ".join(errors.messages))
-    return source
+    return updated_reader(simple.PointCloudTextReader(FileName=path))
 
 
 PLY_TYPES = {"char": "i1", "int8": "i1", "uchar": "u1", "uint8": "u1", "short": "i2", "int16": "i2",
@@ -358,12 +364,7 @@ def read_off_mesh(path):
     from the triangles turned to point away from the centroid (for a closed,
     roughly star-shaped scan such as the Stanford bunny); without faces,
     none (they are estimated). Exits with the reader's message if it fails."""
-    source = simple.OFFMeshReader(FileName=path)
-    errors = ReaderErrors(source)
-    source.UpdatePipeline()
-    if errors.messages:
-        fail("; ".join(errors.messages))
-    return source
+    return updated_reader(simple.OFFMeshReader(FileName=path))
 
 
 def with_outward_normals(mesh):
