@@ -112,7 +112,9 @@ std::string ParseOffMesh(const char* data, std::size_t size, OffMesh& mesh)
   {
     return lines.At() + "the counts 'vertices faces [edges]' expected, found " + Quoted(words[0]);
   }
-  mesh.Points.reserve(3 * static_cast<std::size_t>(std::min<std::int64_t>(vertices, 1 << 26)));
+  // A vertex line takes at least 6 bytes ("0 0 0\n"): a count beyond what
+  // the file can hold must not reserve memory for it.
+  mesh.Points.reserve(3 * std::min(static_cast<std::size_t>(vertices), size / 6 + 1));
   for (std::int64_t v = 0; v < vertices; ++v)
   {
     if (!lines.Next(words))

@@ -154,6 +154,10 @@ void TestOffMeshes(Checks& checks)
   checks.True("bad counts", Contains(OffError("OFF\nfour 4 6\n"), "line 2: the counts"));
   checks.True("a short vertex",
     OffError("OFF\n2 0 0\n0 0 0\n1 0\n") == "line 4: vertex 1: 2 number(s); a vertex needs x y z");
+  // Found by fuzzing: a huge count in a tiny file reserved memory for it.
+  checks.True("a vertex count beyond the file's size",
+    OffError("OFF\n777777777888885 0\n") ==
+      "the file ends after 0 of its 777777777888885 vertices");
   checks.True("missing vertices",
     OffError("OFF\n3 0 0\n0 0 0\n") == "the file ends after 1 of its 3 vertices");
   checks.True("an index out of range",
