@@ -116,8 +116,11 @@ def plain_vtk_messages():
         @calldata_type(VTK_STRING)
         def observer(caller, event, text):
             # Straight to the stream: printing through Python's sys.stderr
-            # from here can re-enter VTK's output window.
-            sys.__stderr__.write("estimate_curvatures: %s: %s\n" % (kind, vtk_message_text(text)))
+            # from here can re-enter VTK's output window. A progress line
+            # being drawn is ended first, so the message starts a line.
+            start = "\n" if Progress.line_open else ""
+            Progress.line_open = False
+            sys.__stderr__.write("%sestimate_curvatures: %s: %s\n" % (start, kind, vtk_message_text(text)))
             sys.__stderr__.flush()
         return observer
 
@@ -517,6 +520,8 @@ def configure_normals(curvatures, arguments, normals):
 class Progress:
     """Stage lines and a progress line on stderr, or nothing."""
 
+    line_open = False  # a stage's line is drawn and not yet ended
+
     def __init__(self, shown):
         self.shown = shown
         self.stage = None
@@ -528,6 +533,7 @@ class Progress:
         if self.shown:
             sys.stderr.write(stage + " ...")
             sys.stderr.flush()
+            Progress.line_open = True
 
     def watch(self, proxy):
         """Shows the progress of the proxy's filter while it runs (its
@@ -541,11 +547,13 @@ class Progress:
         if self.shown and percent != self.percent:
             self.percent = percent
             sys.stderr.write("\r%s ... %3d %%" % (self.stage, percent))
+            Progress.line_open = True
             sys.stderr.flush()
 
     def end(self):
         if self.shown and self.stage:
             sys.stderr.write("\r%s ... done%s\n" % (self.stage, " " * 4))
+            Progress.line_open = False
             sys.stderr.flush()
         self.stage = None
 
