@@ -4,7 +4,11 @@
 #include "vtkCellData.h"
 #include "vtkCommunicator.h"
 #include "vtkDataArray.h"
+#include "vtkFieldData.h"
 #include "vtkIdTypeArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkStringArray.h"
 #include "vtkTypeInt32Array.h"
 #include "vtkTypeInt64Array.h"
 #include "vtkMultiProcessController.h"
@@ -20,12 +24,44 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdlib>
 #include <future>
 #include <string>
 
 namespace pcurv
 {
+
+void AddCurvatureUnit(vtkPolyData* output)
+{
+  vtkNew<vtkStringArray> unit;
+  unit->SetName("Curvature_Unit");
+  unit->InsertNextValue("1/length unit of the input coordinates");
+  output->GetFieldData()->AddArray(unit);
+}
+
+void SetSymmetricRange(vtkDataArray* array, double clip)
+{
+  if (!array || array->GetNumberOfComponents() != 1 || !(clip > 0.0) || !std::isfinite(clip))
+  {
+    return;
+  }
+  // Computing the ranges once makes VTK create the per-component
+  // information that holds them; then they are replaced.
+  double range[2];
+  array->GetRange(range, 0);
+  array->GetFiniteRange(range, 0);
+  const double symmetric[2] = { -clip, clip };
+  for (vtkInformationInformationVectorKey* key :
+    { vtkAbstractArray::PER_COMPONENT(), vtkAbstractArray::PER_FINITE_COMPONENT() })
+  {
+    vtkInformationVector* components = array->GetInformation()->Get(key);
+    if (components && components->GetNumberOfInformationObjects() > 0)
+    {
+      components->GetInformationObject(0)->Set(vtkDataArray::COMPONENT_RANGE(), symmetric, 2);
+    }
+  }
+}
 
 CloudPoints ReadCloud(vtkPointSet* input, vtkDataArray* normals)
 {

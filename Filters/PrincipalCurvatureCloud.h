@@ -54,6 +54,22 @@ private:
 /// so that a cloud shows in a render view.
 void CopyGeometry(vtkPointSet* input, vtkPolyData* output);
 
+/// What the curvature arrays are measured in, as ParaView shows it (the
+/// Information panel lists field data): the string array Curvature_Unit,
+/// "1/length unit of the input coordinates".
+void AddCurvatureUnit(vtkPolyData* output);
+
+/**
+ * The range that VTK reports for `array` (and ParaView colours a new
+ * display over), set to [-clip, clip]: symmetric about zero, so that a
+ * diverging colour map's middle (white in Cool to Warm) is zero even where
+ * only one tail was clipped (a torus's mean curvature is positive
+ * everywhere, and its clipped array's own range put white at +0.31). VTK
+ * keeps the range in the array's information and forgets it when the array
+ * is modified. Nothing is set for a clip that is zero or not finite.
+ */
+void SetSymmetricRange(vtkDataArray* array, double clip);
+
 /// Progress from the core's threads, passed to a filter on the thread that
 /// runs the filter: ParaView shows progress, and honours Abort, only from
 /// there. The filter's abort flag travels back the same way.

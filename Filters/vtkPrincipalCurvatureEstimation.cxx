@@ -363,6 +363,10 @@ int vtkPrincipalCurvatureEstimation::RequestData(vtkInformation*,
   // colour, and its structure rather than a few outliers.
   output->GetPointData()->SetActiveScalars(
     this->DiagnosticArrays ? "Mean_Curvature_Clipped" : "Mean_Curvature");
+  // White (zero) in the middle of the colours, whichever tail was clipped.
+  pcurv::SetSymmetricRange(
+    output->GetPointData()->GetArray("Mean_Curvature_Clipped"), summary.MeanCurvatureClip);
+  pcurv::AddCurvatureUnit(output);
   return 1;
 }
 

@@ -34,8 +34,13 @@
  * - Curvature_Valid (unsigned char): 1 where estimated, 0 where not (then the
  *   curvatures are NaN and the directions zero vectors).
  * - Neighbor_Count (int), Valid_Direction_Count (int, 0..16),
- *   Sine_Fit_RMS (1/length), Surroundings_Threshold and
- *   Plane_Distance_Threshold (the lengths used at the point).
+ *   Sine_Fit_RMS (1/length), Surroundings_Threshold (the neighborhood
+ *   radius at the point: its Neighbor_Count neighbors are closer than it)
+ *   and Plane_Distance_Threshold (lengths, in the input's unit).
+ * - Field data: Curvature_Unit (string, "1/length unit of the input
+ *   coordinates") and the Unestimated_* counts. The range reported for
+ *   Mean_Curvature_Clipped is [-c, c], symmetric about zero, so that a
+ *   diverging colour map shows zero as its middle colour.
  * - Target_Neighbor_Count (int), with DynamicAdjustment only: the count the
  *   adjustment aimed at for the point (its target combination's N_t; 0
  *   where the point has no usable coordinate or normal).

@@ -46,13 +46,24 @@
  * (so that it renders) and the arrays above. Piece requests are honoured: piece
  * p of n gets the p-th of n consecutive ranges of the points.
  *
- * Errors (a missing or unreadable file, a non-numeric word, a line with a
- * different number of columns than the first, fewer than 3 columns, no
- * points) are reported with vtkErrorMacro naming the file and the line
- * number; the output is then empty and GetErrorCode() is not
- * vtkErrorCode::NoError (CannotOpenFileError, FileFormatError, ...).
- * RequestData still returns success, so that the pipeline adds no second,
- * unhelpful message; check the point count or the error code.
+ * Errors: a missing or unreadable file, an empty file, a binary file, a
+ * non-numeric word, fewer than 3 numbers on the first data line, a line
+ * with a different number of columns than the first, no line of numbers
+ * (only comments, a point count or a header), an XYZ molecule file. Each is
+ * reported with vtkErrorMacro naming the file, the line number where a
+ * line is to blame, and what is wrong; the output is then empty and
+ * GetErrorCode() is not vtkErrorCode::NoError (CannotOpenFileError,
+ * FileFormatError, ...). RequestData still returns success, so that the
+ * pipeline adds no second, unhelpful message; check the point count or the
+ * error code. The parsing itself is pcurv::ParseTextCloud
+ * (Filters/Core/TextPointCloud.h, no VTK).
+ *
+ * NaN or infinite numbers are numbers: a point with such a coordinate is
+ * kept, with one warning for all of them naming the first line (the
+ * curvature filter leaves such points unestimated and counts them in
+ * Unestimated_Bad_Coordinate); a line with too few numbers is an error at
+ * that line, never skipped. The command-line tool reads text through this
+ * reader, so the same policy holds there.
  *
  * @sa vtkSimplePointsReader vtkDelimitedTextReader
  */
@@ -61,6 +72,14 @@
 
 #include "vtkPolyDataAlgorithm.h"
 #include "vtkPrincipalCurvatureFiltersModule.h" // for export macro
+
+#include <cstddef> // for std::size_t
+#include <vector>  // for the lines of WarnAboutNonFinitePositions
+
+namespace pcurv
+{
+struct TextCloud;
+}
 
 class VTKPRINCIPALCURVATUREFILTERS_EXPORT vtkTextPointCloudReader : public vtkPolyDataAlgorithm
 {
@@ -76,10 +95,14 @@ public:
   ///@}
 
   /**
-   * 1 if the file exists and its first data line (after comments, a point
-   * count and a header of names) holds at least 3 numbers, else 0. Reads only
-   * the start of the file. ParaView's reader factory asks it before choosing
-   * this reader.
+   * Whether to offer this reader for the file; ParaView's reader factory
+   * asks before choosing it. A .xyz, .pwn or .pts file: 1 whatever it holds
+   * (a bad one then gets this reader's error naming the line, rather than
+   * reaching the PLOT3D reader, which crashes on text), except a binary
+   * file that starts as a PLOT3D grid. Any other file (.txt, shared with the
+   * CSV reader, .csv): 1 only if its first data line (after comments, a
+   * point count and a header of names) holds at least 3 numbers, so that
+   * tables stay with the CSV reader. Reads only the start of the file.
    */
   int CanReadFile(const char* fileName);
 
@@ -93,6 +116,11 @@ protected:
   char* FileName = nullptr;
 
 private:
+  /// Reads and parses the file; false after reporting what is wrong.
+  bool ReadCloud(pcurv::TextCloud& cloud);
+  /// One warning for all points with a NaN or infinite coordinate.
+  void WarnAboutNonFinitePositions(const std::vector<std::size_t>& lines);
+
   vtkTextPointCloudReader(const vtkTextPointCloudReader&) = delete;
   void operator=(const vtkTextPointCloudReader&) = delete;
 };

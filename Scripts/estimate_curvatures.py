@@ -34,8 +34,12 @@ INPUT may be:
                   columns. Read by the plugin's Point Cloud Text Reader
                   (vtkTextPointCloudReader: its class documentation has the
                   rules for colours and further columns);
-  .off            a triangle mesh: its vertices, with normals computed from
-                  the triangles and turned outwards.
+  .off            a triangle mesh, read by the plugin's OFF Mesh Reader
+                  (vtkOFFMeshReader): its vertices, with normals computed
+                  from the triangles and turned outwards;
+  .obj            Wavefront OBJ (ParaView's reader): its vertices, with
+                  their normals (vn) if it has them, else normals from its
+                  faces as for .off, else (vertices only) estimated ones.
 
 Writes OUTPUT with the input's arrays and the curvature arrays, in the
 format of its extension: .vtp (VTK XML, inline binary); .ply (binary little
@@ -72,7 +76,7 @@ DEFAULT_PLUGIN = os.path.join(
     REPOSITORY, "build", "lib", "paraview-plugins", "PrincipalCurvatures", "PrincipalCurvatures.so")
 TEXT_EXTENSIONS = (".xyz", ".pwn", ".txt", ".pts", ".csv")
 LAS_EXTENSIONS = (".las", ".laz")
-INPUT_EXTENSIONS = (".vtp", ".vtu", ".ply") + LAS_EXTENSIONS + (".off",) + TEXT_EXTENSIONS
+INPUT_EXTENSIONS = (".vtp", ".vtu", ".ply") + LAS_EXTENSIONS + (".off", ".obj") + TEXT_EXTENSIONS
 OUTPUT_EXTENSIONS = (".vtp", ".ply", ".csv")
 FIT_MODES = ("Previous", "New01", "New02", "OrientedCircles")
 
@@ -86,6 +90,48 @@ def fail(message):
     """Prints message to stderr and exits with status 2."""
     sys.stderr.write("estimate_curvatures: error: %s\n" % message)
     sys.exit(2)
+
+
+# ---------------------------------------------------------------------------
+# VTK's messages
+
+
+def vtk_message_text(text):
+    """A VTK error or warning as one plain line: without the "ERROR: In
+    file, line N" preamble and the object's address."""
+    import re
+
+    text = re.sub(r"^(ERROR|Warning|Generic Warning): In [^\n]*\n", "", text.strip())
+    return re.sub(r"^(\w+) \(0x[0-9a-fA-F]+\): ", r"\1: ", text).strip()
+
+
+def plain_vtk_messages():
+    """Shows VTK's errors and warnings as plain "estimate_curvatures: error:
+    ..." lines on stderr: VTK's own log lines carry a time and thread
+    prefix and terminal colour codes, even into a pipe or a file. Fatal
+    messages (a crash's stack trace) still go through VTK's log."""
+    from vtkmodules.util.misc import calldata_type
+    from vtkmodules.vtkCommonCore import VTK_STRING, vtkLogger, vtkOutputWindow
+
+    fatal = vtkLogger.ConvertToVerbosity(-3)  # loguru's FATAL, not wrapped by name
+    vtkLogger.SetStderrVerbosity(fatal)
+    window = vtkOutputWindow.GetInstance()
+    window.SetDisplayModeToNever()  # the events below still fire
+
+    def show(kind):
+        @calldata_type(VTK_STRING)
+        def observer(caller, event, text):
+            # Straight to the stream: printing through Python's sys.stderr
+            # from here can re-enter VTK's output window. A progress line
+            # being drawn is ended first, so the message starts a line.
+            start = "\n" if Progress.line_open else ""
+            Progress.line_open = False
+            sys.__stderr__.write("%sestimate_curvatures: %s: %s\n" % (start, kind, vtk_message_text(text)))
+            sys.__stderr__.flush()
+        return observer
+
+    window.AddObserver("ErrorEvent", show("error"))
+    window.AddObserver("WarningEvent", show("warning"))
 
 
 # ---------------------------------------------------------------------------
@@ -208,11 +254,40 @@ def normal_columns(names):
     return position, None
 
 
+class ReaderErrors:
+    """The error messages of a reader's VTK object, kept to be reported as
+    the tool's own (the reader then prints none itself)."""
+
+    def __init__(self, proxy):
+        from vtkmodules.util.misc import calldata_type
+        from vtkmodules.vtkCommonCore import VTK_STRING
+
+        self.messages = []
+
+        @calldata_type(VTK_STRING)
+        def keep(caller, event, text):
+            self.messages.append(vtk_message_text(text).split(": ", 1)[-1])
+
+        proxy.GetClientSideObject().AddObserver("ErrorEvent", keep)
+
+
+def updated_reader(source):
+    """The plugin's reader source, updated; exits with its messages (file,
+    line, what is wrong) if it failed."""
+    errors = ReaderErrors(source)
+    source.UpdatePipeline()
+    if errors.messages:
+        fail("; ".join(errors.messages))
+    return source
+
+
 def read_text_cloud(path):
     """A source reading a text cloud (x y z nx ny nz ... per line) with the
-    plugin's Point Cloud Text Reader (vtkTextPointCloudReader); it reports
-    a bad line with its number and then gives no points."""
-    return simple.PointCloudTextReader(FileName=path)
+    plugin's Point Cloud Text Reader (vtkTextPointCloudReader), as the GUI
+    does, so that both read the same files alike: a bad line is an error
+    naming it, NaN coordinates are kept (and left unestimated), with one
+    warning. Exits with the reader's message if it fails."""
+    return updated_reader(simple.PointCloudTextReader(FileName=path))
 
 
 READER_ERRORS = {}  # the plugin readers' error messages, by file
@@ -245,35 +320,23 @@ def read_point_cloud_file(path, extension):
 
 
 def read_off_mesh(path):
-    """The vertices of an OFF triangle mesh, with point normals computed from
-    the triangles and turned to point away from the centroid (for a closed,
-    roughly star-shaped scan such as the Stanford bunny)."""
+    """An OFF triangle mesh with the plugin's OFF Mesh Reader
+    (vtkOFFMeshReader), as the GUI reads it: its vertices, with point normals
+    from the triangles turned to point away from the centroid (for a closed,
+    roughly star-shaped scan such as the Stanford bunny); without faces,
+    none (they are estimated). Exits with the reader's message if it fails."""
+    return updated_reader(simple.OFFMeshReader(FileName=path))
+
+
+def with_outward_normals(mesh):
+    """The polydata mesh with point normals computed from its polygons,
+    made consistent, and turned to point away from the centroid."""
     import numpy
     from vtkmodules.numpy_interface import dataset_adapter
-    from vtkmodules.util.numpy_support import numpy_to_vtkIdTypeArray
-    from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
     from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
 
-    with open(path) as handle:
-        words = [line.split("#")[0].split() for line in handle]
-    words = [w for w in words if w]
-    if not words or words[0][0] != "OFF":
-        fail("%s: not an OFF file" % path)
-    header = words[1] if len(words[0]) == 1 else words[0][1:]
-    first = 2 if len(words[0]) == 1 else 1
-    vertices, faces = int(header[0]), int(header[1])
-    points = numpy.array([[float(v) for v in row[:3]] for row in words[first:first + vertices]])
-    polygons = [[int(v) for v in row[:1 + int(row[0])]] for row in words[first + vertices:first + vertices + faces]]
-    if not polygons:
-        fail("%s: an OFF mesh without faces has no normals" % path)
-    mesh = dataset_adapter.WrapDataObject(vtkPolyData())
-    mesh.Points = points
-    cells = vtkCellArray()
-    legacy = numpy.concatenate(polygons).astype(numpy.int64)  # count, ids, count, ids, ...
-    cells.ImportLegacyFormat(numpy_to_vtkIdTypeArray(legacy, deep=True))
-    mesh.VTKObject.SetPolys(cells)
     normals = vtkPolyDataNormals()
-    normals.SetInputData(mesh.VTKObject)
+    normals.SetInputData(mesh)
     normals.ComputePointNormalsOn()
     normals.ComputeCellNormalsOff()
     normals.SplittingOff()
@@ -283,7 +346,23 @@ def read_off_mesh(path):
     outward = ((cloud.Points - cloud.Points.mean(axis=0)) * cloud.PointData["Normals"]).sum(axis=1)
     if numpy.median(outward) < 0:
         cloud.PointData["Normals"][:] *= -1
-    return producer_of(cloud.VTKObject)
+    return cloud.VTKObject
+
+
+def read_obj(path):
+    """A Wavefront OBJ file with ParaView's reader: its vertices, with their
+    normals (vn) where the file gives them; else, for a mesh, normals from
+    its faces as for OFF; else (vertices only) none, for the filter to
+    estimate."""
+    source = simple.WavefrontOBJReader(FileName=path)
+    source.UpdatePipeline()
+    mesh = servermanager.Fetch(source)
+    if mesh is None or mesh.GetNumberOfPoints() == 0:
+        fail("%s: no vertices (not an OBJ file, or an empty one; see the messages above)" % path)
+    if mesh.GetPointData().GetNormals() is None and mesh.GetNumberOfPolys() > 0:
+        print("normals from the OBJ faces")
+        return producer_of(with_outward_normals(mesh))
+    return source
 
 
 def point_arrays(source):
@@ -344,6 +423,8 @@ def open_cloud(path):
         source = read_text_cloud(path)
     elif extension == ".off":
         source = read_off_mesh(path)
+    elif extension == ".obj":
+        source = read_obj(path)
     else:
         fail("unknown input type '%s' of %s (use %s)" % (extension, path, " ".join(INPUT_EXTENSIONS)))
     source.UpdatePipeline()  # fills the array lists the filter's Normals domain reads
@@ -395,6 +476,8 @@ def configure_normals(curvatures, arguments, normals):
 class Progress:
     """Stage lines and a progress line on stderr, or nothing."""
 
+    line_open = False  # a stage's line is drawn and not yet ended
+
     def __init__(self, shown):
         self.shown = shown
         self.stage = None
@@ -406,6 +489,7 @@ class Progress:
         if self.shown:
             sys.stderr.write(stage + " ...")
             sys.stderr.flush()
+            Progress.line_open = True
 
     def watch(self, proxy):
         """Shows the progress of the proxy's filter while it runs (its
@@ -419,11 +503,13 @@ class Progress:
         if self.shown and percent != self.percent:
             self.percent = percent
             sys.stderr.write("\r%s ... %3d %%" % (self.stage, percent))
+            Progress.line_open = True
             sys.stderr.flush()
 
     def end(self):
         if self.shown and self.stage:
             sys.stderr.write("\r%s ... done%s\n" % (self.stage, " " * 4))
+            Progress.line_open = False
             sys.stderr.flush()
         self.stage = None
 
@@ -521,11 +607,20 @@ def summarize(output, seconds, description):
         if name.startswith("Unestimated_") and name != "Unestimated_Points" and count > 0:
             print("%-26s %d" % ("  " + name[len("Unestimated_"):].replace("_", " ").lower(), count))
     if estimated:
-        for name in ("Neighbor_Count", "Surroundings_Threshold", "Plane_Distance_Threshold"):
+        # Surroundings_Threshold is each point's neighborhood radius, the
+        # distance within which its Neighbor_Count neighbors lie.
+        rows = (("Neighbor_Count", "Neighbor_Count", ""),
+                ("Surroundings_Threshold", "neighborhood radius", "; Surroundings_Threshold, a length"),
+                ("Plane_Distance_Threshold", "Plane_Distance_Threshold", ""))
+        for name, label, note in rows:
             if data.GetArray(name) is None:
                 continue
-            print("%-26s %.6g (median)" % (name, numpy.median(array(name)[valid])))
+            print("%-26s %.6g (median%s)" % (label, numpy.median(array(name)[valid]), note))
     print("%-26s %.3f s" % ("filter time", seconds))
+    unit = field.GetAbstractArray("Curvature_Unit")
+    if unit is not None and unit.GetNumberOfValues():
+        # Lengths (radius, coordinates) are in the input's unit, curvatures in its inverse.
+        print("%-26s %s (Gauss_Curvature: its square)" % ("curvature unit", unit.GetValue(0)))
     if not estimated:
         sys.stderr.write("estimate_curvatures: warning: no point was estimated (too few neighbors? "
                          "try a larger --radius or --neighbors)\n")
@@ -705,11 +800,16 @@ def write_output(curvatures, result, normals, path, compress=False, single=False
 
 
 def main(argv):
+    # pvpython's sys.stdout and sys.stderr send text through VTK's output
+    # window (for the GUI's message window), which plain_vtk_messages
+    # silences: a command-line tool writes to the streams themselves.
+    sys.stdout, sys.stderr = sys.__stdout__, sys.__stderr__
     arguments = parse_arguments(argv)
     output_folder = os.path.dirname(os.path.abspath(arguments.output))
     if not os.path.isdir(output_folder):
         fail("the output's folder does not exist: %s" % output_folder)
     progress = Progress(arguments.progress)
+    plain_vtk_messages()
     load_plugin(arguments.plugin)
     progress.begin("reading %s" % arguments.input)
     source = open_cloud(arguments.input)

@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
-# Builds the libFuzzer target on the numeric core (Testing/Fuzz, clang with
+# Builds the libFuzzer targets on the numeric core (Testing/Fuzz, clang with
 # ASan and UBSan) in build-fuzz/, then
 #  1. replays every input in Testing/Fuzz/regressions (inputs that once
 #     crashed, hung or broke an invariant: each must now pass), and
 #  2. fuzzes for a bounded time from the corpus kept in Testing/Fuzz/corpus
 #     (read only: new inputs go to build-fuzz/new-corpus, crashes to
 #     build-fuzz/crash-*, hangs of more than 10 s to build-fuzz/timeout-*).
-# Fails when either step finds a crash, a hang, undefined behaviour or a
+#  3. fuzzes the file parsers (text clouds, OFF) for a quarter of the time.
+# Fails when any step finds a crash, a hang, undefined behaviour or a
 # broken invariant.
 #   Scripts/fuzz.sh [seconds=60]
 # PCURV_FUZZ_SKIP_KNOWN_BUGS=1 keeps the fuzzer away from overflowing grid
@@ -30,8 +31,9 @@ nice cmake -S . -B build-fuzz -DPCURV_CORE_ONLY=ON -DCMAKE_BUILD_TYPE=None \
   -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_FLAGS="$flags" \
   -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \
   -DPCURV_FUZZ_SKIP_KNOWN_BUGS="${PCURV_FUZZ_SKIP_KNOWN_BUGS:-0}" > /dev/null
-nice cmake --build build-fuzz -j 2 --target FuzzCurvatureCore
+nice cmake --build build-fuzz -j 2 --target FuzzCurvatureCore FuzzFileParsing
 cp build-fuzz/Testing/Fuzz/FuzzCurvatureCore build-fuzz/FuzzCurvatureCore
+cp build-fuzz/Testing/Fuzz/FuzzFileParsing build-fuzz/FuzzFileParsing
 built=$(date +%s)
 export ASAN_OPTIONS="abort_on_error=1:halt_on_error=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
@@ -62,6 +64,18 @@ if ! nice ./build-fuzz/FuzzCurvatureCore -max_total_time="$seconds" -max_len=409
 else
   grep -E "^#[0-9]+ +DONE|stat::number_of_executed_units" build-fuzz/fuzz.log || true
   echo "fuzzing: no crash, hang or broken invariant in ${seconds} s"
+fi
+# 3. The file parsers behind the readers (text clouds, OFF meshes), a
+#    quarter of the time, from no corpus (their inputs are short text).
+parse_seconds=$(( seconds / 4 > 15 ? seconds / 4 : 15 ))
+mkdir -p build-fuzz/parse-corpus
+if ! nice ./build-fuzz/FuzzFileParsing -max_total_time="$parse_seconds" -max_len=2048 -timeout=10 \
+  -rss_limit_mb=1024 -artifact_prefix=build-fuzz/parse- build-fuzz/parse-corpus > build-fuzz/parse.log 2>&1; then
+  grep -E "runtime error|invariant broken|ALARM|ERROR|Test unit written" build-fuzz/parse.log | head -5
+  echo "fuzzing the file parsers: FAILED (log in build-fuzz/parse.log)"
+  failed=1
+else
+  echo "fuzzing the file parsers: no crash, hang or broken invariant in ${parse_seconds} s"
 fi
 echo "fuzz: build $((built - start)) s, regressions and fuzzing $(($(date +%s) - built)) s"
 exit $failed

@@ -2,7 +2,12 @@
 the maximum principal direction. Needs an X display (xvfb-run works):
 
     xvfb-run -a pvpython Scripts/render_principal_directions.py INPUT OUTPUT.png
-        [--fit-mode New02] [--color Mean_Curvature] [--glyph-every 8] [--view x,y,z]
+        [--fit-mode OrientedCircles|Previous|New01|New02] [--color Mean_Curvature]
+        [--glyph-every 8] [--view x,y,z]
+
+The fit is the filter's default, OrientedCircles with the automatic
+neighborhood, unless --fit-mode names one of the paper's (which then use a
+radius holding about 375 neighbors).
 
 INPUT: any cloud Scripts/estimate_curvatures.py reads (.vtp .vtu .ply .off
 .xyz .pwn .txt .csv).
@@ -18,24 +23,32 @@ import estimate_curvatures  # noqa: E402  (reading clouds, loading the plugin)
 from paraview import simple  # noqa: E402
 
 
-def main(argv):
+def parse_arguments(argv):
+    """The command line (also read by Testing/Python/TestSettingsAgree.py)."""
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("input")
     parser.add_argument("output", help="picture (.png)")
-    parser.add_argument("--fit-mode", choices=["Previous", "New01", "New02"], default="New01")
+    parser.add_argument("--fit-mode", choices=estimate_curvatures.FIT_MODES, default="OrientedCircles",
+                        help="the fit (default: %(default)s, the filter's default)")
     parser.add_argument("--color", default="Mean_Curvature", help="array to colour by")
     parser.add_argument("--glyph-every", type=int, default=6, help="a glyph on every n-th point")
     parser.add_argument("--view", default="0,0,1", help="camera direction towards the object, x,y,z")
     parser.add_argument("--up", default="0,1,0", help="camera up vector, x,y,z")
     parser.add_argument("--size", default="1600,1200")
     parser.add_argument("--plugin", default=estimate_curvatures.DEFAULT_PLUGIN)
-    arguments = parser.parse_args(argv)
+    return parser.parse_args(argv)
+
+
+def main(argv):
+    arguments = parse_arguments(argv)
 
     estimate_curvatures.load_plugin(arguments.plugin)
     source = estimate_curvatures.open_cloud(arguments.input)
     source.UpdatePipeline()
     curvatures = simple.PrincipalCurvatures(Input=source, FitMode=arguments.fit_mode)
-    curvatures.Normals = ["POINTS", estimate_curvatures.choose_normals(source, None)]
+    normals = estimate_curvatures.choose_normals(source, None)
+    if normals:  # else the filter estimates them (NormalsSource Automatic)
+        curvatures.Normals = ["POINTS", normals]
     curvatures.UpdatePipeline()
     spacing = curvatures.GetDataInformation().DataInformation.GetBounds()
     diagonal = sum((spacing[2 * k + 1] - spacing[2 * k]) ** 2 for k in range(3)) ** 0.5

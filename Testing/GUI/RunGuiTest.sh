@@ -33,12 +33,17 @@ case "$marker" in ok*) ;; *) status=1; tail -n 20 "$work/paraview.log" ;; esac
 # A normals-less .xyz: read by the plugin's reader, normals estimated.
 case "$marker" in *"reader ASCIIPointCloudReader, normals estimated True, coloured by Mean_Curvature_Clipped, representation 'Points'"*) ;;
   *) echo "FAILED: the .xyz was not read by the plugin's reader with estimated normals and shown as points coloured by Mean_Curvature_Clipped"; status=1 ;; esac
-# The colour range is the clipped array's, within the mean curvature's range.
+# The colour range is the clipped array's: symmetric about zero (white is
+# zero curvature, although this torus's mean curvature is positive
+# everywhere), its end the clip, at most a histogram bin (2^(1/16), 4.4 %)
+# beyond the largest |mean curvature|.
 read -r low high mean_low mean_high <<< "$(sed -n 's/.*colour range \([^ ]*\) \([^,]*\), mean curvature \([^ ]*\) \([^,]*\),.*/\1 \2 \3 \4/p' <<< "$marker")"
-if awk -v l="$low" -v h="$high" -v ml="$mean_low" -v mh="$mean_high" 'BEGIN { exit !(l < h && l >= ml && h <= mh) }'; then
-  echo "colour range $low $high within the mean curvature's $mean_low $mean_high"
+if awk -v l="$low" -v h="$high" -v ml="$mean_low" -v mh="$mean_high" 'BEGIN {
+    m = (mh > -ml) ? mh : -ml; d = l + h; if (d < 0) d = -d
+    exit !(h > 0 && d <= 1e-6 * h && h <= 1.05 * m) }'; then
+  echo "colour range $low $high symmetric about zero (mean curvature $mean_low $mean_high)"
 else
-  echo "FAILED: colour range '$low' '$high' (mean curvature '$mean_low' '$mean_high')"
+  echo "FAILED: colour range '$low' '$high' not symmetric about zero (mean curvature '$mean_low' '$mean_high')"
   status=1
 fi
 if [ ! -s "$screenshot" ]; then
@@ -49,6 +54,7 @@ fi
 # is too small for OCR at screen size.
 convert "$screenshot" -crop 300x1000+0+0 +repage -resize 300% -colorspace Gray "$work/panel.png"
 text=$(tesseract "$work/panel.png" - 2>/dev/null)
+[ -n "${GUI_TEST_DUMP_OCR:-}" ] && printf "%s\n" "$text" > "$GUI_TEST_DUMP_OCR"
 for label in "Fit Mode" "Dynamic Adjustment" "Automatic Thresholds" "Neighborhood" "Fitting"; do
   if grep -q "$label" <<< "$text"; then
     echo "panel shows: $label"
@@ -57,6 +63,15 @@ for label in "Fit Mode" "Dynamic Adjustment" "Automatic Thresholds" "Neighborhoo
     status=1
   fi
 done
+# Settings the default mode (OrientedCircles, Automatic neighborhood) does
+# not use are hidden. OCR wraps long labels ("Number Of" / "Neighbors"),
+# and no other label shown by default has the word.
+if grep -qi "Neighbors" <<< "$text"; then
+  echo "FAILED: the panel shows 'Number Of Neighbors', which the default mode does not use"
+  status=1
+else
+  echo "panel hides: Number Of Neighbors"
+fi
 grep -q "PrincipalCurvatures1" <<< "$text" && echo "pipeline browser shows PrincipalCurvatures1" ||
   { echo "FAILED: no PrincipalCurvatures1 in the pipeline browser"; status=1; }
 # The render view (right of the panels): the cloud coloured by curvature

@@ -9,6 +9,8 @@ include C++ are checked against it here:
   larger one is kept and clamped by the filter);
 - the command-line tool's --dynamic-adjustment table equals the presets;
 - the XML's documentation quotes the banded ladder's switch lengths.
+- render_principal_directions.py defaults to the filter's fit and takes every
+  fit mode; no document calls another fit the default.
 
     pvpython TestSettingsAgree.py PLUGIN.xml estimate_curvatures.py
 (with the wrapped package on PYTHONPATH)
@@ -107,6 +109,35 @@ ladder.SetAdjustmentConstantsToPreset(ladder.LADDER)
 switches = " ".join("%g" % v for v in ladder.GetSwitchLengths())
 documentation = " ".join(" ".join(d.text.split()) for d in proxy.iter("Documentation") if d.text)
 check(switches in documentation, "the XML documentation quotes the ladder's switch lengths %s" % switches)
+
+# The default fit as the tools and the documentation state it.
+import os
+import re
+
+fit_names = {int(e.get("value")): e.get("text")
+             for p in proxy if p.get("name") == "FitMode" for e in p.iter("Entry")}
+default_fit = fit_names[vtkPrincipalCurvatureEstimation().GetFitMode()]
+render_path = os.path.join(os.path.dirname(cli_path), "render_principal_directions.py")
+spec = importlib.util.spec_from_file_location("render_principal_directions", render_path)
+render = importlib.util.module_from_spec(spec)
+spec.loader.exec_module(render)
+rendered = render.parse_arguments(["in.vtp", "out.png"])
+check(rendered.fit_mode == default_fit, "render_principal_directions.py: default --fit-mode %s (the filter's %s)"
+      % (rendered.fit_mode, default_fit))
+check(sorted(render.parse_arguments(["a", "b", "--fit-mode", name]).fit_mode for name in fit_names.values())
+      == sorted(fit_names.values()), "render_principal_directions.py: --fit-mode takes %s"
+      % " ".join(sorted(fit_names.values())))
+# Stale claims that another fit is the default ("Default fit mode New01",
+# "SetFitModeToNew01(); // the default", "New01 (the default)").
+repository = os.path.dirname(os.path.dirname(os.path.abspath(cli_path)))
+documents = [os.path.join(repository, "README.md")] + [
+    os.path.join(repository, "docs", name) for name in sorted(os.listdir(os.path.join(repository, "docs")))
+    if name.endswith(".md")]
+for name in (n for n in fit_names.values() if n != default_fit):
+    claim = re.compile(r"default fit mode:?\s+\**%s\b|%s\b[^.]*\bthe default\b" % (name, name), re.IGNORECASE)
+    stale = ["%s:%d" % (os.path.relpath(path, repository), number)
+             for path in documents for number, line in enumerate(open(path), 1) if claim.search(line)]
+    check(not stale, "no document calls %s the default (%s)" % (name, " ".join(stale) or "none"))
 
 print("%d failed" % len(failures))
 sys.exit(1 if failures else 0)

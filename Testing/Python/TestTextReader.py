@@ -26,6 +26,7 @@ Every check prints one line; the exit code is 0 when all pass, 1 otherwise.
 """
 
 import os
+import re
 import shutil
 import subprocess
 import struct
@@ -49,16 +50,22 @@ def write(folder, name, text, mode="w"):
 
 
 class Errors:
-    """Collects the error messages of a reader's VTK object (builtin
-    session: the client-side object is the reader)."""
+    """Collects the error (and, apart, warning) messages of a reader's VTK
+    object (builtin session: the client-side object is the reader)."""
 
     def __init__(self, proxy):
         self.messages = []
+        self.warnings = []
         proxy.GetClientSideObject().AddObserver("ErrorEvent", self.on_error)
+        proxy.GetClientSideObject().AddObserver("WarningEvent", self.on_warning)
 
     @calldata_type(VTK_STRING)
     def on_error(self, caller, event, message):
         self.messages.append(message)
+
+    @calldata_type(VTK_STRING)
+    def on_warning(self, caller, event, message):
+        self.warnings.append(message)
 
     def text(self):
         return " ".join(self.messages)
@@ -123,10 +130,14 @@ def check_rgb(cloud, expected, label):
         check(scalars is not None and scalars.GetName() == "RGB", "%s: RGB is the scalars attribute" % label)
 
 
-def check_bad(folder, name, text, expected, label, direct=False):
-    """A bad file: an error naming the file and the expected words, no points."""
-    path = write(folder, name, text) if text is not None else os.path.join(folder, name)
+def check_bad(folder, name, text, expected, label, direct=False, mode="w"):
+    """A bad file: OpenDataFile chooses this reader (unless direct), which
+    reports an error naming the file and the expected words; no points."""
+    path = write(folder, name, text, mode) if text is not None else os.path.join(folder, name)
     reader, errors, cloud = open_file(path, direct)
+    if not direct:
+        check(reader.GetXMLName() == READER_NAME,
+              "%s: OpenDataFile('%s') chose %s" % (label, name, reader.GetXMLName()))
     message = errors.text()
     check(name in message and all(word in message for word in expected),
           "%s: error names the file and %s: %s" % (label, " ".join(expected), message.strip().splitlines()[-1:]))
@@ -209,8 +220,41 @@ def check_reader(folder):
               "a non-numeric word")
     check_bad(folder, "ragged.xyz", "1 2 3 0 0 1\n\n4 5 6 0 1\n", ["line 3", "5 columns", "line 1"],
               "a line with another column count")
-    check_bad(folder, "flat.xyz", "1 2\n3 4\n", ["line 1", "at least"], "2 columns", direct=True)
-    check_bad(folder, "empty.xyz", "# only a comment\n\n", ["no points"], "no points", direct=True)
+    # Files that ParaView 5.11 gave to the PLOT3D reader (which crashed
+    # pvpython and the GUI) while this reader declined them.
+    check_bad(folder, "flat.xyz", "1 2\n3 4\n", ["line 1", "2 number(s)", "at least x y z"], "2 columns")
+    check_bad(folder, "empty.xyz", "", ["the file is empty", "no points"], "an empty file (0 bytes)")
+    check_bad(folder, "comments.pwn", "# only a comment\n\n", ["no points", "2 line(s) are blank or comments"],
+              "only comments")
+    check_bad(folder, "words.xyz", "hello world\nfoo bar baz\n",
+              ["line 2", "'foo' is not a number", "line 1, 'hello world', was taken for a header"], "garbage words")
+    check_bad(folder, "title.xyz", "just a title\n", ["line 1", "'just a title'", "no line of numbers follows"],
+              "a header and nothing else")
+    check_bad(folder, "count.pts", "12\n", ["line 1", "only a point count"], "a point count and nothing else")
+    check_bad(folder, "mixed.pts", "1 2 3\n4 5 6\n7 8\n", ["line 3", "2 columns, but line 1 has 3"],
+              "mixed column counts, too few numbers on a later line")
+    check_bad(folder, "noise.xyz", bytes(range(256)) * 4, ["line 1", "a NUL byte", "not a text file"],
+              "binary garbage", mode="wb")
+    check_bad(folder, "water.xyz", "3\nwater\nO 0 0 0\nH 0.76 0.59 0\nH -0.76 0.59 0\n",
+              ["an XYZ molecule file", "XYZ Reader"], "an XYZ molecule file")
+    check_bad(folder, "empty.txt", "", ["the file is empty"], "an empty .txt (reader itself)", direct=True)
+
+    # NaN and infinite coordinates are kept, with one warning naming the
+    # first line: the curvature filter flags those points.
+    path = write(folder, "nan.xyz", "1 2 3\nnan 5 6\n7 8 9\n10 -inf 12\n")
+    reader, errors, cloud = open_file(path)
+    check(reader.GetXMLName() == READER_NAME and not errors.messages and cloud.GetNumberOfPoints() == 4,
+          "NaN coordinates: kept, no error (%d points)" % cloud.GetNumberOfPoints())
+    warning = " ".join(errors.warnings)
+    check(len(errors.warnings) == 1 and "2 point(s) with a NaN or infinite coordinate" in warning
+          and "line 2" in warning, "NaN coordinates: one warning naming the count and line 2 (%s)"
+          % warning.strip().splitlines()[-1:])
+
+    # A binary file that starts as a PLOT3D grid (a Fortran record: its
+    # length, three dimensions, its length again) stays with that reader.
+    plot3d = write(folder, "grid.xyz", struct.pack("<iiiii", 12, 2, 2, 1, 12) + bytes(64), "wb")
+    check(simple.OpenDataFile(plot3d).GetXMLName() == "P3DReader",
+          "a binary PLOT3D grid .xyz goes to %s (P3DReader)" % simple.OpenDataFile(plot3d).GetXMLName())
     check_bad(folder, "missing.xyz", None, ["cannot read"], "a missing file (reader itself)", direct=True)
     try:
         simple.OpenDataFile(os.path.join(folder, "missing.xyz"))
@@ -218,10 +262,12 @@ def check_reader(folder):
     except RuntimeError as error:
         check("not readable" in str(error), "a missing file: OpenDataFile raises (%s)" % error)
 
-    # Files that are not clouds of numbers stay with ParaView's readers.
-    path = write(folder, "table.txt", "name,value\nfirst,1\nsecond,2\n")
-    reader = simple.OpenDataFile(path)
-    check(reader.GetXMLName() == "CSVReader", "a text table .txt goes to %s (CSVReader)" % reader.GetXMLName())
+    # .txt is shared with the CSV reader: only a file whose first data line
+    # holds x y z is a cloud; tables stay with the CSV reader.
+    for name, text in (("table.txt", "name,value\nfirst,1\nsecond,2\n"), ("pairs.txt", "1 2\n3 4\n")):
+        reader = simple.OpenDataFile(write(folder, name, text))
+        check(reader.GetXMLName() == "CSVReader", "a text table %s goes to %s (CSVReader)"
+              % (name, reader.GetXMLName()))
 
 
 def check_generated(clouds):
@@ -349,6 +395,36 @@ def check_command_line(folder, clouds, pvpython, script, plugin, rows):
           "--normals RGB: refused, with the way to estimate normals (exit %d)" % run.returncode)
 
 
+def check_command_line_bad_files(folder, pvpython, script, plugin):
+    """The tool reads text through the same reader: each bad file exits with
+    status 2 and the reader's message (file and line) on stderr; NaN
+    coordinates are kept with the same warning. Its stderr, piped, is plain
+    text: no terminal colour codes, no VTK log prefixes."""
+    plugin_arguments = ["--plugin", plugin] if plugin else []
+    output = os.path.join(folder, "bad_out.vtp")
+    bad = (("cli_empty.xyz", "", "cli_empty.xyz: the file is empty"),
+           ("cli_flat.xyz", "1 2\n3 4\n", "cli_flat.xyz: line 1: 2 number(s); a point needs at least x y z"),
+           ("cli_words.pwn", "hello world\nfoo bar baz\n", "cli_words.pwn: line 2: 'foo' is not a number"),
+           ("cli_mixed.pts", "1 2 3\n4 5 6\n7 8\n", "cli_mixed.pts: line 3: 2 columns, but line 1 has 3"))
+    for name, text, expected in bad:
+        path = write(folder, name, text)
+        run = subprocess.run([pvpython, script] + plugin_arguments + [path, output],
+                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, universal_newlines=True)
+        check(run.returncode == 2 and ("estimate_curvatures: error: %s" % os.path.join(folder, expected)) in run.stderr,
+              "command line on %s: exit %d, %s" % (name, run.returncode, run.stderr.strip().splitlines()[-1:]))
+    rows = "".join("%d %d %d\n" % (i % 10, i // 10, (i % 7) * (i % 3)) for i in range(300))
+    path = write(folder, "cli_nan.xyz", "nan 0 0\n" + rows)
+    run = subprocess.run([pvpython, script] + plugin_arguments + [path, output],
+                         stdout=subprocess.PIPE, stderr=subprocess.PIPE, universal_newlines=True)
+    check(run.returncode == 0 and "estimate_curvatures: warning: vtkTextPointCloudReader: %s: 1 point(s) with a NaN"
+          % path in run.stderr and "bad coordinate" in run.stdout,
+          "command line on NaN coordinates: kept, one warning, counted (exit %d, %s)"
+          % (run.returncode, run.stderr.strip().splitlines()[:1]))
+    check("\x1b[" not in run.stderr, "command line, piped: no terminal colour codes on stderr")
+    check(re.search(r"\(\s*[0-9.]+s\) \[", run.stderr) is None and "ERROR: In" not in run.stderr,
+          "command line, piped: no VTK log prefixes on stderr (%s)" % run.stderr.strip().splitlines()[:1])
+
+
 def main(argv):
     plugin, clouds = argv[0], argv[1]
     pvpython, script = (argv[2], argv[3]) if len(argv) >= 4 else (None, None)
@@ -365,6 +441,7 @@ def main(argv):
             rows = check_generated(clouds)
             if script:
                 check_command_line(folder, clouds, pvpython, script, plugin, rows)
+                check_command_line_bad_files(folder, pvpython, script, plugin)
     finally:
         shutil.rmtree(folder, ignore_errors=True)
     print("%d failed" % len(failures))
