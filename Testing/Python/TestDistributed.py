@@ -22,8 +22,9 @@ from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkIOXML import vtkXMLPolyDataReader, vtkXMLPolyDataWriter, vtkXMLPPolyDataReader
 
 ARRAYS = ("Minimum_Curvature", "Maximum_Curvature", "Neighbor_Count")
-COUNTS = ("Neighbor_Count", "Target_Neighbor_Count")  # compared absolutely
-OPTIONAL = ("Target_Neighbor_Count",)  # the dynamic adjustment's only
+COUNTS = ("Neighbor_Count", "Target_Neighbor_Count", "Curvature_Trusted")  # compared absolutely
+OPTIONAL = ("Target_Neighbor_Count",  # the dynamic adjustment's only
+            "Curvature_Standard_Error", "Curvature_Trusted")  # OrientedCircles only
 VARIANTS = {"fixed": {}, "dva": {"DynamicAdjustment": 1}}
 
 
