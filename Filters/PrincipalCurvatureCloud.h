@@ -12,6 +12,8 @@
 #include "CloudStatistics.h"
 
 #include <atomic>
+#include <chrono>
+#include <string>
 
 class vtkAlgorithm;
 class vtkDataArray;
@@ -54,27 +56,34 @@ private:
 /// so that a cloud shows in a render view.
 void CopyGeometry(vtkPointSet* input, vtkPolyData* output);
 
+/// "Principal curvatures: 35 % (about 2 min left)": `label`, the part done,
+/// and the time left if the rest goes at the pace so far (`elapsedSeconds`
+/// since the start); without the time left while the pace is not yet known
+/// (the first second, or less than 1 % done) and at the end.
+std::string ProgressText(const std::string& label, double fraction, double elapsedSeconds);
+
 /// Progress from the core's threads, passed to a filter on the thread that
 /// runs the filter: ParaView shows progress, and honours Abort, only from
-/// there. The filter's abort flag travels back the same way.
+/// there. The filter's abort flag travels back the same way. The filter's
+/// progress text (what ParaView's progress bar shows) says the time left.
 class AlgorithmProgress : public ProgressMonitor
 {
 public:
-  explicit AlgorithmProgress(vtkAlgorithm* algorithm)
-    : Algorithm(algorithm)
-  {
-  }
+  AlgorithmProgress(vtkAlgorithm* algorithm, std::string label);
   /// From any thread: keeps the fraction; false once Pass saw an abort.
   bool Continue(double fraction) override;
-  /// From the filter's thread: reports the newest fraction to the filter
-  /// and reads its abort flag.
+  /// From the filter's thread: reports the newest fraction and the time
+  /// left to the filter (a progress event even when the fraction has not
+  /// moved, so that a GUI listening to them stays responsive), and reads
+  /// its abort flag.
   void Pass();
 
 private:
   vtkAlgorithm* Algorithm;
+  std::string Label;
+  std::chrono::steady_clock::time_point Start;
   std::atomic<double> Fraction{ 0.0 };
   std::atomic<bool> AbortRequested{ false };
-  double Reported = -1.0;
 };
 
 /// The core's work items on vtkSMPTools threads, each with its own scratch:

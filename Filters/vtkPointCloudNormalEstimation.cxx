@@ -66,7 +66,7 @@ int vtkPointCloudNormalEstimation::RequestData(vtkInformation*,
   normals->SetName("Normals");
   normals->SetNumberOfComponents(3);
   normals->SetNumberOfTuples(numberOfPoints);
-  pcurv::AlgorithmProgress progress(this);
+  pcurv::AlgorithmProgress progress(this, "Point cloud normals");
   pcurv::SMPToolsRunner runner(this->NumberOfThreads, &progress);
   const pcurv::NormalSummary summary = pcurv::EstimateCloudNormals(
     numberOfPoints > 0 ? pcurv::ReadCloud(input, nullptr) : pcurv::CloudPoints{},

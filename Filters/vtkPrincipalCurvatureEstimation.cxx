@@ -311,7 +311,7 @@ int vtkPrincipalCurvatureEstimation::RequestData(vtkInformation*,
     estimatedNormals = NewArray<vtkDoubleArray>("Normals", 3, numberOfPoints);
     arrays.Buffers.Normals = estimatedNormals->GetPointer(0);
   }
-  pcurv::AlgorithmProgress progress(this);
+  pcurv::AlgorithmProgress progress(this, "Principal curvatures");
   pcurv::SMPToolsRunner runner(this->NumberOfThreads, &progress);
   pcurv::EstimationSettings settings = CoreSettings(this);
   settings.EstimateNormals = this->UsedEstimatedNormals;

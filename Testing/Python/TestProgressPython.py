@@ -6,6 +6,10 @@
   through PrincipalCurvatures with defaults: the filter's progress events
   arrive on the main thread (the only one ParaView listens to), at least ten
   of them strictly between 0 and 1, never going back, then 1;
+* during that run the progress text (what ParaView's progress bar shows)
+  says the part done and, once the pace is known, the time left; that
+  estimate, made half-way, is within a factor of two of the time the run
+  then took;
 * the same with Abort requested from a progress event, as ParaView's Abort
   button does it: the filter returns within a second, with no output;
 * Point Cloud Normals on the same cloud: progress on the main thread too.
@@ -13,6 +17,7 @@
 Every check prints one line; the exit code is 0 when all pass, 1 otherwise.
 """
 
+import re
 import sys
 import threading
 import time
@@ -54,6 +59,7 @@ class ProgressLog:
     def __init__(self, proxy, abort_at=None):
         self.algorithm = proxy.GetClientSideObject()
         self.events = []
+        self.texts = []
         self.abort_at = abort_at
         self.abort_time = None
         self.algorithm.AddObserver("ProgressEvent", self.on_progress)
@@ -61,6 +67,7 @@ class ProgressLog:
     def on_progress(self, algorithm, _event):
         progress = algorithm.GetProgress()
         self.events.append((progress, threading.get_ident(), time.perf_counter()))
+        self.texts.append(algorithm.GetProgressText() or "")
         if self.abort_at is not None and self.abort_time is None and progress >= self.abort_at:
             self.abort_time = time.perf_counter()
             algorithm.SetAbortExecute(1)
@@ -81,6 +88,38 @@ def check_progress(name, log):
     check(bool(values) and values[-1] == 1.0, "%s: the last progress is 1" % name)
 
 
+TIME_LEFT = re.compile(r"^Principal curvatures: (\d+) % \(about (?:(\d+) h )?(\d+) (s|min) left\)$")
+
+
+def seconds_left(text):
+    """The time left a progress text announces, in seconds; None without one."""
+    match = TIME_LEFT.match(text)
+    if not match:
+        return None
+    hours, amount, unit = match.group(2), int(match.group(3)), match.group(4)
+    return (int(hours or 0) * 3600) + amount * (60 if unit == "min" else 1)
+
+
+def check_time_left(log, finished):
+    """The progress text says the time left, and half-way it is about right."""
+    announced = [(value, when, seconds_left(text))
+                 for (value, _, when), text in zip(log.events, log.texts)]
+    with_estimate = [entry for entry in announced if entry[2] is not None]
+    # The executive's first event (progress 0) comes before the filter runs.
+    unnamed = [text for text in log.texts[1:] if not text.startswith("Principal curvatures: ")]
+    check(not unnamed, "every progress text after the first names the filter, as %r (not %r)"
+          % (log.texts[len(log.texts) // 2] if log.texts else None, unnamed[:3]))
+    check(len(with_estimate) >= 5, "%d progress texts say the time left (at least 5)" % len(with_estimate))
+    half_way = [entry for entry in with_estimate if entry[0] >= 0.5]
+    if half_way:
+        value, when, estimate = half_way[0]
+        actual = finished - when
+        check(actual / 2.0 <= estimate + 5.0 and estimate <= 2.0 * actual + 5.0,
+              "at %.0f %% the text said about %d s left; the run took %.1f s more" % (100 * value, estimate, actual))
+    else:
+        check(False, "no time left announced past half-way")
+
+
 def main(plugin):
     simple.LoadPlugin(plugin, remote=False)
     source = producer(torus())
@@ -92,6 +131,7 @@ def main(plugin):
     seconds = time.perf_counter() - start
     print("1M points, normals estimated, defaults: %.2f s" % seconds)
     check_progress("PrincipalCurvatures on 1M points", log)
+    check_time_left(log, start + seconds)
     check(curvatures.GetDataInformation().GetNumberOfPoints() == 1000000, "the full run gives every point")
 
     aborted = simple.PrincipalCurvatures(Input=source)
