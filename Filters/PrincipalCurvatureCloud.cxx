@@ -230,15 +230,13 @@ std::string RoughDuration(double seconds)
 std::string ProgressText(const std::string& label, double fraction, double elapsedSeconds)
 {
   fraction = std::min(std::max(fraction, 0.0), 1.0);
-  std::string text =
-    label + ": " + std::to_string(static_cast<int>(std::floor(100.0 * fraction))) + " %";
   // Before a second has passed or 1 % is done, the pace says little (the
   // first stages are not the slowest).
-  if (elapsedSeconds >= 1.0 && fraction >= 0.01 && fraction < 1.0)
+  if (elapsedSeconds < 1.0 || fraction < 0.01 || fraction >= 1.0)
   {
-    text += " (about " + RoughDuration(elapsedSeconds * (1.0 - fraction) / fraction) + " left)";
+    return label;
   }
-  return text;
+  return label + ": about " + RoughDuration(elapsedSeconds * (1.0 - fraction) / fraction) + " left";
 }
 
 AlgorithmProgress::AlgorithmProgress(vtkAlgorithm* algorithm, std::string label)

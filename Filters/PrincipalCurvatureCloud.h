@@ -56,10 +56,11 @@ private:
 /// so that a cloud shows in a render view.
 void CopyGeometry(vtkPointSet* input, vtkPolyData* output);
 
-/// "Principal curvatures: 35 % (about 2 min left)": `label`, the part done,
-/// and the time left if the rest goes at the pace so far (`elapsedSeconds`
-/// since the start); without the time left while the pace is not yet known
-/// (the first second, or less than 1 % done) and at the end.
+/// "Principal curvatures: about 2 min left": `label` and the time left if
+/// the rest goes at the pace so far (`elapsedSeconds` since the start, the
+/// part `fraction` done); `label` alone while the pace is not yet known
+/// (the first second, or less than 1 % done) and at the end. ParaView's
+/// progress bar adds the percentage.
 std::string ProgressText(const std::string& label, double fraction, double elapsedSeconds);
 
 /// Progress from the core's threads, passed to a filter on the thread that

@@ -7,7 +7,7 @@
   arrive on the main thread (the only one ParaView listens to), at least ten
   of them strictly between 0 and 1, never going back, then 1;
 * during that run the progress text (what ParaView's progress bar shows)
-  says the part done and, once the pace is known, the time left; that
+  names the filter and, once the pace is known, says the time left; that
   estimate, made half-way, is within a factor of two of the time the run
   then took;
 * the same with Abort requested from a progress event, as ParaView's Abort
@@ -88,7 +88,7 @@ def check_progress(name, log):
     check(bool(values) and values[-1] == 1.0, "%s: the last progress is 1" % name)
 
 
-TIME_LEFT = re.compile(r"^Principal curvatures: (\d+) % \(about (?:(\d+) h )?(\d+) (s|min) left\)$")
+TIME_LEFT = re.compile(r"^Principal curvatures: about (?:(\d+) h )?(\d+) (s|min) left$")
 
 
 def seconds_left(text):
@@ -96,7 +96,7 @@ def seconds_left(text):
     match = TIME_LEFT.match(text)
     if not match:
         return None
-    hours, amount, unit = match.group(2), int(match.group(3)), match.group(4)
+    hours, amount, unit = match.group(1), int(match.group(2)), match.group(3)
     return (int(hours or 0) * 3600) + amount * (60 if unit == "min" else 1)
 
 
@@ -106,7 +106,7 @@ def check_time_left(log, finished):
                  for (value, _, when), text in zip(log.events, log.texts)]
     with_estimate = [entry for entry in announced if entry[2] is not None]
     # The executive's first event (progress 0) comes before the filter runs.
-    unnamed = [text for text in log.texts[1:] if not text.startswith("Principal curvatures: ")]
+    unnamed = [text for text in log.texts[1:] if not text.startswith("Principal curvatures")]
     check(not unnamed, "every progress text after the first names the filter, as %r (not %r)"
           % (log.texts[len(log.texts) // 2] if log.texts else None, unnamed[:3]))
     check(len(with_estimate) >= 5, "%d progress texts say the time left (at least 5)" % len(with_estimate))

@@ -1,0 +1,14 @@
+#include "pqPrincipalCurvaturesStartup.h"
+
+#include "pqCloudFilterAbortBehavior.h"
+
+pqPrincipalCurvaturesStartup::pqPrincipalCurvaturesStartup(QObject* parent)
+  : QObject(parent)
+{
+}
+
+void pqPrincipalCurvaturesStartup::startup()
+{
+  // Owned by this object, which ParaView keeps until the plugin unloads.
+  new pqCloudFilterAbortBehavior(this);
+}
