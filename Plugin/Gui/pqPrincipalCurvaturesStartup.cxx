@@ -1,5 +1,6 @@
 #include "pqPrincipalCurvaturesStartup.h"
 
+#include "pqCloudColorMapBehavior.h"
 #include "pqCloudFilterAbortBehavior.h"
 
 pqPrincipalCurvaturesStartup::pqPrincipalCurvaturesStartup(QObject* parent)
@@ -11,4 +12,5 @@ void pqPrincipalCurvaturesStartup::startup()
 {
   // Owned by this object, which ParaView keeps until the plugin unloads.
   new pqCloudFilterAbortBehavior(this);
+  new pqCloudColorMapBehavior(this);
 }
