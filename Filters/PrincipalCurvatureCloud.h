@@ -13,7 +13,9 @@
 
 #include <atomic>
 #include <chrono>
+#include <future>
 #include <string>
+#include <utility>
 
 class vtkAlgorithm;
 class vtkDataArray;
@@ -87,11 +89,31 @@ private:
   std::atomic<bool> AbortRequested{ false };
 };
 
+/// `estimate()` (a whole estimation: its serial stages too, which take
+/// seconds on millions of points) on a thread of its own, while the calling
+/// thread, the filter's, passes `progress` on ten times a second: ParaView
+/// then shows progress and honours Abort all along. For one process only:
+/// a distributed run's collectives stay on the calling thread (MPI is
+/// initialised for one thread), and it passes progress in the parallel
+/// stages alone (SMPToolsRunner).
+template<typename Estimate>
+auto RunPassingProgress(AlgorithmProgress& progress, Estimate&& estimate)
+{
+  auto done = std::async(std::launch::async, std::forward<Estimate>(estimate));
+  while (done.wait_for(std::chrono::milliseconds(100)) != std::future_status::ready)
+  {
+    progress.Pass();
+  }
+  progress.Pass();
+  return done.get();
+}
+
 /// The core's work items on vtkSMPTools threads, each with its own scratch:
 /// all cores unless the user chose otherwise (ParaView's bundled VTK
 /// defaults to the sequential backend; STDThread is used then, unless a
 /// backend was requested through the environment). With `progress`, the
-/// calling thread only waits and passes the progress on, ten times a second.
+/// calling thread only waits and passes the progress on, ten times a second
+/// (null when the whole estimation runs in RunPassingProgress).
 class SMPToolsRunner : public WorkRunner
 {
 public:

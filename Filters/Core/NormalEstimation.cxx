@@ -212,8 +212,13 @@ std::vector<std::int64_t> OrientPart(const Graph& graph,
   std::int64_t seed,
   std::vector<double>& normals,
   std::vector<unsigned char>& reached,
-  FrontierBuckets& frontier)
+  FrontierBuckets& frontier,
+  StageProgress* progress)
 {
+  // The traversal is serial and takes seconds on millions of points: a stop
+  // request is looked at every few thousand points (the normals are then
+  // incomplete anyway).
+  constexpr std::size_t StopCheckInterval = 4096;
   std::vector<std::int64_t> part;
   frontier.Push(1.0, seed, seed);
   while (!frontier.Empty())
@@ -222,6 +227,10 @@ std::vector<std::int64_t> OrientPart(const Graph& graph,
     if (reached[to])
     {
       continue;
+    }
+    if (progress && part.size() % StopCheckInterval == 0 && !progress->Reach(1.0))
+    {
+      return part;
     }
     reached[to] = 1;
     part.push_back(to);
@@ -378,9 +387,15 @@ NormalSummary EstimateNormals(const CloudPoints& cloud,
       const double* normal = &fits.Normals[3 * p];
       if (!reached[p] && (normal[0] != 0.0 || normal[1] != 0.0 || normal[2] != 0.0))
       {
-        TurnPartOutward(
-          OrientPart(graph, p, fits.Normals, reached, frontier), grid, cloud, fits.Normals);
+        TurnPartOutward(OrientPart(graph, p, fits.Normals, reached, frontier, progress),
+          grid,
+          cloud,
+          fits.Normals);
         ++summary.Components;
+        if (progress && progress->Stopped())
+        {
+          return summary;
+        }
       }
     }
   }
