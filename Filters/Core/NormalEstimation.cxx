@@ -343,8 +343,18 @@ NormalSummary EstimateNormals(const CloudPoints& cloud,
     return s;
   }();
   const double radius = TypicalRadius(cloud, alone, boxes, usable.NumberOfNeighbors);
+  // A stop request is looked at between the serial steps too (each up to a
+  // second on a million points); nothing is reported yet.
+  if (progress && !progress->Reach(0.0))
+  {
+    return summary;
+  }
   PointGrid grid;
   grid.Build(cloud.Coordinates.data(), n, GlobalLattice(boxes, radius));
+  if (progress && !progress->Reach(0.0))
+  {
+    return summary;
+  }
 
   PlaneFits fits;
   fits.GraphNeighbors = usable.GraphNeighbors;

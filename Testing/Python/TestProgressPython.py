@@ -14,8 +14,9 @@
   estimate, made half-way, is within a factor of two of the time the run
   then took;
 * the same with Abort requested from a progress event, as ParaView's Abort
-  button does it, in the parallel plane fits and in the serial orientation
-  of the normals: the filter returns within a second, with no output;
+  button does it, in the first serial steps, the parallel plane fits, the
+  serial orientation of the normals and the curvatures' serial steps: the
+  filter returns within a second, with no output;
 * Point Cloud Normals on the same cloud: progress on the main thread too.
 
 Every check prints one line; the exit code is 0 when all pass, 1 otherwise.
@@ -167,9 +168,13 @@ def main(plugin):
     check_time_left(log, start + seconds)
     check(curvatures.GetDataInformation().GetNumberOfPoints() == 600000, "the full run gives every point")
 
+    # Serial stages report no progress of their own: their progress repeats.
+    check_abort("first serial steps", ProgressLog, dict(abort_at=0.0, abort_in_serial_stage=True), source)
     check_abort("plane fits", ProgressLog, dict(abort_at=0.2), source)
     # The orientation reports the plane fits' end (0.36) until it is done.
     check_abort("orientation", ProgressLog, dict(abort_at=0.3, abort_in_serial_stage=True), source)
+    # The curvatures' thresholds, grid and order, at the normals' end (0.45).
+    check_abort("curvatures' serial steps", ProgressLog, dict(abort_at=0.4, abort_in_serial_stage=True), source)
 
     normals = simple.PointCloudNormals(Input=source)
     normals_log = ProgressLog(normals)
