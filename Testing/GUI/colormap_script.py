@@ -3,14 +3,17 @@ RunColorMapTest.sh: one session, three tori of very different scales
 (minor radius 0.1, 10 and 1000: curvatures from about 10 down to 0.001),
 written as text clouds with normals and opened as File > Open would
 (OpenDataFile), each applied Principal Curvatures and shown as the GUI's
-Apply shows a new output (Show: the same pipeline controller), side by side
-in three views, left to right. Writes GUI_TEST_MARKER: for each cloud the
-range of its display's colour map and of its Mean_Curvature_Clipped."""
+Apply shows a new output: Show (the same pipeline controller), then every
+colour map's range updated from the visible data as pqApplyBehavior does
+(by default growing it), side by side in three views. Writes
+GUI_TEST_MARKER: for each cloud the range of its display's colour map and
+of its Mean_Curvature_Clipped."""
 
 import os
 
 import numpy
 from paraview import servermanager, simple
+from paraview.modules.vtkRemotingViews import vtkSMTransferFunctionManager
 
 marker = os.environ["GUI_TEST_MARKER"]
 work = os.environ["GUI_TEST_WORK"]
@@ -55,6 +58,8 @@ try:
         simple.SetActiveSource(curvatures)
         view, display = show_in_new_view(curvatures, first_view)
         first_view = first_view or view
+        vtkSMTransferFunctionManager().ResetAllTransferFunctionRangesUsingCurrentData(
+            servermanager.ProxyManager().SMProxyManager, False)
         simple.Render(view)
         colour_map = display.LookupTable
         points = colour_map.RGBPoints
