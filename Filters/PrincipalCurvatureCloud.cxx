@@ -28,6 +28,7 @@
 #include <cstdlib>
 #include <future>
 #include <string>
+#include <utility>
 
 namespace pcurv
 {
@@ -242,6 +243,44 @@ void CopyGeometry(vtkPointSet* input, vtkPolyData* output)
   output->GetPointData()->PassData(input->GetPointData());
 }
 
+namespace
+{
+/// "35 s", "2 min", "1 h 5 min": coarse enough not to flicker, rounded up
+/// below a minute (to 5 s) and to the nearest minute above.
+std::string RoughDuration(double seconds)
+{
+  if (seconds < 57.5)
+  {
+    return std::to_string(5 * std::max(1, static_cast<int>(std::ceil(seconds / 5.0)))) + " s";
+  }
+  const long minutes = std::lround(seconds / 60.0);
+  if (minutes < 60)
+  {
+    return std::to_string(minutes) + " min";
+  }
+  return std::to_string(minutes / 60) + " h " + std::to_string(minutes % 60) + " min";
+}
+} // namespace
+
+std::string ProgressText(const std::string& label, double fraction, double elapsedSeconds)
+{
+  fraction = std::min(std::max(fraction, 0.0), 1.0);
+  // Before a second has passed or 1 % is done, the pace says little (the
+  // first stages are not the slowest).
+  if (elapsedSeconds < 1.0 || fraction < 0.01 || fraction >= 1.0)
+  {
+    return label;
+  }
+  return label + ": about " + RoughDuration(elapsedSeconds * (1.0 - fraction) / fraction) + " left";
+}
+
+AlgorithmProgress::AlgorithmProgress(vtkAlgorithm* algorithm, std::string label)
+  : Algorithm(algorithm)
+  , Label(std::move(label))
+  , Start(std::chrono::steady_clock::now())
+{
+}
+
 bool AlgorithmProgress::Continue(double fraction)
 {
   this->Fraction.store(fraction, std::memory_order_relaxed);
@@ -251,11 +290,9 @@ bool AlgorithmProgress::Continue(double fraction)
 void AlgorithmProgress::Pass()
 {
   const double fraction = this->Fraction.load(std::memory_order_relaxed);
-  if (fraction != this->Reported)
-  {
-    this->Algorithm->UpdateProgress(fraction);
-    this->Reported = fraction;
-  }
+  const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - this->Start;
+  this->Algorithm->SetProgressText(ProgressText(this->Label, fraction, elapsed.count()).c_str());
+  this->Algorithm->UpdateProgress(fraction);
   if (this->Algorithm->GetAbortExecute())
   {
     this->AbortRequested.store(true, std::memory_order_relaxed);

@@ -12,6 +12,10 @@
 #include "CloudStatistics.h"
 
 #include <atomic>
+#include <chrono>
+#include <future>
+#include <string>
+#include <utility>
 
 class vtkAlgorithm;
 class vtkDataArray;
@@ -70,34 +74,62 @@ void AddCurvatureUnit(vtkPolyData* output);
  */
 void SetSymmetricRange(vtkDataArray* array, double clip);
 
+/// "Principal curvatures: about 2 min left": `label` and the time left if
+/// the rest goes at the pace so far (`elapsedSeconds` since the start, the
+/// part `fraction` done); `label` alone while the pace is not yet known
+/// (the first second, or less than 1 % done) and at the end. ParaView's
+/// progress bar adds the percentage.
+std::string ProgressText(const std::string& label, double fraction, double elapsedSeconds);
+
 /// Progress from the core's threads, passed to a filter on the thread that
 /// runs the filter: ParaView shows progress, and honours Abort, only from
-/// there. The filter's abort flag travels back the same way.
+/// there. The filter's abort flag travels back the same way. The filter's
+/// progress text (what ParaView's progress bar shows) says the time left.
 class AlgorithmProgress : public ProgressMonitor
 {
 public:
-  explicit AlgorithmProgress(vtkAlgorithm* algorithm)
-    : Algorithm(algorithm)
-  {
-  }
+  AlgorithmProgress(vtkAlgorithm* algorithm, std::string label);
   /// From any thread: keeps the fraction; false once Pass saw an abort.
   bool Continue(double fraction) override;
-  /// From the filter's thread: reports the newest fraction to the filter
-  /// and reads its abort flag.
+  /// From the filter's thread: reports the newest fraction and the time
+  /// left to the filter (a progress event even when the fraction has not
+  /// moved, so that a GUI listening to them stays responsive), and reads
+  /// its abort flag.
   void Pass();
 
 private:
   vtkAlgorithm* Algorithm;
+  std::string Label;
+  std::chrono::steady_clock::time_point Start;
   std::atomic<double> Fraction{ 0.0 };
   std::atomic<bool> AbortRequested{ false };
-  double Reported = -1.0;
 };
+
+/// `estimate()` (a whole estimation: its serial stages too, which take
+/// seconds on millions of points) on a thread of its own, while the calling
+/// thread, the filter's, passes `progress` on ten times a second: ParaView
+/// then shows progress and honours Abort all along. For one process only:
+/// a distributed run's collectives stay on the calling thread (MPI is
+/// initialised for one thread), and it passes progress in the parallel
+/// stages alone (SMPToolsRunner).
+template<typename Estimate>
+auto RunPassingProgress(AlgorithmProgress& progress, Estimate&& estimate)
+{
+  auto done = std::async(std::launch::async, std::forward<Estimate>(estimate));
+  while (done.wait_for(std::chrono::milliseconds(100)) != std::future_status::ready)
+  {
+    progress.Pass();
+  }
+  progress.Pass();
+  return done.get();
+}
 
 /// The core's work items on vtkSMPTools threads, each with its own scratch:
 /// all cores unless the user chose otherwise (ParaView's bundled VTK
 /// defaults to the sequential backend; STDThread is used then, unless a
 /// backend was requested through the environment). With `progress`, the
-/// calling thread only waits and passes the progress on, ten times a second.
+/// calling thread only waits and passes the progress on, ten times a second
+/// (null when the whole estimation runs in RunPassingProgress).
 class SMPToolsRunner : public WorkRunner
 {
 public:

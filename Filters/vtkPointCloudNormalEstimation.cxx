@@ -66,15 +66,22 @@ int vtkPointCloudNormalEstimation::RequestData(vtkInformation*,
   normals->SetName("Normals");
   normals->SetNumberOfComponents(3);
   normals->SetNumberOfTuples(numberOfPoints);
-  pcurv::AlgorithmProgress progress(this);
-  pcurv::SMPToolsRunner runner(this->NumberOfThreads, &progress);
-  const pcurv::NormalSummary summary = pcurv::EstimateCloudNormals(
-    numberOfPoints > 0 ? pcurv::ReadCloud(input, nullptr) : pcurv::CloudPoints{},
-    settings,
-    processes,
-    runner,
-    normals->GetPointer(0),
-    &progress);
+  pcurv::AlgorithmProgress progress(this, "Point cloud normals");
+  // As vtkPrincipalCurvatureEstimation: the orientation is serial and long.
+  const bool distributed = processes.IsDistributed();
+  pcurv::SMPToolsRunner runner(this->NumberOfThreads, distributed ? &progress : nullptr);
+  auto runEstimation = [&]()
+  {
+    return pcurv::EstimateCloudNormals(
+      numberOfPoints > 0 ? pcurv::ReadCloud(input, nullptr) : pcurv::CloudPoints{},
+      settings,
+      processes,
+      runner,
+      normals->GetPointer(0),
+      &progress);
+  };
+  const pcurv::NormalSummary summary =
+    distributed ? runEstimation() : pcurv::RunPassingProgress(progress, runEstimation);
   if (summary.Aborted)
   {
     return 1;

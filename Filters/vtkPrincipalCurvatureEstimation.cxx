@@ -315,17 +315,26 @@ int vtkPrincipalCurvatureEstimation::RequestData(vtkInformation*,
     estimatedNormals = NewArray<vtkDoubleArray>("Normals", 3, numberOfPoints);
     arrays.Buffers.Normals = estimatedNormals->GetPointer(0);
   }
-  pcurv::AlgorithmProgress progress(this);
-  pcurv::SMPToolsRunner runner(this->NumberOfThreads, &progress);
+  pcurv::AlgorithmProgress progress(this, "Principal curvatures");
+  // One process: the whole estimation on a thread of its own, this one
+  // passing progress and Abort all along; distributed: here, passing them
+  // in the parallel stages (see RunPassingProgress).
+  const bool distributed = processes.IsDistributed();
+  pcurv::SMPToolsRunner runner(this->NumberOfThreads, distributed ? &progress : nullptr);
   pcurv::EstimationSettings settings = CoreSettings(this);
   settings.EstimateNormals = this->UsedEstimatedNormals;
-  const pcurv::EstimationSummary summary = pcurv::EstimateCloud(
-    numberOfPoints > 0 ? pcurv::ReadCloud(input, normals) : pcurv::CloudPoints{},
-    settings,
-    processes,
-    runner,
-    &progress,
-    arrays.Buffers);
+  auto runEstimation = [&]()
+  {
+    return pcurv::EstimateCloud(
+      numberOfPoints > 0 ? pcurv::ReadCloud(input, normals) : pcurv::CloudPoints{},
+      settings,
+      processes,
+      runner,
+      &progress,
+      arrays.Buffers);
+  };
+  const pcurv::EstimationSummary summary =
+    distributed ? runEstimation() : pcurv::RunPassingProgress(progress, runEstimation);
   if (summary.TargetCountsClamped)
   {
     const auto& counts = summary.TargetNeighborCounts;

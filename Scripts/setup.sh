@@ -11,6 +11,10 @@ packages=(
   openmpi-bin
   # the GUI test: ParaView under a virtual display, window control, capture, OCR
   xvfb xauth xdotool imagemagick tesseract-ocr tesseract-ocr-eng libqt5svg5
+  # the plugin's GUI part (Plugin/Gui): ParaView's Qt components and what
+  # their link interfaces name (CMake/ParaViewGuiDependencies.cmake)
+  qtbase5-dev qttools5-dev libqt5opengl5-dev libx11-dev libglew-dev libxml2-dev
+  libnetcdf-dev libhdf5-dev libboost-dev
 )
 missing=()
 for package in "${packages[@]}"; do

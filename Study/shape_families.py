@@ -451,6 +451,7 @@ def run_filter(points, normals=None):
 
     out = {"kmin": get("Minimum_Curvature"), "kmax": get("Maximum_Curvature"),
            "se": get("Curvature_Standard_Error"), "valid": get("Curvature_Valid") == 1,
+           "trusted": get("Curvature_Trusted") == 1,
            "s": get("Surroundings_Threshold"), "dmax": get("Maximum_Curvature_Direction", 3),
            "normals": get("Normals", 3) if normals is None else None}
     out["valid"] &= numpy.isfinite(out["kmin"]) & numpy.isfinite(out["kmax"])
@@ -476,7 +477,7 @@ def score(cloud, out, mask):
     valid = out["valid"] & mask
     result = {"scored": int(mask.sum()), "valid": float(valid.sum() / max(mask.sum(), 1)), "flipped": flipped}
     nan_keys = ("e_min", "e_max", "err", "le2se", "err_se", "off20", "max", "dir", "s_h", "inside", "n_deg",
-                "err_in", "off_in")
+                "err_in", "off_in", "trusted", "off20_t")
     if not valid.any():
         result.update({key: math.nan for key in nan_keys})
         return result
@@ -491,6 +492,11 @@ def score(cloud, out, mask):
     result["le2se"] = float(numpy.mean(error <= 2 * se)) if numpy.isfinite(se).any() else math.nan
     result["err_se"] = float(numpy.median(ratio)) if numpy.isfinite(se).any() else math.nan
     result["off20"] = float(numpy.mean(error > 0.2 * K))
+    # Curvature_Trusted: the share of valid points trusted, and the share of
+    # valid points that are trusted and off by more than 0.2 K.
+    trusted = out["trusted"][valid]
+    result["trusted"] = float(numpy.mean(trusted))
+    result["off20_t"] = float(numpy.mean(trusted & (error > 0.2 * K)))
     result["max"] = float(error.max() / K)
     aniso = valid & (cloud["kmax"] - cloud["kmin"] > 0.05 * K)
     result["dir"] = math.nan
@@ -594,7 +600,7 @@ LABELS = {"boxes": ("rho", "noise", "normals", "part"),
           "structured": ("shape", "N", "positions", "normals"),
           "scanlines": ("shape", "N", "gap", "noise", "normals")}
 SCORES = (("scored", "%d"), ("valid", "%.3f"), ("e_min", "%.4f"), ("e_max", "%.4f"), ("err", "%.4f"),
-          ("le2se", "%.3f"), ("err_se", "%.2f"), ("off20", "%.4f"), ("max", "%.3g"), ("dir", "%.2f"), ("n_deg", "%.2f"), ("s_h", "%.2f"))
+          ("le2se", "%.3f"), ("err_se", "%.2f"), ("off20", "%.4f"), ("trusted", "%.3f"), ("off20_t", "%.4f"), ("max", "%.3g"), ("dir", "%.2f"), ("n_deg", "%.2f"), ("s_h", "%.2f"))
 
 
 def table(family, rows):

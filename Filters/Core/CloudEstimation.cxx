@@ -911,6 +911,19 @@ NormalSummary EstimateCloudNormals(CloudPoints cloud,
   return summary;
 }
 
+namespace
+{
+/// Between the serial steps of an estimation (each up to a second or so on
+/// a million points): false once the monitor asks to stop, on any process
+/// (all of them ask here, in the same order: what follows is collective).
+/// `reached` is the part already reported: the progress does not move.
+bool ContinueBetweenSteps(ProgressMonitor* monitor, double reached, const Collectives& processes)
+{
+  const bool local = !monitor || monitor->Continue(reached);
+  return processes.IsDistributed() ? processes.Min(local ? 1 : 0) == 1 : local;
+}
+} // namespace
+
 const char* UnestimatedReasonName(UnestimatedReason reason)
 {
   switch (reason)
@@ -1002,6 +1015,11 @@ EstimationSummary EstimateCloud(CloudPoints cloud,
   const CloudBoxes boxes = MeasureBoxes(cloud, processes);
   NeighborhoodRule rule = ChooseThresholds(settings, cloud, processes, boxes, unit, summary);
   SummarizeThresholds(rule, unit, summary);
+  if (!ContinueBetweenSteps(monitor, normalsShare, processes))
+  {
+    summary.Aborted = true;
+    return summary;
+  }
 
   const GridLattice lattice = GlobalLattice(boxes, rule.CellRadius);
   if (processes.IsDistributed())
@@ -1023,6 +1041,11 @@ EstimationSummary EstimateCloud(CloudPoints cloud,
   else
   {
     order.MakePointwise(grid, cloud);
+  }
+  if (!ContinueBetweenSteps(monitor, normalsShare, processes))
+  {
+    summary.Aborted = true;
+    return summary;
   }
 
   FitSettings fit;

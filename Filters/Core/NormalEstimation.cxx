@@ -212,8 +212,13 @@ std::vector<std::int64_t> OrientPart(const Graph& graph,
   std::int64_t seed,
   std::vector<double>& normals,
   std::vector<unsigned char>& reached,
-  FrontierBuckets& frontier)
+  FrontierBuckets& frontier,
+  StageProgress* progress)
 {
+  // The traversal is serial and takes seconds on millions of points: a stop
+  // request is looked at every few thousand points (the normals are then
+  // incomplete anyway).
+  constexpr std::size_t StopCheckInterval = 4096;
   std::vector<std::int64_t> part;
   frontier.Push(1.0, seed, seed);
   while (!frontier.Empty())
@@ -222,6 +227,10 @@ std::vector<std::int64_t> OrientPart(const Graph& graph,
     if (reached[to])
     {
       continue;
+    }
+    if (progress && part.size() % StopCheckInterval == 0 && !progress->Reach(1.0))
+    {
+      return part;
     }
     reached[to] = 1;
     part.push_back(to);
@@ -334,8 +343,18 @@ NormalSummary EstimateNormals(const CloudPoints& cloud,
     return s;
   }();
   const double radius = TypicalRadius(cloud, alone, boxes, usable.NumberOfNeighbors);
+  // A stop request is looked at between the serial steps too (each up to a
+  // second on a million points); nothing is reported yet.
+  if (progress && !progress->Reach(0.0))
+  {
+    return summary;
+  }
   PointGrid grid;
   grid.Build(cloud.Coordinates.data(), n, GlobalLattice(boxes, radius));
+  if (progress && !progress->Reach(0.0))
+  {
+    return summary;
+  }
 
   PlaneFits fits;
   fits.GraphNeighbors = usable.GraphNeighbors;
@@ -378,9 +397,15 @@ NormalSummary EstimateNormals(const CloudPoints& cloud,
       const double* normal = &fits.Normals[3 * p];
       if (!reached[p] && (normal[0] != 0.0 || normal[1] != 0.0 || normal[2] != 0.0))
       {
-        TurnPartOutward(
-          OrientPart(graph, p, fits.Normals, reached, frontier), grid, cloud, fits.Normals);
+        TurnPartOutward(OrientPart(graph, p, fits.Normals, reached, frontier, progress),
+          grid,
+          cloud,
+          fits.Normals);
         ++summary.Components;
+        if (progress && progress->Stopped())
+        {
+          return summary;
+        }
       }
     }
   }

@@ -8,7 +8,7 @@ file with what it found (read by RunGuiTest.sh)."""
 import os
 
 from paraview import servermanager
-from paraview.simple import (GetActiveViewOrCreate, GetColorTransferFunction, Hide,
+from paraview.simple import (GetActiveViewOrCreate, Hide,
                              LoadPlugin, Render, ResetCamera, SetActiveSource, Show)
 from paraview import simple
 
@@ -26,7 +26,7 @@ try:
     # it Points, and the active scalars (Mean_Curvature_Clipped) colour it
     # over their robust range.
     coloured_by = list(display.ColorArrayName)
-    lookup = GetColorTransferFunction(coloured_by[-1])
+    lookup = display.LookupTable  # the display's own (the plugin's GUI part)
     colour_range = (lookup.RGBPoints[0], lookup.RGBPoints[-4])
     display.SetScalarBarVisibility(view, True)
     view.CameraPosition = [6, -9, 8]

@@ -2,17 +2,27 @@
 
     pvpython TestProgressPython.py PLUGIN.so
 
-* a 1M-point torus without normals (normals estimated, then the curvatures)
-  through PrincipalCurvatures with defaults: the filter's progress events
-  arrive on the main thread (the only one ParaView listens to), at least ten
-  of them strictly between 0 and 1, never going back, then 1;
+* a 600k-point torus without normals (normals estimated, then the
+  curvatures) through PrincipalCurvatures with defaults: the filter's
+  progress events arrive on the main thread (the only one ParaView listens
+  to), at least ten of them strictly between 0 and 1, never going back, then
+  1, and never more than half a second apart, the serial stages (reading,
+  the normals' orientation, the grid) included: ParaView's GUI handles
+  events, and Abort, only at progress events;
+* during that run the progress text (what ParaView's progress bar shows)
+  names the filter and, once the pace is known, says the time left; that
+  estimate, made half-way, is within a factor of two of the time the run
+  then took;
 * the same with Abort requested from a progress event, as ParaView's Abort
-  button does it: the filter returns within a second, with no output;
+  button does it, in the first serial steps, the parallel plane fits, the
+  serial orientation of the normals and the curvatures' serial steps: the
+  filter returns within a second, with no output;
 * Point Cloud Normals on the same cloud: progress on the main thread too.
 
 Every check prints one line; the exit code is 0 when all pass, 1 otherwise.
 """
 
+import re
 import sys
 import threading
 import time
@@ -28,7 +38,7 @@ from test_checks import check, failures  # noqa: E402 (the tests' folder is on s
 MAIN_THREAD = threading.get_ident()
 
 
-def torus(count=1000000, major=3.0, minor=1.0, seed=16):
+def torus(count=600000, major=3.0, minor=1.0, seed=16):
     """Points uniformly random in the torus' two angles (fixed seed)."""
     generator = numpy.random.default_rng(seed)
     u, v = generator.uniform(0.0, 2.0 * numpy.pi, (2, count))
@@ -51,17 +61,28 @@ class ProgressLog:
     """The progress events of a filter: value, thread, time; optionally
     aborts the filter once the progress passes abort_at."""
 
-    def __init__(self, proxy, abort_at=None):
+    def __init__(self, proxy, abort_at=None, abort_in_serial_stage=False):
         self.algorithm = proxy.GetClientSideObject()
         self.events = []
+        self.texts = []
         self.abort_at = abort_at
+        self.abort_in_serial_stage = abort_in_serial_stage
         self.abort_time = None
         self.algorithm.AddObserver("ProgressEvent", self.on_progress)
+
+    def in_serial_stage(self):
+        """The last three events past abort_at report the same progress: a
+        stage that is not counted, such as the normals' orientation."""
+        last = [value for value, _, _ in self.events[-3:]]
+        return len(last) == 3 and last[0] >= self.abort_at and len(set(last)) == 1
 
     def on_progress(self, algorithm, _event):
         progress = algorithm.GetProgress()
         self.events.append((progress, threading.get_ident(), time.perf_counter()))
-        if self.abort_at is not None and self.abort_time is None and progress >= self.abort_at:
+        self.texts.append(algorithm.GetProgressText() or "")
+        if self.abort_at is None or self.abort_time is not None:
+            return
+        if self.in_serial_stage() if self.abort_in_serial_stage else progress >= self.abort_at:
             self.abort_time = time.perf_counter()
             algorithm.SetAbortExecute(1)
 
@@ -72,13 +93,65 @@ class ProgressLog:
         return all(thread == MAIN_THREAD for _, thread, _ in self.events)
 
 
-def check_progress(name, log):
+def check_progress(name, log, start, finished):
     values = log.values()
+    times = [start] + [when for _, _, when in log.events] + [finished]
+    gap = max(b - a for a, b in zip(times, times[1:]))
+    check(gap < 0.5, "%s: progress events at most half a second apart (largest gap %.2f s)" % (name, gap))
     inner = [v for v in values if 0.0 < v < 1.0]
     check(log.on_main_thread(), "%s: all %d progress events on the main thread" % (name, len(values)))
     check(len(inner) >= 10, "%s: %d progress updates strictly between 0 and 1 (at least 10)" % (name, len(inner)))
     check(all(b >= a for a, b in zip(values, values[1:])), "%s: the progress never goes back" % name)
     check(bool(values) and values[-1] == 1.0, "%s: the last progress is 1" % name)
+
+
+TIME_LEFT = re.compile(r"^Principal curvatures: about (?:(\d+) h )?(\d+) (s|min) left$")
+
+
+def seconds_left(text):
+    """The time left a progress text announces, in seconds; None without one."""
+    match = TIME_LEFT.match(text)
+    if not match:
+        return None
+    hours, amount, unit = match.group(1), int(match.group(2)), match.group(3)
+    return (int(hours or 0) * 3600) + amount * (60 if unit == "min" else 1)
+
+
+def check_time_left(log, finished):
+    """The progress text says the time left, and half-way it is about right."""
+    announced = [(value, when, seconds_left(text))
+                 for (value, _, when), text in zip(log.events, log.texts)]
+    with_estimate = [entry for entry in announced if entry[2] is not None]
+    # The executive's first event (progress 0) comes before the filter runs.
+    unnamed = [text for text in log.texts[1:] if not text.startswith("Principal curvatures")]
+    check(not unnamed, "every progress text after the first names the filter, as %r (not %r)"
+          % (log.texts[len(log.texts) // 2] if log.texts else None, unnamed[:3]))
+    check(len(with_estimate) >= 5, "%d progress texts say the time left (at least 5)" % len(with_estimate))
+    half_way = [entry for entry in with_estimate if entry[0] >= 0.5]
+    if half_way:
+        value, when, estimate = half_way[0]
+        actual = finished - when
+        check(actual / 2.0 <= estimate + 5.0 and estimate <= 2.0 * actual + 5.0,
+              "at %.0f %% the text said about %d s left; the run took %.1f s more" % (100 * value, estimate, actual))
+    else:
+        check(False, "no time left announced past half-way")
+
+
+def check_abort(stage, log_type, log_options, source):
+    """Abort requested from a progress event in `stage`: the filter returns
+    within a second, with no output."""
+    aborted = simple.PrincipalCurvatures(Input=source)
+    abort_log = log_type(aborted, **log_options)
+    aborted.UpdatePipeline()
+    returned = time.perf_counter()
+    check(abort_log.abort_time is not None, "Abort requested in the %s" % stage)
+    if abort_log.abort_time is not None:
+        delay = returned - abort_log.abort_time
+        check(delay < 1.0, "Abort in the %s: the filter returned %.3f s after the request (at most 1 s)"
+              % (stage, delay))
+    check(aborted.GetDataInformation().GetNumberOfPoints() == 0, "Abort in the %s: no output" % stage)
+    check(abort_log.on_main_thread(), "Abort in the %s: progress on the main thread" % stage)
+    simple.Delete(aborted)
 
 
 def main(plugin):
@@ -90,25 +163,24 @@ def main(plugin):
     start = time.perf_counter()
     curvatures.UpdatePipeline()
     seconds = time.perf_counter() - start
-    print("1M points, normals estimated, defaults: %.2f s" % seconds)
-    check_progress("PrincipalCurvatures on 1M points", log)
-    check(curvatures.GetDataInformation().GetNumberOfPoints() == 1000000, "the full run gives every point")
+    print("600k points, normals estimated, defaults: %.2f s" % seconds)
+    check_progress("PrincipalCurvatures on 600k points", log, start, start + seconds)
+    check_time_left(log, start + seconds)
+    check(curvatures.GetDataInformation().GetNumberOfPoints() == 600000, "the full run gives every point")
 
-    aborted = simple.PrincipalCurvatures(Input=source)
-    abort_log = ProgressLog(aborted, abort_at=0.2)
-    aborted.UpdatePipeline()
-    returned = time.perf_counter()
-    check(abort_log.abort_time is not None, "Abort requested at a progress of 0.2")
-    if abort_log.abort_time is not None:
-        delay = returned - abort_log.abort_time
-        check(delay < 1.0, "Abort: the filter returned %.3f s after the request (at most 1 s)" % delay)
-    check(aborted.GetDataInformation().GetNumberOfPoints() == 0, "Abort: no output")
-    check(abort_log.on_main_thread(), "Abort: progress on the main thread")
+    # Serial stages report no progress of their own: their progress repeats.
+    check_abort("first serial steps", ProgressLog, dict(abort_at=0.0, abort_in_serial_stage=True), source)
+    check_abort("plane fits", ProgressLog, dict(abort_at=0.2), source)
+    # The orientation reports the plane fits' end (0.36) until it is done.
+    check_abort("orientation", ProgressLog, dict(abort_at=0.3, abort_in_serial_stage=True), source)
+    # The curvatures' thresholds, grid and order, at the normals' end (0.45).
+    check_abort("curvatures' serial steps", ProgressLog, dict(abort_at=0.4, abort_in_serial_stage=True), source)
 
     normals = simple.PointCloudNormals(Input=source)
     normals_log = ProgressLog(normals)
+    start = time.perf_counter()
     normals.UpdatePipeline()
-    check_progress("PointCloudNormals on 1M points", normals_log)
+    check_progress("PointCloudNormals on 600k points", normals_log, start, time.perf_counter())
 
     print("%d failed" % len(failures))
     return 1 if failures else 0

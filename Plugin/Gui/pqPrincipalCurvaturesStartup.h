@@ -1,0 +1,22 @@
+/**
+ * @class pqPrincipalCurvaturesStartup
+ * @brief The plugin's GUI part, started when ParaView's GUI loads the
+ * plugin: Abort that stops the filters (pqCloudFilterAbortBehavior) and a
+ * colour map per output (pqCloudColorMapBehavior). pvpython and pvbatch
+ * do not start it.
+ */
+#ifndef pqPrincipalCurvaturesStartup_h
+#define pqPrincipalCurvaturesStartup_h
+
+#include <QObject>
+
+class pqPrincipalCurvaturesStartup : public QObject
+{
+  Q_OBJECT
+public:
+  explicit pqPrincipalCurvaturesStartup(QObject* parent = nullptr);
+  void startup();
+  void shutdown() {}
+};
+
+#endif

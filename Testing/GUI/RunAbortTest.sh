@@ -1,0 +1,65 @@
+#!/usr/bin/env bash
+# Abort in the real ParaView GUI under Xvfb: a run of about a minute
+# (abort_script.py), a real mouse click (xdotool) on the status bar's Abort
+# button a few seconds in, and checks that the button was enabled (its red
+# icon shows in the status bar), that the run returned within a second of
+# the click, and that the output is empty.
+#   RunAbortTest.sh PARAVIEW PLUGIN SCREENSHOT.png
+set -u
+paraview=$1 plugin=$2 screenshot=$3
+here=$(cd "$(dirname "$0")" && pwd)
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+export GUI_TEST_PLUGIN=$plugin GUI_TEST_MARKER=$work/marker GUI_TEST_WORK=$work
+mkdir -p "$(dirname "$screenshot")"
+rm -f "$screenshot"
+
+xvfb-run -a -s "-screen 0 1600x1000x24" bash -c '
+  "$0" --dr --script="$1" > "$GUI_TEST_WORK/paraview.log" 2>&1 &
+  pid=$!
+  for i in $(seq 1 120); do [ -s "$GUI_TEST_MARKER.running" ] && break; sleep 1; done
+  sleep 4
+  import -window root "$2"
+  window=$(xdotool search --onlyvisible --name "ParaView" | head -n 1)
+  eval "$(xdotool getwindowgeometry --shell "$window")"
+  echo "window $X $Y $WIDTH $HEIGHT" > "$GUI_TEST_WORK/geometry"
+  # The status bar: the bottom 30 rows of the window. The Abort button is
+  # the only red there, and only while it is enabled.
+  convert "$2" -crop "${WIDTH}x30+${X}+$((Y + HEIGHT - 30))" +repage txt:- |
+    awk -F"[(),: ]+" -v x0="$X" -v y0="$((Y + HEIGHT - 30))" "
+      /^[0-9]/ { if (\$3 > 180 && \$4 < 90 && \$5 < 90) { n++; sx += \$1; sy += \$2 } }
+      END { if (n) printf \"%d %d %d\n\", x0 + sx / n, y0 + sy / n, n }" > "$GUI_TEST_WORK/button"
+  if [ -s "$GUI_TEST_WORK/button" ]; then
+    read -r bx by pixels < "$GUI_TEST_WORK/button"
+    xdotool mousemove "$bx" "$by" click 1
+    date +%s.%N > "$GUI_TEST_WORK/clicked"
+  fi
+  for i in $(seq 1 150); do [ -s "$GUI_TEST_MARKER" ] && break; sleep 1; done
+  kill "$pid" 2>/dev/null
+  wait "$pid" 2>/dev/null
+  exit 0' "$paraview" "$here/abort_script.py" "$screenshot"
+
+status=0
+marker=$(cat "$GUI_TEST_MARKER" 2>/dev/null || echo "no marker: the GUI script did not finish")
+echo "GUI script: $marker"
+case "$marker" in ok*) ;; *) status=1; tail -n 20 "$work/paraview.log" ;; esac
+cat "$work/geometry" 2>/dev/null
+if [ -s "$work/button" ]; then
+  read -r bx by pixels < "$work/button"
+  echo "Abort button enabled: $pixels red pixels in the status bar, clicked at $bx $by"
+else
+  echo "FAILED: no enabled (red) Abort button in the status bar during the run"
+  exit 1
+fi
+returned=$(sed -n 's/^ok returned \([0-9.]*\) .*/\1/p' <<< "$marker")
+clicked=$(cat "$work/clicked")
+if awk -v r="$returned" -v c="$clicked" 'BEGIN { d = r - c; printf "the run returned %.3f s after the click\n", d; exit !(d >= 0 && d < 1.0) }'; then
+  :
+else
+  echo "FAILED: the run did not return within a second of the click"
+  status=1
+fi
+case "$marker" in *"output points 0"*) echo "the output is empty (aborted)" ;;
+  *) echo "FAILED: the output is not empty"; status=1 ;; esac
+echo "screenshot during the run: $screenshot"
+exit $status
