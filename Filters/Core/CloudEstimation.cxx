@@ -13,7 +13,9 @@ namespace
 constexpr double NaN = std::numeric_limits<double>::quiet_NaN();
 /// A curvature is trusted when twice its reported standard error is within
 /// this share of the cloud's curvature scale (WriteTrusted).
-constexpr double TrustedErrorShare = 0.2;
+constexpr double TrustedErrorShare = 0.1;
+/// A nearly flat cloud's curvature scale, times its median radius.
+constexpr double FlatCloudCurvatureShare = 0.25;
 
 /// The filter's working length unit (lengths multiplied by Scale, a power
 /// of two) and the way back to the input's: the only place lengths and
@@ -804,10 +806,12 @@ double WriteTrusted(const CurvatureBuffers& out,
     }
   }
   // The curvatures that matter in this cloud: its large ones, or, where it
-  // is (nearly) flat, the bending its typical neighbourhood could resolve.
+  // is (nearly) flat, a bending its typical neighbourhood resolves well (a
+  // quarter of one over its radius: a larger share would let the errors of
+  // gently curved parts, which take large radii, pass as trusted).
   const double typicalRadius = MagnitudeQuantile(radii.data(), numberOfPoints, 0.5, processes);
   const double scale = std::max(MagnitudeQuantile(largest.data(), numberOfPoints, 0.95, processes),
-    typicalRadius > 0.0 ? 1.0 / typicalRadius : 0.0);
+    typicalRadius > 0.0 ? FlatCloudCurvatureShare / typicalRadius : 0.0);
   for (std::int64_t i = 0; i < numberOfPoints; ++i)
   {
     const double error = out.StandardError ? out.StandardError[i] : NaN;

@@ -123,7 +123,7 @@ struct CurvatureBuffers
   /// that most errors are within twice it (docs/output-arrays.md).
   double* StandardError = nullptr;
   /// With FitMode::OrientedCircles only (may be null): 1 where the point is
-  /// estimated and twice its standard error is within a fifth of the
+  /// estimated and twice its standard error is within a tenth of the
   /// cloud's curvature scale (EstimationSummary::TrustedCurvatureScale).
   unsigned char* Trusted = nullptr;
   /// With FitMode::OrientedCircles only (may be null): the fitted
@@ -158,7 +158,7 @@ struct EstimationSummary
   double MeanCurvatureClip = 0.0;
   /// What CurvatureBuffers::Trusted compares the standard errors with
   /// (1/length): the larger of the 95th percentile of max(|k_min|, |k_max|)
-  /// and one over the median neighbourhood radius, over the estimated
+  /// and a quarter of one over the median neighbourhood radius, over the estimated
   /// points of every process (0 without that buffer).
   double TrustedCurvatureScale = 0.0;
   /// Points that repeat another exactly (coordinates and normal): estimated

@@ -20,10 +20,12 @@ work = os.environ["GUI_TEST_WORK"]
 
 
 def write_torus(path, scale, count=20000, seed=5):
-    """A torus (radii 3 and 1, times `scale`) with its exact outward normals."""
+    """A torus (radii 1.5 and 1, times `scale`) with its exact outward normals: its
+    mean curvature is negative on the inner side (the ring radius is below twice
+    the tube's), so a map centred on zero shows both of its ends."""
     generator = numpy.random.default_rng(seed)
     u, v = generator.uniform(0.0, 2.0 * numpy.pi, (2, count))
-    ring = 3.0 + numpy.cos(v)
+    ring = 1.5 + numpy.cos(v)
     points = scale * numpy.column_stack([ring * numpy.cos(u), ring * numpy.sin(u), numpy.sin(v)])
     normals = numpy.column_stack([numpy.cos(v) * numpy.cos(u), numpy.cos(v) * numpy.sin(u), numpy.sin(v)])
     numpy.savetxt(path, numpy.hstack([points, normals]), fmt="%.9g")
