@@ -1,18 +1,97 @@
 #include "PointCloudReaderSupport.h"
 
+#include "TextPointCloud.h"
+
+#include "vtkAlgorithm.h"
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
+#include "vtkInformationVector.h"
 #include "vtkNew.h"
+#include "vtkObject.h"
 #include "vtkPolyData.h"
+#include "vtkSetGet.h"
 #include "vtkTypeInt32Array.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
+
+#include <cstdio>
+#include <new>
 
 namespace pcurv
 {
 namespace readers
 {
+
+//------------------------------------------------------------------------------
+int RunRead(vtkAlgorithm* reader,
+  const char* fileName,
+  vtkInformationVector* outputVector,
+  unsigned long outOfMemoryCode,
+  const ReadFunction& read,
+  unsigned long& errorCode)
+{
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  vtkPolyData* output = vtkPolyData::GetData(outInfo);
+  if (!output)
+  {
+    return 0;
+  }
+  errorCode = vtkErrorCode::NoError;
+  if (!fileName || !*fileName)
+  {
+    vtkErrorWithObjectMacro(reader, << "No FileName to read.");
+    errorCode = vtkErrorCode::NoFileNameError;
+    return 1;
+  }
+  ReadFailure failure;
+  try
+  {
+    failure = read(fileName, output, outInfo);
+  }
+  catch (const std::bad_alloc&)
+  {
+    failure = ReadFailure("out of memory", outOfMemoryCode);
+  }
+  if (!failure.Message.empty())
+  {
+    output->Initialize();
+    vtkErrorWithObjectMacro(reader, << fileName << ": " << failure.Message);
+    errorCode = failure.ErrorCode;
+  }
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+ReadFailure ReadWholeTextFile(const char* fileName, std::string& buffer)
+{
+  std::string error;
+  if (!pcurv::ReadTextFile(fileName, static_cast<std::size_t>(-1), buffer, error))
+  {
+    return ReadFailure("cannot read the file: " + error, vtkErrorCode::CannotOpenFileError);
+  }
+  return ReadFailure();
+}
+
+//------------------------------------------------------------------------------
+int CanOpenFile(const char* fileName)
+{
+  std::FILE* file = fileName ? std::fopen(fileName, "rb") : nullptr;
+  if (file)
+  {
+    std::fclose(file);
+  }
+  return file ? 1 : 0;
+}
+
+//------------------------------------------------------------------------------
+int AllowPieceRequests(vtkInformationVector* outputVector)
+{
+  outputVector->GetInformationObject(0)->Set(vtkAlgorithm::CAN_HANDLE_PIECE_REQUEST(), 1);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
 
 PieceRange RequestedPiece(vtkInformation* outInfo, std::uint64_t total)
 {

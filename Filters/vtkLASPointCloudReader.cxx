@@ -6,15 +6,12 @@
 #include "vtkDataArray.h"
 #include "vtkErrorCode.h"
 #include "vtkInformation.h"
-#include "vtkInformationVector.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 
-#include <cstdio>
-#include <new>
 #include <string>
 
 vtkStandardNewMacro(vtkLASPointCloudReader);
@@ -76,6 +73,24 @@ pcurv::las::PointBuffers MakeArrays(vtkPolyData* output, int format, vtkIdType c
   return out;
 }
 
+/// The piece of the file's points that outInfo asks for, in output; an
+/// empty string, or what is wrong.
+std::string ReadPoints(const char* fileName, vtkPolyData* output, vtkInformation* outInfo)
+{
+  pcurv::las::File file;
+  std::string error = file.Open(fileName);
+  if (!error.empty())
+  {
+    return error;
+  }
+  const auto piece = pcurv::readers::RequestedPiece(outInfo, file.GetHeader().PointCount);
+  const vtkIdType count = static_cast<vtkIdType>(piece.End - piece.Begin);
+  const pcurv::las::PointBuffers buffers = MakeArrays(output, file.GetHeader().PointFormat, count);
+  error = file.Read(piece.Begin, piece.End, buffers);
+  pcurv::readers::AddVertexCells(output, count);
+  return error;
+}
+
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -93,12 +108,7 @@ vtkLASPointCloudReader::~vtkLASPointCloudReader()
 //------------------------------------------------------------------------------
 int vtkLASPointCloudReader::CanReadFile(const char* fileName)
 {
-  std::FILE* file = fileName ? std::fopen(fileName, "rb") : nullptr;
-  if (file)
-  {
-    std::fclose(file);
-  }
-  return file ? 1 : 0;
+  return pcurv::readers::CanOpenFile(fileName);
 }
 
 //------------------------------------------------------------------------------
@@ -106,8 +116,7 @@ int vtkLASPointCloudReader::RequestInformation(vtkInformation*,
   vtkInformationVector**,
   vtkInformationVector* outputVector)
 {
-  outputVector->GetInformationObject(0)->Set(vtkAlgorithm::CAN_HANDLE_PIECE_REQUEST(), 1);
-  return 1;
+  return pcurv::readers::AllowPieceRequests(outputVector);
 }
 
 //------------------------------------------------------------------------------
@@ -115,41 +124,11 @@ int vtkLASPointCloudReader::RequestData(vtkInformation*,
   vtkInformationVector**,
   vtkInformationVector* outputVector)
 {
-  vtkInformation* outInfo = outputVector->GetInformationObject(0);
-  vtkPolyData* output = vtkPolyData::GetData(outInfo);
-  this->SetErrorCode(vtkErrorCode::NoError);
-  if (!this->FileName || !*this->FileName)
-  {
-    vtkErrorMacro(<< "No FileName to read.");
-    this->SetErrorCode(vtkErrorCode::NoFileNameError);
-    return 1;
-  }
-  std::string error;
-  try
-  {
-    pcurv::las::File file;
-    error = file.Open(this->FileName);
-    if (error.empty())
-    {
-      const auto piece = pcurv::readers::RequestedPiece(outInfo, file.GetHeader().PointCount);
-      const vtkIdType count = static_cast<vtkIdType>(piece.End - piece.Begin);
-      const pcurv::las::PointBuffers buffers =
-        MakeArrays(output, file.GetHeader().PointFormat, count);
-      error = file.Read(piece.Begin, piece.End, buffers);
-      pcurv::readers::AddVertexCells(output, count);
-    }
-  }
-  catch (const std::bad_alloc&)
-  {
-    error = "out of memory";
-  }
-  if (!error.empty())
-  {
-    output->Initialize();
-    vtkErrorMacro(<< this->FileName << ": " << error);
-    this->SetErrorCode(vtkErrorCode::FileFormatError);
-  }
-  return 1;
+  unsigned long errorCode = this->GetErrorCode();
+  const int result = pcurv::readers::RunRead(
+    this, this->FileName, outputVector, vtkErrorCode::FileFormatError, ReadPoints, errorCode);
+  this->SetErrorCode(errorCode);
+  return result;
 }
 
 //------------------------------------------------------------------------------

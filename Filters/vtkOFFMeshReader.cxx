@@ -6,7 +6,6 @@
 #include "vtkErrorCode.h"
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
-#include "vtkInformationVector.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -15,11 +14,10 @@
 #include "vtkPolyDataNormals.h"
 
 #include "OffMesh.h"
-#include "TextPointCloud.h"
+#include "PointCloudReaderSupport.h"
 
 #include <algorithm>
 #include <cstdint>
-#include <new>
 #include <string>
 #include <vector>
 
@@ -85,6 +83,40 @@ void AddOutwardNormals(vtkPolyData* mesh)
   mesh->GetPointData()->SetNormals(outward);
 }
 
+/// The file's mesh in output: its faces with outward normals, or a vertex
+/// cell per point when it has no faces. The whole mesh, whatever piece the
+/// request asks for.
+pcurv::readers::ReadFailure ReadMesh(const char* fileName, vtkPolyData* output, vtkInformation*)
+{
+  std::string buffer;
+  const pcurv::readers::ReadFailure failure = pcurv::readers::ReadWholeTextFile(fileName, buffer);
+  if (!failure.Message.empty())
+  {
+    return failure;
+  }
+  pcurv::OffMesh mesh;
+  const std::string error = pcurv::ParseOffMesh(buffer.data(), buffer.size(), mesh);
+  if (!error.empty())
+  {
+    return error;
+  }
+  vtkNew<vtkDoubleArray> coordinates;
+  coordinates->SetNumberOfComponents(3);
+  coordinates->SetNumberOfTuples(static_cast<vtkIdType>(mesh.Points.size() / 3));
+  std::copy(mesh.Points.begin(), mesh.Points.end(), coordinates->GetPointer(0));
+  vtkNew<vtkPoints> points;
+  points->SetData(coordinates);
+  output->SetPoints(points);
+  if (mesh.Faces() == 0)
+  {
+    output->SetVerts(VertexCells(mesh.Points.size() / 3));
+    return pcurv::readers::ReadFailure();
+  }
+  output->SetPolys(Cells(mesh.Offsets, mesh.Connectivity));
+  AddOutwardNormals(output);
+  return pcurv::readers::ReadFailure();
+}
+
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -104,57 +136,11 @@ int vtkOFFMeshReader::RequestData(vtkInformation*,
   vtkInformationVector**,
   vtkInformationVector* outputVector)
 {
-  vtkPolyData* output = vtkPolyData::GetData(outputVector);
-  if (!output)
-  {
-    return 0;
-  }
-  this->SetErrorCode(vtkErrorCode::NoError);
-  if (!this->FileName || !*this->FileName)
-  {
-    vtkErrorMacro(<< "No FileName to read.");
-    this->SetErrorCode(vtkErrorCode::NoFileNameError);
-    return 1;
-  }
-  try
-  {
-    std::string buffer, error;
-    if (!pcurv::ReadTextFile(this->FileName, static_cast<std::size_t>(-1), buffer, error))
-    {
-      vtkErrorMacro(<< this->FileName << ": cannot read the file: " << error);
-      this->SetErrorCode(vtkErrorCode::CannotOpenFileError);
-      return 1;
-    }
-    pcurv::OffMesh mesh;
-    error = pcurv::ParseOffMesh(buffer.data(), buffer.size(), mesh);
-    if (!error.empty())
-    {
-      vtkErrorMacro(<< this->FileName << ": " << error);
-      this->SetErrorCode(vtkErrorCode::FileFormatError);
-      return 1;
-    }
-    vtkNew<vtkDoubleArray> coordinates;
-    coordinates->SetNumberOfComponents(3);
-    coordinates->SetNumberOfTuples(static_cast<vtkIdType>(mesh.Points.size() / 3));
-    std::copy(mesh.Points.begin(), mesh.Points.end(), coordinates->GetPointer(0));
-    vtkNew<vtkPoints> points;
-    points->SetData(coordinates);
-    output->SetPoints(points);
-    if (mesh.Faces() == 0)
-    {
-      output->SetVerts(VertexCells(mesh.Points.size() / 3));
-      return 1;
-    }
-    output->SetPolys(Cells(mesh.Offsets, mesh.Connectivity));
-    AddOutwardNormals(output);
-  }
-  catch (const std::bad_alloc&)
-  {
-    output->Initialize();
-    vtkErrorMacro(<< this->FileName << ": out of memory");
-    this->SetErrorCode(vtkErrorCode::UnknownError);
-  }
-  return 1;
+  unsigned long errorCode = this->GetErrorCode();
+  const int result = pcurv::readers::RunRead(
+    this, this->FileName, outputVector, vtkErrorCode::UnknownError, ReadMesh, errorCode);
+  this->SetErrorCode(errorCode);
+  return result;
 }
 
 //------------------------------------------------------------------------------

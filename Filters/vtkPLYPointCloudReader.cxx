@@ -6,15 +6,12 @@
 #include "vtkDataArray.h"
 #include "vtkErrorCode.h"
 #include "vtkInformation.h"
-#include "vtkInformationVector.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 
-#include <cstdio>
-#include <new>
 #include <string>
 
 vtkStandardNewMacro(vtkPLYPointCloudReader);
@@ -68,6 +65,24 @@ void MakeArrays(vtkPolyData* output, pcurv::ply::VertexLayout& layout, vtkIdType
   }
 }
 
+/// The piece of the file's vertices that outInfo asks for, in output; an
+/// empty string, or what is wrong.
+std::string ReadVertices(const char* fileName, vtkPolyData* output, vtkInformation* outInfo)
+{
+  pcurv::ply::File file;
+  std::string error = file.Open(fileName);
+  if (!error.empty())
+  {
+    return error;
+  }
+  const auto piece = pcurv::readers::RequestedPiece(outInfo, file.Vertices().Count);
+  const vtkIdType count = static_cast<vtkIdType>(piece.End - piece.Begin);
+  MakeArrays(output, file.Layout(), count);
+  error = file.Read(piece.Begin, piece.End);
+  pcurv::readers::AddVertexCells(output, count);
+  return error;
+}
+
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -85,12 +100,7 @@ vtkPLYPointCloudReader::~vtkPLYPointCloudReader()
 //------------------------------------------------------------------------------
 int vtkPLYPointCloudReader::CanReadFile(const char* fileName)
 {
-  std::FILE* file = fileName ? std::fopen(fileName, "rb") : nullptr;
-  if (file)
-  {
-    std::fclose(file);
-  }
-  return file ? 1 : 0;
+  return pcurv::readers::CanOpenFile(fileName);
 }
 
 //------------------------------------------------------------------------------
@@ -98,8 +108,7 @@ int vtkPLYPointCloudReader::RequestInformation(vtkInformation*,
   vtkInformationVector**,
   vtkInformationVector* outputVector)
 {
-  outputVector->GetInformationObject(0)->Set(vtkAlgorithm::CAN_HANDLE_PIECE_REQUEST(), 1);
-  return 1;
+  return pcurv::readers::AllowPieceRequests(outputVector);
 }
 
 //------------------------------------------------------------------------------
@@ -107,40 +116,11 @@ int vtkPLYPointCloudReader::RequestData(vtkInformation*,
   vtkInformationVector**,
   vtkInformationVector* outputVector)
 {
-  vtkInformation* outInfo = outputVector->GetInformationObject(0);
-  vtkPolyData* output = vtkPolyData::GetData(outInfo);
-  this->SetErrorCode(vtkErrorCode::NoError);
-  if (!this->FileName || !*this->FileName)
-  {
-    vtkErrorMacro(<< "No FileName to read.");
-    this->SetErrorCode(vtkErrorCode::NoFileNameError);
-    return 1;
-  }
-  std::string error;
-  try
-  {
-    pcurv::ply::File file;
-    error = file.Open(this->FileName);
-    if (error.empty())
-    {
-      const auto piece = pcurv::readers::RequestedPiece(outInfo, file.Vertices().Count);
-      const vtkIdType count = static_cast<vtkIdType>(piece.End - piece.Begin);
-      MakeArrays(output, file.Layout(), count);
-      error = file.Read(piece.Begin, piece.End);
-      pcurv::readers::AddVertexCells(output, count);
-    }
-  }
-  catch (const std::bad_alloc&)
-  {
-    error = "out of memory";
-  }
-  if (!error.empty())
-  {
-    output->Initialize();
-    vtkErrorMacro(<< this->FileName << ": " << error);
-    this->SetErrorCode(vtkErrorCode::FileFormatError);
-  }
-  return 1;
+  unsigned long errorCode = this->GetErrorCode();
+  const int result = pcurv::readers::RunRead(
+    this, this->FileName, outputVector, vtkErrorCode::FileFormatError, ReadVertices, errorCode);
+  this->SetErrorCode(errorCode);
+  return result;
 }
 
 //------------------------------------------------------------------------------

@@ -5,7 +5,6 @@
 #include "vtkErrorCode.h"
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
-#include "vtkInformationVector.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -14,9 +13,9 @@
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkUnsignedCharArray.h"
 
+#include "PointCloudReaderSupport.h"
 #include "TextPointCloud.h"
 
-#include <new>
 #include <string>
 #include <utility>
 #include <vector>
@@ -104,6 +103,59 @@ std::pair<std::size_t, std::size_t> PieceRows(vtkInformation* outInfo, std::size
   return { rows * piece / pieces, rows * (piece + 1) / pieces };
 }
 
+/// Reads and parses the file; what is wrong when it is not a cloud.
+pcurv::readers::ReadFailure ReadCloud(const char* fileName, pcurv::TextCloud& cloud)
+{
+  std::string buffer;
+  const pcurv::readers::ReadFailure failure = pcurv::readers::ReadWholeTextFile(fileName, buffer);
+  if (!failure.Message.empty())
+  {
+    return failure;
+  }
+  const bool pts = pcurv::LowerExtension(fileName) == "pts";
+  std::string error = pcurv::ParseTextCloud(buffer.data(), buffer.size(), pts, false, cloud);
+  if (!error.empty())
+  {
+    if (pcurv::LooksLikeMolecule(buffer.data(), buffer.size()))
+    {
+      error = "an XYZ molecule file (an atom count, a comment line, then 'element x y z' "
+              "lines), not a point cloud: open it with ParaView's XYZ Reader";
+    }
+    return error;
+  }
+  cloud.Values.shrink_to_fit();
+  return pcurv::readers::ReadFailure();
+}
+
+/// The piece of the cloud that outInfo asks for, in output, with the
+/// layout's normals, colours and other columns as point data.
+void CopyPiece(const pcurv::TextCloud& cloud,
+  const pcurv::ColumnLayout& layout,
+  vtkInformation* outInfo,
+  vtkPolyData* output)
+{
+  const auto rows = PieceRows(outInfo, cloud.Rows());
+  const std::size_t begin = rows.first, end = rows.second;
+  vtkNew<vtkPoints> points;
+  points->SetData(DoubleColumns(cloud, layout.Position, begin, end, nullptr));
+  output->SetPoints(points);
+  output->SetVerts(VertexCells(static_cast<vtkIdType>(end - begin)));
+
+  vtkPointData* pointData = output->GetPointData();
+  if (!layout.Normal.empty())
+  {
+    pointData->SetNormals(DoubleColumns(cloud, layout.Normal, begin, end, "Normals"));
+  }
+  if (!layout.Colour.empty())
+  {
+    pointData->SetScalars(ColourColumns(cloud, layout.Colour, begin, end));
+  }
+  for (const auto& scalar : layout.Scalars)
+  {
+    pointData->AddArray(DoubleColumns(cloud, { scalar.first }, begin, end, scalar.second.c_str()));
+  }
+}
+
 bool IsCloudExtension(const std::string& extension)
 {
   return extension == "xyz" || extension == "pwn" || extension == "pts";
@@ -154,35 +206,7 @@ int vtkTextPointCloudReader::RequestInformation(vtkInformation*,
   vtkInformationVector**,
   vtkInformationVector* outputVector)
 {
-  outputVector->GetInformationObject(0)->Set(vtkAlgorithm::CAN_HANDLE_PIECE_REQUEST(), 1);
-  return 1;
-}
-
-//------------------------------------------------------------------------------
-bool vtkTextPointCloudReader::ReadCloud(pcurv::TextCloud& cloud)
-{
-  std::string buffer, error;
-  if (!pcurv::ReadTextFile(this->FileName, static_cast<std::size_t>(-1), buffer, error))
-  {
-    vtkErrorMacro(<< this->FileName << ": cannot read the file: " << error);
-    this->SetErrorCode(vtkErrorCode::CannotOpenFileError);
-    return false;
-  }
-  const bool pts = pcurv::LowerExtension(this->FileName) == "pts";
-  error = pcurv::ParseTextCloud(buffer.data(), buffer.size(), pts, false, cloud);
-  if (!error.empty())
-  {
-    if (pcurv::LooksLikeMolecule(buffer.data(), buffer.size()))
-    {
-      error = "an XYZ molecule file (an atom count, a comment line, then 'element x y z' "
-              "lines), not a point cloud: open it with ParaView's XYZ Reader";
-    }
-    vtkErrorMacro(<< this->FileName << ": " << error);
-    this->SetErrorCode(vtkErrorCode::FileFormatError);
-    return false;
-  }
-  cloud.Values.shrink_to_fit();
-  return true;
+  return pcurv::readers::AllowPieceRequests(outputVector);
 }
 
 //------------------------------------------------------------------------------
@@ -203,60 +227,27 @@ int vtkTextPointCloudReader::RequestData(vtkInformation*,
   vtkInformationVector**,
   vtkInformationVector* outputVector)
 {
-  vtkInformation* outInfo = outputVector->GetInformationObject(0);
-  vtkPolyData* output = vtkPolyData::GetData(outInfo);
-  if (!output)
-  {
-    return 0;
-  }
-  this->SetErrorCode(vtkErrorCode::NoError);
-  if (!this->FileName || !*this->FileName)
-  {
-    vtkErrorMacro(<< "No FileName to read.");
-    this->SetErrorCode(vtkErrorCode::NoFileNameError);
-    return 1;
-  }
-  try
+  // The warning about bad coordinates is this reader's own, so the read is
+  // a lambda here rather than a free function.
+  const auto readPiece = [this](const char* fileName, vtkPolyData* output, vtkInformation* outInfo)
   {
     pcurv::TextCloud cloud;
-    if (!this->ReadCloud(cloud))
+    const pcurv::readers::ReadFailure failure = ReadCloud(fileName, cloud);
+    if (!failure.Message.empty())
     {
-      return 1;
+      return failure;
     }
-    const bool pts = pcurv::LowerExtension(this->FileName) == "pts";
+    const bool pts = pcurv::LowerExtension(fileName) == "pts";
     const pcurv::ColumnLayout layout = pcurv::ChooseColumnLayout(cloud, pts);
     this->WarnAboutNonFinitePositions(pcurv::NonFinitePositionLines(cloud, layout));
-
-    const auto rows = PieceRows(outInfo, cloud.Rows());
-    const std::size_t begin = rows.first, end = rows.second;
-    vtkNew<vtkPoints> points;
-    points->SetData(DoubleColumns(cloud, layout.Position, begin, end, nullptr));
-    output->SetPoints(points);
-    output->SetVerts(VertexCells(static_cast<vtkIdType>(end - begin)));
-
-    vtkPointData* pointData = output->GetPointData();
-    if (!layout.Normal.empty())
-    {
-      pointData->SetNormals(DoubleColumns(cloud, layout.Normal, begin, end, "Normals"));
-    }
-    if (!layout.Colour.empty())
-    {
-      pointData->SetScalars(ColourColumns(cloud, layout.Colour, begin, end));
-    }
-    for (const auto& scalar : layout.Scalars)
-    {
-      pointData->AddArray(
-        DoubleColumns(cloud, { scalar.first }, begin, end, scalar.second.c_str()));
-    }
-  }
-  catch (const std::bad_alloc&)
-  {
-    output->Initialize();
-    vtkErrorMacro(<< this->FileName << ": out of memory");
-    this->SetErrorCode(vtkErrorCode::UnknownError);
-    return 1;
-  }
-  return 1;
+    CopyPiece(cloud, layout, outInfo, output);
+    return pcurv::readers::ReadFailure();
+  };
+  unsigned long errorCode = this->GetErrorCode();
+  const int result = pcurv::readers::RunRead(
+    this, this->FileName, outputVector, vtkErrorCode::UnknownError, readPiece, errorCode);
+  this->SetErrorCode(errorCode);
+  return result;
 }
 
 //------------------------------------------------------------------------------

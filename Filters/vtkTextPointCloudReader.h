@@ -76,11 +76,6 @@
 #include <cstddef> // for std::size_t
 #include <vector>  // for the lines of WarnAboutNonFinitePositions
 
-namespace pcurv
-{
-struct TextCloud;
-}
-
 class VTKPRINCIPALCURVATUREFILTERS_EXPORT vtkTextPointCloudReader : public vtkPolyDataAlgorithm
 {
 public:
@@ -116,8 +111,6 @@ protected:
   char* FileName = nullptr;
 
 private:
-  /// Reads and parses the file; false after reporting what is wrong.
-  bool ReadCloud(pcurv::TextCloud& cloud);
   /// One warning for all points with a NaN or infinite coordinate.
   void WarnAboutNonFinitePositions(const std::vector<std::size_t>& lines);
 

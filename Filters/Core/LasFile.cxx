@@ -362,38 +362,11 @@ std::string ParseHeader(const unsigned char* data,
 }
 
 //------------------------------------------------------------------------------
-File::~File()
+std::string File::ReadHeader(std::uint64_t fileSize)
 {
-  if (this->Handle)
-  {
-    std::fclose(this->Handle);
-  }
-}
-
-//------------------------------------------------------------------------------
-std::string File::Open(const char* fileName)
-{
-  std::FILE* stream = std::fopen(fileName, "rb");
-  if (!stream)
-  {
-    return std::string("cannot open the file: ") + std::strerror(errno);
-  }
-  return this->Open(stream);
-}
-
-//------------------------------------------------------------------------------
-std::string File::Open(std::FILE* stream)
-{
-  this->Handle = stream;
-  if (std::fseek(this->Handle, 0, SEEK_END) != 0)
-  {
-    return std::string("cannot read the file: ") + std::strerror(errno);
-  }
-  const long end = std::ftell(this->Handle);
-  std::rewind(this->Handle);
   unsigned char data[375] = {};
-  const std::size_t got = std::fread(data, 1, sizeof data, this->Handle);
-  return ParseHeader(data, got, end < 0 ? 0 : static_cast<std::uint64_t>(end), this->TheHeader);
+  const std::size_t got = std::fread(data, 1, sizeof data, this->Stream());
+  return ParseHeader(data, got, fileSize, this->TheHeader);
 }
 
 //------------------------------------------------------------------------------
@@ -404,14 +377,14 @@ std::string File::Read(std::uint64_t begin, std::uint64_t end, const PointBuffer
   constexpr std::uint64_t chunk = 1 << 16;
   std::vector<unsigned char> buffer(chunk * header.RecordLength);
   const std::uint64_t start = header.OffsetToPointData + begin * header.RecordLength;
-  if (std::fseek(this->Handle, static_cast<long>(start), SEEK_SET) != 0)
+  if (std::fseek(this->Stream(), static_cast<long>(start), SEEK_SET) != 0)
   {
     return std::string("cannot seek to the points: ") + std::strerror(errno);
   }
   for (std::uint64_t first = begin; first < end; first += chunk)
   {
     const std::size_t count = static_cast<std::size_t>(std::min(chunk, end - first));
-    const std::size_t got = std::fread(buffer.data(), header.RecordLength, count, this->Handle);
+    const std::size_t got = std::fread(buffer.data(), header.RecordLength, count, this->Stream());
     if (got != count)
     {
       return "the file ends in point " + std::to_string(first + got) + " of " +

@@ -10,8 +10,9 @@
 #ifndef pcurv_LasFile_h
 #define pcurv_LasFile_h
 
+#include "FileInput.h"
+
 #include <cstdint>
-#include <cstdio>
 #include <string>
 
 namespace pcurv
@@ -86,27 +87,19 @@ std::string ParseHeader(const unsigned char* data,
   std::uint64_t fileSize,
   Header& header);
 
-/// An open LAS file: the header on Open, the points on Read.
-class File
+/// An open LAS file: Open (InputFile's) reads and checks the header, Read
+/// the points.
+class File final : public InputFile
 {
 public:
-  File() = default;
-  ~File();
-  File(const File&) = delete;
-  File& operator=(const File&) = delete;
-
-  /// Opens and checks the file; an empty string, or what is wrong.
-  std::string Open(const char* fileName);
-  /// The same on an open stream (which this then closes; for example
-  /// fmemopen's, as the fuzz target does).
-  std::string Open(std::FILE* stream);
   const Header& GetHeader() const { return this->TheHeader; }
   /// Reads points [begin, end) into out (index 0 is point begin), in chunks
   /// of a fixed size; an empty string, or what went wrong.
   std::string Read(std::uint64_t begin, std::uint64_t end, const PointBuffers& out);
 
 private:
-  std::FILE* Handle = nullptr;
+  std::string ReadHeader(std::uint64_t fileSize) override;
+
   Header TheHeader;
 };
 

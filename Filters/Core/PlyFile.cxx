@@ -45,15 +45,6 @@ bool TypeOf(const std::string& name, Type& type)
   return false;
 }
 
-std::string Lower(std::string text)
-{
-  std::transform(text.begin(),
-    text.end(),
-    text.begin(),
-    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return text;
-}
-
 /// "property <type> <name>" or "property list <count type> <type> <name>".
 std::string ParseProperty(const std::vector<std::string>& words, Property& property)
 {
@@ -137,7 +128,7 @@ int FindProperty(const Element& element, const char* name)
   for (std::size_t i = 0; i < element.Properties.size(); ++i)
   {
     const Property& p = element.Properties[i];
-    if (!p.IsList && Lower(p.Name) == name)
+    if (!p.IsList && LowerCase(p.Name) == name)
     {
       return static_cast<int>(i);
     }
@@ -363,41 +354,11 @@ VertexLayout PlanVertexColumns(const Element& vertex)
 }
 
 //------------------------------------------------------------------------------
-File::~File()
+std::string File::ReadHeader(std::uint64_t fileSize)
 {
-  if (this->Handle)
-  {
-    std::fclose(this->Handle);
-  }
-}
-
-//------------------------------------------------------------------------------
-std::string File::Open(const char* fileName)
-{
-  std::FILE* stream = std::fopen(fileName, "rb");
-  if (!stream)
-  {
-    return std::string("cannot open the file: ") + std::strerror(errno);
-  }
-  return this->Open(stream);
-}
-
-//------------------------------------------------------------------------------
-std::string File::Open(std::FILE* stream)
-{
-  this->Handle = stream;
-  long size = -1;
-  if (std::fseek(this->Handle, 0, SEEK_END) == 0)
-  {
-    size = std::ftell(this->Handle);
-  }
-  if (size < 0 || std::fseek(this->Handle, 0, SEEK_SET) != 0)
-  {
-    return std::string("cannot read the file: ") + std::strerror(errno);
-  }
   // The header is text before the body; a megabyte holds any real one.
-  std::vector<char> start(std::min<std::size_t>(static_cast<std::size_t>(size), 1 << 20));
-  start.resize(std::fread(start.data(), 1, start.size(), this->Handle));
+  std::vector<char> start(std::min<std::size_t>(static_cast<std::size_t>(fileSize), 1 << 20));
+  start.resize(std::fread(start.data(), 1, start.size(), this->Stream()));
   std::string error = ParseHeader(start.data(), start.size(), this->TheHeader);
   if (error.empty())
   {
@@ -405,7 +366,7 @@ std::string File::Open(std::FILE* stream)
   }
   if (error.empty())
   {
-    error = CheckBodySize(this->TheHeader, this->Vertex, static_cast<std::uint64_t>(size));
+    error = CheckBodySize(this->TheHeader, this->Vertex, fileSize);
   }
   if (error.empty())
   {
@@ -417,11 +378,11 @@ std::string File::Open(std::FILE* stream)
 //------------------------------------------------------------------------------
 std::string File::Read(std::uint64_t begin, std::uint64_t end)
 {
-  if (std::fseek(this->Handle, static_cast<long>(this->TheHeader.BodyOffset), SEEK_SET) != 0)
+  if (std::fseek(this->Stream(), static_cast<long>(this->TheHeader.BodyOffset), SEEK_SET) != 0)
   {
     return std::string("cannot seek to the data: ") + std::strerror(errno);
   }
-  Body body(this->Handle, this->TheHeader.BodyFormat);
+  Body body(this->Stream(), this->TheHeader.BodyFormat);
   for (std::size_t e = 0; e < this->Vertex; ++e)
   {
     std::string error = body.SkipElement(this->TheHeader.Elements[e]);

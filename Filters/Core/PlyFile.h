@@ -8,8 +8,9 @@
 #ifndef pcurv_PlyFile_h
 #define pcurv_PlyFile_h
 
+#include "FileInput.h"
+
 #include <cstdint>
-#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -103,21 +104,11 @@ struct VertexLayout
 };
 VertexLayout PlanVertexColumns(const Element& vertex);
 
-/// An open PLY file: the header on Open, the vertices on Read.
-class File
+/// An open PLY file: Open (InputFile's) reads and checks the header and
+/// the vertex element, Read the vertices.
+class File final : public InputFile
 {
 public:
-  File() = default;
-  ~File();
-  File(const File&) = delete;
-  File& operator=(const File&) = delete;
-
-  /// Opens the file and checks its header and vertex element; an empty
-  /// string, or what is wrong.
-  std::string Open(const char* fileName);
-  /// The same on an open stream (which this then closes; for example
-  /// fmemopen's, as the fuzz target does).
-  std::string Open(std::FILE* stream);
   const Header& GetHeader() const { return this->TheHeader; }
   const Element& Vertices() const { return this->TheHeader.Elements[this->Vertex]; }
   VertexLayout& Layout() { return this->TheLayout; }
@@ -126,7 +117,8 @@ public:
   std::string Read(std::uint64_t begin, std::uint64_t end);
 
 private:
-  std::FILE* Handle = nullptr;
+  std::string ReadHeader(std::uint64_t fileSize) override;
+
   Header TheHeader;
   std::size_t Vertex = 0;
   VertexLayout TheLayout;

@@ -1,5 +1,7 @@
 #include "TextPointCloud.h"
 
+#include "FileInput.h"
+
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
@@ -117,15 +119,6 @@ std::string ColumnName(const Token& token)
     name = name.substr(1, name.size() - 2);
   }
   return name;
-}
-
-std::string Lower(std::string text)
-{
-  std::transform(text.begin(),
-    text.end(),
-    text.begin(),
-    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return text;
 }
 
 std::string AtLine(std::size_t line)
@@ -390,7 +383,7 @@ std::string LowerExtension(const char* fileName)
   {
     return std::string();
   }
-  return Lower(name.substr(dot + 1));
+  return LowerCase(name.substr(dot + 1));
 }
 
 namespace
@@ -460,7 +453,7 @@ ColumnLayout ChooseColumnLayout(const TextCloud& cloud, bool pts)
   std::vector<std::string> lower;
   for (const std::string& name : cloud.Names)
   {
-    lower.push_back(Lower(name));
+    lower.push_back(LowerCase(name));
   }
   if (!lower.empty())
   {
