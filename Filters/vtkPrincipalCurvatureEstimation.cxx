@@ -164,6 +164,7 @@ pcurv::EstimationSettings CoreSettings(vtkPrincipalCurvatureEstimation* self)
   settings.PlaneDistanceRatio = self->GetPlaneDistanceRatio();
   settings.MinimumPointsPerDirection = self->GetMinimumPointsPerDirection();
   settings.AutomaticScaleTolerance = self->GetAutomaticScaleTolerance();
+  settings.ShareFits = self->GetShareFits();
   settings.DynamicAdjustment = self->GetDynamicAdjustment();
   settings.AutomaticLengthUnit = self->GetAutomaticLengthUnit();
   settings.LengthUnit = self->GetLengthUnit();
@@ -243,6 +244,7 @@ vtkPrincipalCurvatureEstimation::vtkPrincipalCurvatureEstimation()
   this->PlaneDistanceRatio = defaults.PlaneDistanceRatio;
   this->MinimumPointsPerDirection = defaults.MinimumPointsPerDirection;
   this->AutomaticScaleTolerance = defaults.AutomaticScaleTolerance;
+  this->ShareFits = defaults.ShareFits;
   this->DynamicAdjustment = defaults.DynamicAdjustment;
   this->AutomaticLengthUnit = defaults.AutomaticLengthUnit;
   this->LengthUnit = defaults.LengthUnit;
@@ -350,6 +352,7 @@ int vtkPrincipalCurvatureEstimation::RequestData(vtkInformation*,
   }
   this->UpdateProgress(1.0);
   this->NumberOfUnestimatedPoints = summary.NumberOfUnestimatedPoints;
+  this->NumberOfSharedFitPoints = summary.NumberOfSharedPoints;
   pcurv::CopyGeometry(input, output);
   arrays.AddTo(output->GetPointData(), this->SinglePrecisionOutput, this->DiagnosticArrays);
   ReportUnestimated(this, summary, processes, output);
@@ -360,6 +363,14 @@ int vtkPrincipalCurvatureEstimation::RequestData(vtkInformation*,
     scale->SetName("Trusted_Curvature_Scale");
     scale->InsertNextValue(summary.TrustedCurvatureScale);
     output->GetFieldData()->AddArray(scale);
+  }
+  if (settings.ShareFits && settings.Mode == pcurv::FitMode::OrientedCircles &&
+    settings.Neighborhood == pcurv::NeighborhoodMode::Automatic)
+  {
+    vtkNew<vtkIdTypeArray> shared;
+    shared->SetName("Shared_Fit_Points");
+    shared->InsertNextValue(summary.NumberOfSharedPoints);
+    output->GetFieldData()->AddArray(shared);
   }
   if (estimatedNormals)
   {
@@ -566,6 +577,7 @@ void vtkPrincipalCurvatureEstimation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "PlaneDistanceRatio: " << this->PlaneDistanceRatio << "\n";
   os << indent << "MinimumPointsPerDirection: " << this->MinimumPointsPerDirection << "\n";
   os << indent << "AutomaticScaleTolerance: " << this->AutomaticScaleTolerance << "\n";
+  os << indent << "ShareFits: " << (this->ShareFits ? "On" : "Off") << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
   os << indent << "SinglePrecisionOutput: " << (this->SinglePrecisionOutput ? "On" : "Off") << "\n";
   os << indent << "DiagnosticArrays: " << (this->DiagnosticArrays ? "On" : "Off") << "\n";

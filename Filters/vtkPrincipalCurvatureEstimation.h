@@ -156,6 +156,19 @@ public:
 
   ///@{
   /**
+   * AUTOMATIC_SCALE: a point near an anchor point whose neighbourhood is
+   * wide (noisy clouds) takes the anchor's fitted surface, evaluated at its
+   * own position, instead of fitting nearly the same neighbours again
+   * (default on; docs/method.md). Off: every point fits its own
+   * neighbourhood, at several times the cost on noisy clouds.
+   */
+  vtkSetMacro(ShareFits, bool);
+  vtkGetMacro(ShareFits, bool);
+  vtkBooleanMacro(ShareFits, bool);
+  ///@}
+
+  ///@{
+  /**
    * When on (default), the surroundings-threshold s and the
    * plane-distance-threshold p are derived from the cloud (see the class
    * description) and SurroundingsThreshold / PlaneDistanceThreshold are
@@ -385,6 +398,13 @@ public:
   vtkGetMacro(NumberOfUnestimatedPoints, vtkIdType);
   ///@}
 
+  /**
+   * After an update with ShareFits: the points (of every process) that took
+   * the fits of anchor points near them instead of fitting their own; the
+   * output's field data "Shared_Fit_Points" holds it too.
+   */
+  vtkGetMacro(NumberOfSharedFitPoints, vtkIdType);
+
 protected:
   vtkPrincipalCurvatureEstimation();
   ~vtkPrincipalCurvatureEstimation() override = default;
@@ -411,6 +431,7 @@ protected:
   double PlaneDistanceRatio;
   int MinimumPointsPerDirection;
   double AutomaticScaleTolerance;
+  bool ShareFits = true;
   int NumberOfThreads = 0;
   bool SinglePrecisionOutput = false;
   bool DiagnosticArrays = true;
@@ -434,6 +455,7 @@ protected:
   double UsedSurroundingsThreshold = 0.0;
   double UsedPlaneDistanceThreshold = 0.0;
   vtkIdType NumberOfUnestimatedPoints = 0;
+  vtkIdType NumberOfSharedFitPoints = 0;
 
 private:
   vtkPrincipalCurvatureEstimation(const vtkPrincipalCurvatureEstimation&) = delete;

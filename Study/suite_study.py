@@ -67,7 +67,7 @@ FIT_MODES = {"Previous": 0, "New01": 1, "New02": 2, "OrientedCircles": 3}
 
 def configure(curvatures, setting):
     """default; own-normals; or comma-separated key=value: fit=<mode>, k=<neighbours>,
-    p=<plane distance ratio>, normals=own."""
+    p=<plane distance ratio>, normals=own, share=on|off (shared fits)."""
     if setting == "default":
         return
     if setting == "own-normals":
@@ -89,6 +89,8 @@ def configure(curvatures, setting):
         curvatures.SetAutomaticScaleTolerance(float(parts["tol"]))
     if parts.get("normals") == "own":
         curvatures.SetNormalsSourceToEstimated()
+    if "share" in parts:
+        curvatures.SetShareFits(parts["share"] == "on")
 
 
 def estimates_normals(setting):

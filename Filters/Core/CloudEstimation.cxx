@@ -43,6 +43,9 @@ struct AutomaticScaleRule
   int MinimumCount = 12;    // fewer neighbours give no estimate to compare
   double Tolerance = 2.0;   // standard errors two estimates may differ by
   double LargestRadius = 0; // no radius beyond this (a length)
+  double TypicalRadius = 0; // the cloud's typical first radius (a length)
+  bool ShareFits = false;   // points near an anchor take its fit (SharedFits.h)
+  SharingRule Sharing;
 };
 
 /// How neighbourhoods and thresholds are chosen for every point.
@@ -127,10 +130,23 @@ NeighborhoodRule ChooseThresholds(const EstimationSettings& settings,
     rule.Automatic.Tolerance = settings.AutomaticScaleTolerance;
     const double base = TypicalRadius(cloud, processes, boxes, rule.Automatic.BaseCount);
     rule.Automatic.LargestRadius = base * std::pow(2.0, 0.5 * (rule.Automatic.Levels - 1));
+    rule.Automatic.TypicalRadius = base;
     rule.Radius = base; // reported as the used s: the typical first radius
     rule.PlaneDistance = 0.0;
     rule.CellRadius = 2.0 * base;
     rule.Reach = rule.Automatic.LargestRadius;
+    // Sharing pays where neighbourhoods are wide (four times the first
+    // radius: 256 neighbours); smaller ones are cheap to fit.
+    rule.Automatic.Sharing.MinimumRadius = 4.0 * base;
+    const double anchorCell = rule.Automatic.Sharing.CellFactor * base;
+    rule.Automatic.ShareFits = settings.ShareFits && anchorCell > 0.0 && std::isfinite(anchorCell);
+    if (rule.Automatic.ShareFits)
+    {
+      // A point's anchor is at most two cells away on each axis, and needs
+      // the largest radius around it; every point of those cells decides
+      // which one is the anchor (within three cells).
+      rule.Reach += 2.0 * std::sqrt(3.0) * anchorCell;
+    }
     return rule;
   }
   if (rule.Adjusted)
@@ -458,6 +474,68 @@ private:
   int MinimumPointsPerDirection;
 };
 
+/// The automatic scale's estimate at a point: the chosen radius's fit, the
+/// radius (NaN when none was kept) and the reported standard error.
+struct ScaleEstimate
+{
+  OrientedCircleResult Fit;
+  double Radius = NaN;
+  double Error = NaN;
+};
+
+/// The anchors of a run with shared fits (SharedFits.h): which points they
+/// are, in the grid's order, and their estimates once the first pass made
+/// them. Own anchors are output; halo anchors serve own points near them.
+struct AnchorTable
+{
+  AnchorCells Cells;
+  std::vector<std::int64_t> Points;
+  std::vector<ScaleEstimate> Estimates; // by position in Points
+  std::vector<std::int64_t> EstimateOf; // by cloud point: position, or -1
+
+  /// Chooses the anchors (every eligible point of the cloud takes part, so
+  /// each cell's choice is the same on every process) and keeps those an
+  /// own point may ask for: in the cells around an own point's.
+  template<typename Eligible>
+  void Choose(const CloudPoints& cloud,
+    const PointGrid& grid,
+    const GridLattice& lattice,
+    double cellSide,
+    const Eligible& eligible)
+  {
+    const std::int64_t count = cloud.GetNumberOfPoints();
+    this->Cells.Build(cloud.Coordinates.data(),
+      cloud.Normals.data(),
+      count,
+      lattice.Origin.data(),
+      cellSide,
+      eligible);
+    this->EstimateOf.assign(static_cast<std::size_t>(count), -1);
+    std::vector<unsigned char> needed(static_cast<std::size_t>(count), 0);
+    this->Cells.MarkAnchorsAround(cloud.Coordinates.data(), cloud.NumberOfOwnPoints, needed);
+    for (std::int64_t j = 0; j < grid.GetNumberOfPoints(); ++j)
+    {
+      const std::int64_t point = grid.GetSortedId(j);
+      if (needed[point])
+      {
+        this->EstimateOf[point] = static_cast<std::int64_t>(this->Points.size());
+        this->Points.push_back(point);
+      }
+    }
+    this->Estimates.resize(this->Points.size());
+  }
+
+  /// Whether any anchor's fit may be shared (none on a noise-free cloud,
+  /// where every radius is small): else the second pass skips the lookup.
+  bool AnyShareable(const SharingRule& rule) const
+  {
+    return std::any_of(this->Estimates.begin(),
+      this->Estimates.end(),
+      [&](const ScaleEstimate& e)
+      { return e.Fit.Curvature.Valid && e.Radius >= rule.MinimumRadius; });
+  }
+};
+
 /// Estimates the work items; one instance is shared by all threads, each
 /// point written by one thread.
 class ItemEstimator
@@ -478,6 +556,44 @@ public:
     , Out(out)
     , Progress(progress)
   {
+  }
+
+  /// The first pass of shared fits: the anchors [begin, end) of `table`,
+  /// own ones output.
+  void EstimateAnchors(std::int64_t begin,
+    std::int64_t end,
+    AnchorTable& table,
+    EstimationScratch& scratch)
+  {
+    constexpr std::int64_t Batch = 64;
+    std::int64_t pending = 0;
+    for (std::int64_t item = begin; item < end; ++item)
+    {
+      if (this->Progress.Stopped())
+      {
+        return;
+      }
+      const std::int64_t point = table.Points[item];
+      table.Estimates[item] = this->EstimateAutomaticScale(point, scratch);
+      if (this->Cloud.IsOwn(point))
+      {
+        this->StoreScaleEstimate(point, table.Estimates[item]);
+      }
+      if (++pending == Batch)
+      {
+        this->Progress.Advance(pending);
+        pending = 0;
+      }
+    }
+    this->Progress.Advance(pending);
+  }
+
+  /// The second pass of shared fits reads the anchors' estimates here, and
+  /// marks the points that took them in `shared` (one per cloud point).
+  void UseAnchors(const AnchorTable* table, unsigned char* shared)
+  {
+    this->Anchors = table;
+    this->SharedMarks = shared;
   }
 
   void Estimate(std::int64_t begin, std::int64_t end, EstimationScratch& scratch)
@@ -546,7 +662,7 @@ private:
     }
     if (this->Rule.AutomaticScale)
     {
-      this->EstimateAutomaticScale(point, scratch);
+      this->EstimateAutomaticPoint(point, scratch);
       return;
     }
     const double* x = &this->Cloud.Coordinates[3 * point];
@@ -673,7 +789,7 @@ private:
   /// the noise out; once they part, the surface's shape (bias) has begun to
   /// show. A radius at which too many neighbours' normals oppose the point's
   /// stops the growth (the neighbourhood would reach across the surface).
-  void EstimateAutomaticScale(std::int64_t point, EstimationScratch& scratch)
+  ScaleEstimate EstimateAutomaticScale(std::int64_t point, EstimationScratch& scratch)
   {
     const double* x = &this->Cloud.Coordinates[3 * point];
     const double* n = &this->Cloud.Normals[3 * point];
@@ -751,12 +867,57 @@ private:
     // the estimate: the bias it may have added.
     const OrientedCircleResult* previous =
       accepted.size() >= 2 ? &accepted[accepted.size() - 2] : nullptr;
-    this->Out.Store(this->Cloud.InputIds[point],
-      chosen.Curvature,
-      chosenRadius,
-      0.0,
-      0,
-      ReportedStandardError(chosen, previous, rule.Precision));
+    return ScaleEstimate{
+      chosen, chosenRadius, ReportedStandardError(chosen, previous, rule.Precision)
+    };
+  }
+
+  void StoreScaleEstimate(std::int64_t point, const ScaleEstimate& estimate) const
+  {
+    this->Out.Store(
+      this->Cloud.InputIds[point], estimate.Fit.Curvature, estimate.Radius, 0.0, 0, estimate.Error);
+  }
+
+  /// An own point with the automatic scale: an anchor's estimate is stored
+  /// already; a point near an anchor whose radius is wide takes its fit;
+  /// any other gathers its own neighbourhood.
+  void EstimateAutomaticPoint(std::int64_t point, EstimationScratch& scratch)
+  {
+    if (this->Anchors && this->Anchors->EstimateOf[point] >= 0)
+    {
+      return;
+    }
+    if (this->Anchors && this->EstimateFromAnchors(point, scratch))
+    {
+      return;
+    }
+    this->StoreScaleEstimate(point, this->EstimateAutomaticScale(point, scratch));
+  }
+
+  /// The anchors around the point (in the cells' fixed order: the same on
+  /// every process) whose fits the sharing rule lets it blend.
+  bool EstimateFromAnchors(std::int64_t point, EstimationScratch& scratch)
+  {
+    const double* x = &this->Cloud.Coordinates[3 * point];
+    this->Anchors->Cells.AnchorsAround(x, scratch.Anchors);
+    std::vector<AnchorEstimate>& nearby = scratch.NearbyAnchors;
+    nearby.clear();
+    for (const std::int64_t anchor : scratch.Anchors.Anchors)
+    {
+      const ScaleEstimate& estimate = this->Anchors->Estimates[this->Anchors->EstimateOf[anchor]];
+      nearby.push_back(AnchorEstimate{
+        &estimate.Fit, estimate.Radius, estimate.Error, &this->Cloud.Coordinates[3 * anchor] });
+    }
+    const SharedEstimate shared = pcurv::EstimateFromAnchors(
+      nearby, x, &this->Cloud.Normals[3 * point], this->Rule.Automatic.Sharing);
+    if (!shared.Curvature.Valid)
+    {
+      return false;
+    }
+    this->Out.Store(
+      this->Cloud.InputIds[point], shared.Curvature, shared.Radius, 0.0, 0, shared.Error);
+    this->SharedMarks[point] = 1;
+    return true;
   }
 
   /// Lepski's test: the principal curvatures agree with each smaller
@@ -786,6 +947,8 @@ private:
   FitSettings Settings;
   const ResultWriter& Out;
   StageProgress& Progress;
+  const AnchorTable* Anchors = nullptr;
+  unsigned char* SharedMarks = nullptr;
 };
 
 /// CurvatureBuffers::Trusted from the reported standard errors, in the
@@ -1066,18 +1229,52 @@ EstimationSummary EstimateCloud(CloudPoints cloud,
       writer.StoreUnestimated(i, UnestimatedReason::BadCoordinate);
     }
   }
-  StageProgress progress(monitor, normalsShare, 1.0 - normalsShare, order.GetNumberOfItems());
-  ItemEstimator estimator(cloud, grid, order, rule, fit, writer, progress);
-  runner.For(order.GetNumberOfItems(),
-    rule.Adjusted ? 1 : 1024,
+  // With shared fits the anchors come first, and take most of the time.
+  AnchorTable anchors;
+  const bool shared = rule.AutomaticScale && rule.Automatic.ShareFits;
+  if (shared)
+  {
+    anchors.Choose(cloud,
+      grid,
+      lattice,
+      rule.Automatic.Sharing.CellFactor * rule.Automatic.TypicalRadius,
+      [&](std::int64_t point)
+      {
+        const double* n = &cloud.Normals[3 * point];
+        return n[0] != 0.0 || n[1] != 0.0 || n[2] != 0.0;
+      });
+  }
+  const double anchorShare = shared ? 0.7 * (1.0 - normalsShare) : 0.0;
+  StageProgress anchorProgress(
+    monitor, normalsShare, anchorShare, static_cast<std::int64_t>(anchors.Points.size()));
+  ItemEstimator anchorEstimator(cloud, grid, order, rule, fit, writer, anchorProgress);
+  runner.For(static_cast<std::int64_t>(anchors.Points.size()),
+    64,
     [&](std::int64_t begin, std::int64_t end, EstimationScratch& scratch)
-    { estimator.Estimate(begin, end, scratch); });
+    { anchorEstimator.EstimateAnchors(begin, end, anchors, scratch); });
+  StageProgress progress(monitor,
+    normalsShare + anchorShare,
+    1.0 - normalsShare - anchorShare,
+    order.GetNumberOfItems());
+  ItemEstimator estimator(cloud, grid, order, rule, fit, writer, progress);
+  std::vector<unsigned char> sharedMarks(shared ? cloud.GetNumberOfPoints() : 0, 0);
+  const bool shareable = shared && anchors.AnyShareable(rule.Automatic.Sharing);
+  estimator.UseAnchors(shareable ? &anchors : nullptr, sharedMarks.data());
+  if (!anchorProgress.Stopped())
+  {
+    runner.For(order.GetNumberOfItems(),
+      rule.Adjusted ? 1 : 1024,
+      [&](std::int64_t begin, std::int64_t end, EstimationScratch& scratch)
+      { estimator.Estimate(begin, end, scratch); });
+  }
   // Every process stops, or none: the steps after this one are collective.
-  if (!processes.Min(progress.Stopped() ? 0 : 1))
+  if (!processes.Min(progress.Stopped() || anchorProgress.Stopped() ? 0 : 1))
   {
     summary.Aborted = true;
     return summary;
   }
+  summary.NumberOfSharedPoints = processes.Sum(static_cast<std::int64_t>(
+    std::count(sharedMarks.begin(), sharedMarks.end(), static_cast<unsigned char>(1))));
   for (const RepeatedPoint& repeat : repeats)
   {
     writer.Copy(repeat.Original, repeat.Copy);

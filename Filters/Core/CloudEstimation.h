@@ -22,6 +22,7 @@
 #include "OrientedCircleFit.h"
 #include "PointGrid.h"
 #include "PrincipalCurvatureCore.h"
+#include "SharedFits.h"
 
 #include <array>
 #include <atomic>
@@ -66,6 +67,11 @@ struct EstimationSettings
   /// NeighborhoodMode::Automatic: how many standard errors the estimates of
   /// two radii may differ by for the larger to be kept.
   double AutomaticScaleTolerance = 2.0;
+  /// NeighborhoodMode::Automatic: a point near an anchor point whose
+  /// neighbourhood is wide takes the anchor's fitted surface, evaluated at
+  /// its own position, instead of gathering nearly the same neighbours
+  /// again (SharedFits.h). Off: every point fits its own.
+  bool ShareFits = true;
 
   /// The paper's dynamic variable adjustment instead of the above.
   bool DynamicAdjustment = false;
@@ -170,6 +176,9 @@ struct EstimationSummary
   /// With EstimateNormals: connected parts oriented, and points whose
   /// normal could not be determined.
   NormalSummary Normals;
+  /// NeighborhoodMode::Automatic with shared fits: the points estimated
+  /// from anchors' fits rather than their own (EstimationSettings::ShareFits).
+  std::int64_t NumberOfSharedPoints = 0;
   /// The caller asked to stop: the buffers are incomplete.
   bool Aborted = false;
 };
@@ -186,6 +195,8 @@ struct EstimationScratch
   NeighborOffsets Neighbors;
   std::vector<std::pair<double, std::int64_t>> Ranked;
   std::vector<OrientedCircleResult> Scales;
+  AnchorCells::Around Anchors;
+  std::vector<AnchorEstimate> NearbyAnchors;
 };
 
 /// Told how far the work is (0 to 1); returns false to stop. Called from

@@ -23,11 +23,6 @@ using NormalMatrix = Matrix<NormalUnknowns>;
 /// Fewer neighbours than this leave the fit without a residual to weigh it.
 constexpr int MinimumNeighbors = PositionUnknowns + 2;
 
-/// How many times the tilt that the query point's own displacement along
-/// the surface explains the fitted tilt's square must exceed before the
-/// directions are turned by it (FittedFrame).
-constexpr double DisplacementTiltAllowance = 8.0;
-
 /// A variance below this (in units of the scale) is taken as this: exact
 /// data would otherwise get an infinite weight.
 constexpr double VarianceFloor = 1e-24;
@@ -176,12 +171,6 @@ TangentFrame FittedFrame(const TangentFrame& frame,
   }
   return turned;
 }
-
-/// How much the reported standard error exceeds the root sum of squares of
-/// its parts: calibrated on the shared accuracy suite (the parts are
-/// estimates of errors, not their spread, and the positions' residual
-/// variance has few degrees of freedom at small radii).
-constexpr double ReportedErrorFactor = 1.5;
 
 /// The standard error of the principal curvatures C +- hypot(A, B) from
 /// the covariance of the unknowns (C, A, B first), to first order.
@@ -374,6 +363,10 @@ OrientedCircleResult FitOrientedCircles(const OrientedCircleSums& sums,
     combined.X[0] - amplitude,
     positionVariance / 4.0);
   PrincipalCurvaturesFromSine(sine, fitted, out);
+  result.Surface.Frame = frame;
+  std::copy_n(combined.X.data(), PositionUnknowns, result.Surface.Coefficients.begin());
+  result.Surface.InverseScale = inverseScale;
+  result.Surface.NoiseVariance = positionVariance / 4.0;
   out.FittedNormal = out.Valid ? fitted.Normal : Vector3{ { 0.0, 0.0, 0.0 } };
   out.NeighborCount = sums.Neighbors;
   if (!out.Valid)

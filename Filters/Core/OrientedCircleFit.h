@@ -44,6 +44,17 @@
 namespace pcurv
 {
 
+/// How many times the tilt that the query point's own displacement along
+/// the surface explains the fitted tilt's square must exceed before the
+/// directions are turned by it (the fitted frame's share of the tilt).
+constexpr double DisplacementTiltAllowance = 8.0;
+
+/// How much the reported standard error exceeds the root sum of squares of
+/// its parts: calibrated on the shared accuracy suite (the parts are
+/// estimates of errors, not their spread, and the positions' residual
+/// variance has few degrees of freedom at small radii).
+constexpr double ReportedErrorFactor = 1.5;
+
 /// The least-squares sums of the neighbours added so far, in the frame of
 /// the query point and in units of a fixed scale.
 struct OrientedCircleSums
@@ -124,6 +135,21 @@ private:
   OrientedCircleSums Totals;
 };
 
+/// The surface the combined fit describes, a height over the query
+/// normal's tangent frame in units of the scale (u, v along V0, W0):
+/// h = e + tu u + tv v + ((C + A) u^2 + 2 B u v + (C - A) v^2) / 2
+///   + c30 u^3 + c21 u^2 v + c12 u v^2 + c03 v^3,
+/// with Coefficients (C, A, B, tu, tv, c30, c21, c12, c03, 2 e), C, A, B in
+/// the paper's sign.
+struct FittedSurface
+{
+  TangentFrame Frame{};
+  std::array<double, OrientedCircleSums::PositionUnknowns> Coefficients{};
+  double InverseScale = 0.0;
+  /// The positions' noise variance, in units of the scale squared.
+  double NoiseVariance = 0.0;
+};
+
 /// What the fit of some sums gives: the curvatures (output sign, in
 /// 1/length after `inverseScale`), the positions-only fit's standard error
 /// of them (the automatic scale compares radii by it: the positions' rows
@@ -140,6 +166,8 @@ struct OrientedCircleResult
   double StandardError = 0.0;
   double PositionsDiscrepancy = 0.0;
   double TiltBias = 0.0;
+  /// The fitted surface, for evaluating it elsewhere (SharedFits.h).
+  FittedSurface Surface;
 };
 
 /// The standard error reported for `chosen`, 1/length: it covers what the

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <string>
 #include <mutex>
@@ -1070,6 +1071,84 @@ void TestReportedError(Checks& checks)
   }
 }
 
+/// Shared fits (SharedFits.h) on a noisy torus: most points take their
+/// anchors' fits, within 15 % of the accuracy of every point fitting its
+/// own, with the sign, the directions and the reported error still right;
+/// the same results for any thread count and input order; none shared on
+/// a noise-free cloud (small radii), and none when switched off. (The
+/// distributed test checks the split among processes.)
+void TestSharedFits(Checks& checks)
+{
+  auto torus = testing::Sample(testing::Torus(3.0, 1.0), 40000, 91);
+  const double spacing =
+    std::sqrt(4.0 * 3.141592653589793 * 3.141592653589793 * 3.0 / torus.size());
+  const auto clean = torus;
+  testing::AddPositionNoise(torus, 0.3 * spacing, 92);
+  SerialRunner serial;
+  EstimationSettings own;
+  own.ShareFits = false;
+  Results alone(torus.size(), false), shared(torus.size(), false);
+  std::vector<double> standardError(torus.size());
+  CurvatureBuffers buffers = shared.Buffers();
+  buffers.StandardError = standardError.data();
+  const EstimationSummary unshared = Estimate(torus, own, alone, serial);
+  const EstimationSummary summary =
+    EstimateCloud(MakeCloud(torus), EstimationSettings{}, Collectives{}, serial, nullptr, buffers);
+  std::printf("shared fits, noisy torus: %lld of %zu points shared; mean error %.5f (own fits "
+              "%.5f)\n",
+    static_cast<long long>(summary.NumberOfSharedPoints),
+    torus.size(),
+    MeanError(torus, shared),
+    MeanError(torus, alone));
+  checks.True("shared fits: off, no point shared", unshared.NumberOfSharedPoints == 0);
+  checks.True("shared fits: most points of a noisy cloud shared",
+    summary.NumberOfSharedPoints > static_cast<std::int64_t>(torus.size() / 2));
+  checks.True("shared fits: every point estimated", summary.NumberOfUnestimatedPoints == 0);
+  checks.True("shared fits: within 15 % of the own fits' mean error",
+    MeanError(torus, shared) <= 1.15 * MeanError(torus, alone));
+  int aligned = 0, covered = 0;
+  for (std::size_t i = 0; i < torus.size(); ++i)
+  {
+    const double* d = &shared.MaximumDirection[3 * i];
+    aligned += std::fabs(testing::Dot({ { d[0], d[1], d[2] } }, torus[i].MaximumDirection)) >
+      std::cos(10.0 * 3.141592653589793 / 180.0);
+    const double error = std::max(std::fabs(shared.Minimum[i] - torus[i].MinimumCurvature),
+      std::fabs(shared.Maximum[i] - torus[i].MaximumCurvature));
+    covered += error <= 2.0 * standardError[i];
+  }
+  checks.True("shared fits: maximum direction within 10 degrees at 95 % of the points",
+    aligned >= 0.95 * torus.size());
+  checks.True(
+    "shared fits: at least 85 % within 2 reported standard errors", covered >= 0.85 * torus.size());
+
+  ThreadRunner threads(3);
+  Results threaded(torus.size(), false);
+  Estimate(torus, EstimationSettings{}, threaded, threads);
+  checks.True("shared fits: 3 threads bit-identical to 1", shared.BitIdentical(threaded));
+
+  // The input reversed: every point's results the same, bit for bit.
+  const std::vector<testing::SurfaceSample> reversed(torus.rbegin(), torus.rend());
+  Results backwards(torus.size(), false);
+  Estimate(reversed, EstimationSettings{}, backwards, serial);
+  bool sameOrder = true;
+  for (std::size_t i = 0, j = torus.size() - 1; i < torus.size(); ++i, --j)
+  {
+    sameOrder = sameOrder && std::memcmp(&shared.Minimum[i], &backwards.Minimum[j], 8) == 0 &&
+      std::memcmp(&shared.Maximum[i], &backwards.Maximum[j], 8) == 0 &&
+      std::memcmp(&shared.MaximumDirection[3 * i], &backwards.MaximumDirection[3 * j], 24) == 0;
+  }
+  checks.True("shared fits: the input reversed, the same results per point", sameOrder);
+
+  Results noiseFree(clean.size(), false);
+  const EstimationSummary cleanSummary = Estimate(clean, EstimationSettings{}, noiseFree, serial);
+  std::printf("shared fits, noise-free torus: %lld points shared\n",
+    static_cast<long long>(cleanSummary.NumberOfSharedPoints));
+  checks.True("shared fits: noise-free, no point shared (small radii, where the circles are exact)",
+    cleanSummary.NumberOfSharedPoints == 0);
+  checks.Near(
+    "shared fits: noise-free torus, mean |k - exact|", MeanError(clean, noiseFree), 0.0, 0.004);
+}
+
 /// With an argument, only the tests whose name contains it (for
 /// development: `TestCloudEstimation ReportedError`).
 int main(int argc, char* argv[])
@@ -1092,6 +1171,7 @@ int main(int argc, char* argv[])
     { "TestFlatWithGivenNormals", TestFlatWithGivenNormals },
     { "TestReportedError", TestReportedError },
     { "TestShapeIndex", TestShapeIndex },
+    { "TestSharedFits", TestSharedFits },
   };
   Checks checks;
   for (const auto& [name, test] : tests)

@@ -1,0 +1,362 @@
+#include "SharedFits.h"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace pcurv
+{
+namespace
+{
+using Vector3d = Eigen::Vector3d;
+
+Vector3d ToEigen(const Vector3& v)
+{
+  return Vector3d(v[0], v[1], v[2]);
+}
+
+Vector3 FromEigen(const Vector3d& v)
+{
+  return Vector3{ { v[0], v[1], v[2] } };
+}
+
+/// The fitted surface's height, slope and second derivatives at (u, v).
+struct SurfaceJet
+{
+  double Height, Fu, Fv, Fuu, Fuv, Fvv;
+};
+
+SurfaceJet JetAt(const FittedSurface& surface, double u, double v)
+{
+  const auto& x = surface.Coefficients;
+  const double c = x[0], a = x[1], b = x[2];
+  SurfaceJet jet;
+  jet.Height = 0.5 * x[9] + x[3] * u + x[4] * v +
+    0.5 * ((c + a) * u * u + 2.0 * b * u * v + (c - a) * v * v) + x[5] * u * u * u +
+    x[6] * u * u * v + x[7] * u * v * v + x[8] * v * v * v;
+  jet.Fu = x[3] + (c + a) * u + b * v + 3.0 * x[5] * u * u + 2.0 * x[6] * u * v + x[7] * v * v;
+  jet.Fv = x[4] + b * u + (c - a) * v + x[6] * u * u + 2.0 * x[7] * u * v + 3.0 * x[8] * v * v;
+  jet.Fuu = c + a + 6.0 * x[5] * u + 2.0 * x[6] * v;
+  jet.Fuv = b + 2.0 * x[6] * u + 2.0 * x[7] * v;
+  jet.Fvv = c - a + 2.0 * x[7] * u + 6.0 * x[8] * v;
+  return jet;
+}
+
+/// The second fundamental form of the graph h(u, v) (paper sign: positive
+/// where the surface bends towards the frame's normal) in the orthonormal
+/// tangent basis e1 = X_u / |X_u|, e2 = N x e1, as the sine's offset and
+/// amplitudes; `unitNormal` and `e1` receive N and e1.
+SineFit SineOfJet(const SurfaceJet& jet,
+  const TangentFrame& frame,
+  Vector3d& unitNormal,
+  Vector3d& e1)
+{
+  const Vector3d n = ToEigen(frame.Normal), v0 = ToEigen(frame.V0), w0 = ToEigen(frame.W0);
+  const Vector3d xu = v0 + jet.Fu * n, xv = w0 + jet.Fv * n;
+  const double metric = std::sqrt(1.0 + jet.Fu * jet.Fu + jet.Fv * jet.Fv);
+  unitNormal = (n - jet.Fu * v0 - jet.Fv * w0) / metric;
+  e1 = xu.normalized();
+  const Vector3d e2 = unitNormal.cross(e1);
+  // e1, e2 in the parameters' basis: the first fundamental form solves it.
+  Eigen::Matrix2d first;
+  first << xu.dot(xu), xu.dot(xv), xv.dot(xu), xv.dot(xv);
+  Eigen::Matrix2d tangents; // columns: e1, e2 as (du, dv)
+  tangents.col(0) = first.ldlt().solve(Eigen::Vector2d(e1.dot(xu), e1.dot(xv)));
+  tangents.col(1) = first.ldlt().solve(Eigen::Vector2d(e2.dot(xu), e2.dot(xv)));
+  Eigen::Matrix2d second;
+  second << jet.Fuu, jet.Fuv, jet.Fuv, jet.Fvv;
+  const Eigen::Matrix2d form = tangents.transpose() * (second / metric) * tangents;
+  SineFit sine;
+  sine.Valid = form.allFinite();
+  sine.Offset = 0.5 * (form(0, 0) + form(1, 1));
+  sine.CosineAmplitude = 0.5 * (form(0, 0) - form(1, 1));
+  sine.SineAmplitude = form(0, 1);
+  return sine;
+}
+
+/// The normal the directions are tangent to: the point's own, turned
+/// towards the fitted surface's by the share of their difference that the
+/// point's displacement along the surface does not explain (as at the
+/// anchor itself: OrientedCircleFit's fitted frame). In units of the scale.
+Vector3d DirectionsNormal(const Vector3d& own,
+  const Vector3d& fitted,
+  const SineFit& sine,
+  double noiseVariance)
+{
+  const double cosine = own.dot(fitted);
+  const Vector3d tangential = own - cosine * fitted;
+  const double tilt = tangential.squaredNorm() / (cosine * cosine);
+  const double amplitude = std::hypot(sine.CosineAmplitude, sine.SineAmplitude);
+  const double k1 = sine.Offset + amplitude, k2 = sine.Offset - amplitude;
+  const double displacement = noiseVariance * (k1 * k1 + k2 * k2);
+  const double share =
+    tilt > 0.0 ? std::max(0.0, 1.0 - DisplacementTiltAllowance * displacement / tilt) : 0.0;
+  const Vector3d turned = ((1.0 - share) * own + share * fitted).normalized();
+  return turned.allFinite() ? turned : own;
+}
+
+/// One anchor's fitted surface at the point: its shape tensor (output
+/// sign, 1/length, in the fitted tangent plane), the fitted normal and the
+/// normal the directions are tangent to.
+struct SurfaceAtPoint
+{
+  bool Valid = false;
+  Eigen::Matrix3d Shape = Eigen::Matrix3d::Zero();
+  Vector3d Normal = Vector3d::Zero();
+  Vector3d DirectionsNormal = Vector3d::Zero();
+};
+
+SurfaceAtPoint EvaluateAt(const AnchorEstimate& anchor,
+  const Vector3d& x,
+  const Vector3d& own,
+  const SharingRule& rule)
+{
+  SurfaceAtPoint at;
+  const FittedSurface& surface = anchor.Fit->Surface;
+  const Vector3d d = (x - Vector3d(anchor.Position[0], anchor.Position[1], anchor.Position[2])) *
+    surface.InverseScale;
+  const double u = d.dot(ToEigen(surface.Frame.V0));
+  const double v = d.dot(ToEigen(surface.Frame.W0));
+  const double h = d.dot(ToEigen(surface.Frame.Normal));
+  const SurfaceJet jet = JetAt(surface, u, v);
+  const double allowedHeight = std::max(rule.HeightDeviations * std::sqrt(surface.NoiseVariance),
+    0.01 * anchor.Radius * surface.InverseScale);
+  if (!(std::fabs(h - jet.Height) <= allowedHeight))
+  {
+    return at;
+  }
+  Vector3d e1;
+  const SineFit sine = SineOfJet(jet, surface.Frame, at.Normal, e1);
+  if (!sine.Valid || !(own.dot(at.Normal) >= rule.MinimumNormalCosine))
+  {
+    return at;
+  }
+  at.DirectionsNormal = DirectionsNormal(own, at.Normal, sine, surface.NoiseVariance);
+  // Paper sign in the basis e1, e2: the output's is the opposite.
+  const Vector3d e2 = at.Normal.cross(e1);
+  const double l11 = sine.Offset + sine.CosineAmplitude, l22 = sine.Offset - sine.CosineAmplitude;
+  const double l12 = sine.SineAmplitude;
+  at.Shape = -surface.InverseScale *
+    (l11 * e1 * e1.transpose() + l12 * (e1 * e2.transpose() + e2 * e1.transpose()) +
+      l22 * e2 * e2.transpose());
+  at.Valid = at.Shape.allFinite() && at.DirectionsNormal.allFinite();
+  return at;
+}
+
+/// The principal curvatures and directions of a shape tensor in the plane
+/// of `normal`, the directions given in the plane of `directionsNormal`.
+PointCurvature CurvaturesOfShape(const Eigen::Matrix3d& shape,
+  const Vector3d& normal,
+  const Vector3d& directionsNormal)
+{
+  const TangentFrame plane = MakeTangentFrame(FromEigen(normal));
+  const Vector3d e1 = ToEigen(plane.V0), e2 = ToEigen(plane.W0);
+  const double l11 = e1.dot(shape * e1), l22 = e2.dot(shape * e2), l12 = e1.dot(shape * e2);
+  SineFit sine; // paper sign
+  sine.Valid = true;
+  sine.Offset = -0.5 * (l11 + l22);
+  sine.CosineAmplitude = -0.5 * (l11 - l22);
+  sine.SineAmplitude = -l12;
+  const Vector3d v0 = (e1 - e1.dot(directionsNormal) * directionsNormal).normalized();
+  TangentFrame frame;
+  frame.Normal = FromEigen(directionsNormal);
+  frame.V0 = FromEigen(v0);
+  frame.W0 = FromEigen(directionsNormal.cross(v0));
+  PointCurvature out;
+  PrincipalCurvaturesFromSine(sine, frame, out);
+  out.FittedNormal = frame.Normal;
+  return out;
+}
+} // namespace
+
+SharedEstimate EstimateFromAnchors(const std::vector<AnchorEstimate>& anchors,
+  const double x[3],
+  const double normal[3],
+  const SharingRule& rule)
+{
+  SharedEstimate estimate;
+  const Vector3d point(x[0], x[1], x[2]), own(normal[0], normal[1], normal[2]);
+  double weights = 0.0, heaviest = 0.0, errors = 0.0, radius = 0.0, neighbors = 0.0, rms = 0.0;
+  Eigen::Matrix3d shape = Eigen::Matrix3d::Zero();
+  Vector3d fitted = Vector3d::Zero(), directionsNormal = Vector3d::Zero();
+  int validDirections = 0;
+  std::vector<std::pair<double, Eigen::Matrix3d>> shapes;
+  for (const AnchorEstimate& anchor : anchors)
+  {
+    const PointCurvature& k = anchor.Fit->Curvature;
+    const double reach = rule.OffsetFraction * anchor.Radius;
+    const Vector3d offset =
+      point - Vector3d(anchor.Position[0], anchor.Position[1], anchor.Position[2]);
+    const double closeness = 1.0 - offset.squaredNorm() / (reach * reach);
+    if (!k.Valid || !(closeness > 0.0) || !(anchor.Radius >= rule.MinimumRadius) ||
+      !(anchor.Fit->Surface.InverseScale > 0.0))
+    {
+      continue;
+    }
+    const SurfaceAtPoint at = EvaluateAt(anchor, point, own, rule);
+    if (!at.Valid)
+    {
+      continue;
+    }
+    const double w = closeness * closeness;
+    weights += w;
+    shape += w * at.Shape;
+    shapes.emplace_back(w, at.Shape);
+    fitted += w * at.Normal;
+    directionsNormal += w * at.DirectionsNormal;
+    errors += w * anchor.Error * anchor.Error;
+    radius += w * anchor.Radius;
+    neighbors += w * k.NeighborCount;
+    rms += w * k.SineFitRms;
+    if (w > heaviest)
+    {
+      heaviest = w;
+      validDirections = k.ValidDirections;
+    }
+  }
+  if (!(weights > 0.0))
+  {
+    return estimate;
+  }
+  PointCurvature& out = estimate.Curvature;
+  out = CurvaturesOfShape(shape / weights, fitted.normalized(), directionsNormal.normalized());
+  if (!out.Valid)
+  {
+    return estimate;
+  }
+  // How far the anchors' surfaces disagree at the point (the weighted RMS
+  // of their shape tensors about the blend, which bounds the principal
+  // curvatures' differences): the extrapolations' error, which no anchor's
+  // own error covers.
+  double spread = 0.0;
+  for (std::size_t i = 0; i < shapes.size(); ++i)
+  {
+    spread += shapes[i].first * (shapes[i].second - shape / weights).squaredNorm();
+  }
+  const double shift = std::sqrt(spread / weights);
+  out.NeighborCount = static_cast<int>(std::lround(neighbors / weights));
+  out.ValidDirections = validDirections;
+  out.SineFitRms = rms / weights;
+  estimate.Radius = radius / weights;
+  estimate.Error = std::hypot(std::sqrt(errors / weights), ReportedErrorFactor * shift);
+  return estimate;
+}
+
+std::size_t AnchorCells::CellHash::operator()(const CellKey& key) const
+{
+  std::uint64_t h = static_cast<std::uint64_t>(key.I) * 0x9E3779B97F4A7C15ull;
+  h ^= static_cast<std::uint64_t>(key.J) * 0xC2B2AE3D27D4EB4Full + (h << 6) + (h >> 2);
+  h ^= static_cast<std::uint64_t>(key.K) * 0x165667B19E3779F9ull + (h << 6) + (h >> 2);
+  return static_cast<std::size_t>(h);
+}
+
+void AnchorCells::Begin(const double origin[3], double cellSide)
+{
+  std::copy_n(origin, 3, this->Origin);
+  this->CellSide = cellSide;
+  this->Anchors.clear();
+}
+
+AnchorCells::CellKey AnchorCells::KeyOf(const double x[3]) const
+{
+  constexpr double Limit = 9.0e18; // below 2^63
+  std::int64_t index[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    const double cells = std::floor((x[k] - this->Origin[k]) / this->CellSide);
+    index[k] =
+      cells == cells ? static_cast<std::int64_t>(std::min(std::max(cells, -Limit), Limit)) : 0;
+  }
+  return CellKey{ index[0], index[1], index[2] };
+}
+
+bool AnchorCells::Precedes(std::int64_t a, std::int64_t b, const CellKey& cell) const
+{
+  const double* xa = this->Coordinates + 3 * a;
+  const double* xb = this->Coordinates + 3 * b;
+  const std::int64_t index[3] = { cell.I, cell.J, cell.K };
+  double da = 0.0, db = 0.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    const double centre = this->Origin[k] + (static_cast<double>(index[k]) + 0.5) * this->CellSide;
+    da += (xa[k] - centre) * (xa[k] - centre);
+    db += (xb[k] - centre) * (xb[k] - centre);
+  }
+  if (da != db)
+  {
+    return da < db;
+  }
+  const double* na = this->Normals + 3 * a;
+  const double* nb = this->Normals + 3 * b;
+  return std::lexicographical_compare(xa, xa + 3, xb, xb + 3) ||
+    (std::equal(xa, xa + 3, xb) && std::lexicographical_compare(na, na + 3, nb, nb + 3));
+}
+
+void AnchorCells::Offer(std::int64_t point, const double* coordinates, const double* normals)
+{
+  this->Coordinates = coordinates;
+  this->Normals = normals;
+  const CellKey key = this->KeyOf(coordinates + 3 * point);
+  const auto [slot, added] = this->Anchors.try_emplace(key, point);
+  if (!added && this->Precedes(point, slot->second, key))
+  {
+    slot->second = point;
+  }
+}
+
+void AnchorCells::AnchorsAround(const double x[3], Around& around) const
+{
+  const CellKey centre = this->KeyOf(x);
+  if (around.Known && around.Cell == centre)
+  {
+    return;
+  }
+  around.Known = true;
+  around.Cell = centre;
+  around.Anchors.clear();
+  for (std::int64_t dk = -1; dk <= 1; ++dk)
+  {
+    for (std::int64_t dj = -1; dj <= 1; ++dj)
+    {
+      for (std::int64_t di = -1; di <= 1; ++di)
+      {
+        const auto found =
+          this->Anchors.find(CellKey{ centre.I + di, centre.J + dj, centre.K + dk });
+        if (found != this->Anchors.end())
+        {
+          around.Anchors.push_back(found->second);
+        }
+      }
+    }
+  }
+}
+
+void AnchorCells::MarkAnchorsAround(const double* coordinates,
+  std::int64_t count,
+  std::vector<unsigned char>& marks) const
+{
+  std::unordered_set<CellKey, CellHash> visited;
+  Around around;
+  for (std::int64_t point = 0; point < count; ++point)
+  {
+    const double* x = coordinates + 3 * point;
+    if (visited.insert(this->KeyOf(x)).second)
+    {
+      this->AnchorsAround(x, around);
+      for (const std::int64_t anchor : around.Anchors)
+      {
+        marks[static_cast<std::size_t>(anchor)] = 1;
+      }
+    }
+  }
+}
+
+bool AnchorCells::IsAnchor(std::int64_t point, const double* coordinates) const
+{
+  const auto found = this->Anchors.find(this->KeyOf(coordinates + 3 * point));
+  return found != this->Anchors.end() && found->second == point;
+}
+
+} // namespace pcurv

@@ -1,0 +1,171 @@
+/**
+ * @file SharedFits.h
+ * @brief One neighbourhood fit serving the points near its centre. No VTK.
+ *
+ * Where the automatic scale grows a neighbourhood many spacings wide (every
+ * noisy scan), the neighbourhoods of nearby points are nearly the same set,
+ * and so are their fits. OrientedCircles fits a surface over the query's
+ * tangent plane: the sine's C, A, B are its second derivatives, the tilt
+ * its slope, the cubic coefficients its third order, the height its level.
+ * That surface can be evaluated at a nearby point's own position (its
+ * slope, its shape operator there), and the cubic terms carry the change of
+ * curvature over the offset. So only some points, the anchors, gather their
+ * neighbourhoods; the others take the fit of the nearest anchor when it is
+ * close against the anchor's radius, and gather their own otherwise (small
+ * radii: noise-free clouds, fine features).
+ *
+ * Anchors are chosen in space, not by counting points: one per cell of a
+ * global lattice, the point nearest the cell's centre. So the choice, and
+ * every result, is the same for any thread count, split among processes
+ * or input order.
+ */
+#ifndef SharedFits_h
+#define SharedFits_h
+
+#include "OrientedCircleFit.h"
+#include "PointGrid.h"
+
+#include <cstdint>
+#include <unordered_map>
+#include <unordered_set>
+#include <vector>
+
+namespace pcurv
+{
+
+/// When a point may take an anchor's fit instead of its own.
+struct SharingRule
+{
+  /// The lattice's cell side, in units of the cloud's typical radius of
+  /// the automatic scale's first level.
+  double CellFactor = 1.5;
+  /// The point's distance from the anchor at most this fraction of the
+  /// anchor's radius.
+  double OffsetFraction = 0.15;
+  /// Only anchors whose radius is at least this (a length) are shared:
+  /// small radii cost little, and there the circles' exactness on a sphere
+  /// or a cylinder beats any polynomial surface evaluated off its centre.
+  double MinimumRadius = 0.0;
+  /// The point's normal within this cosine of the fitted surface's there.
+  double MinimumNormalCosine = 0.866;
+  /// The point's height off the fitted surface within this many noise
+  /// standard deviations (and a hundredth of the anchor's radius): a point
+  /// on another sheet does not share.
+  double HeightDeviations = 4.0;
+};
+
+/// An anchor's estimate, as a point near it may use it.
+struct AnchorEstimate
+{
+  const OrientedCircleResult* Fit = nullptr;
+  double Radius = 0.0; ///< the neighbourhood's radius it was fitted over
+  double Error = 0.0;  ///< its reported standard error
+  const double* Position = nullptr;
+};
+
+/// A point's estimate from the anchors near it: the curvatures (output
+/// sign, in 1/length), directions and fitted normal, the radius and the
+/// reported standard error. Not valid where no anchor is near enough.
+struct SharedEstimate
+{
+  PointCurvature Curvature;
+  double Radius = 0.0;
+  double Error = 0.0;
+};
+
+/// The fitted surfaces of the anchors near a point (at `x`, unit normal
+/// `normal`), each evaluated at the point, blended with weights that fall
+/// smoothly to zero at the rule's reach of each anchor: a partition of
+/// unity, so the estimates vary continuously from point to point, and the
+/// extrapolations of anchors on either side of the point partly cancel.
+/// The anchors are used in the order given, which must not depend on the
+/// thread or process (the sums are rounded in that order).
+SharedEstimate EstimateFromAnchors(const std::vector<AnchorEstimate>& anchors,
+  const double x[3],
+  const double normal[3],
+  const SharingRule& rule);
+
+/// The anchors of a cloud, one per occupied cell of a global lattice: the
+/// eligible point nearest the cell's centre (ties by coordinates, then by
+/// normal), a strict order on distinct points, so no visiting order
+/// changes the choice.
+class AnchorCells
+{
+public:
+  /// A cell of the lattice, by its indices.
+  struct CellKey
+  {
+    std::int64_t I, J, K;
+    bool operator==(const CellKey& other) const
+    {
+      return this->I == other.I && this->J == other.J && this->K == other.K;
+    }
+  };
+
+  /// The anchors around the last cell asked for (AnchorsAround): points in
+  /// the grid's order mostly share their cell with the one before.
+  struct Around
+  {
+    bool Known = false;
+    CellKey Cell{ 0, 0, 0 };
+    std::vector<std::int64_t> Anchors;
+  };
+
+  /// `eligible(point)` tells which points may be anchors (those with a
+  /// normal); lattice origin and cell side are global.
+  template<typename Eligible>
+  void Build(const double* coordinates,
+    const double* normals,
+    std::int64_t count,
+    const double origin[3],
+    double cellSide,
+    const Eligible& eligible)
+  {
+    this->Begin(origin, cellSide);
+    for (std::int64_t point = 0; point < count; ++point)
+    {
+      if (eligible(point))
+      {
+        this->Offer(point, coordinates, normals);
+      }
+    }
+  }
+
+  /// The anchor of the cell holding x, and of the 26 cells around it, in a
+  /// fixed order (cells without anchors skipped), into `around` (which
+  /// keeps them for the next point in the same cell).
+  void AnchorsAround(const double x[3], Around& around) const;
+
+  /// Sets marks[anchor] to 1 for the anchors around (AnchorsAround) any of
+  /// the first `count` points.
+  void MarkAnchorsAround(const double* coordinates,
+    std::int64_t count,
+    std::vector<unsigned char>& marks) const;
+
+  /// Whether `point` is the anchor of its cell.
+  bool IsAnchor(std::int64_t point, const double* coordinates) const;
+
+  double GetCellSide() const { return this->CellSide; }
+
+private:
+  struct CellHash
+  {
+    std::size_t operator()(const CellKey& key) const;
+  };
+
+  void Begin(const double origin[3], double cellSide);
+  void Offer(std::int64_t point, const double* coordinates, const double* normals);
+  CellKey KeyOf(const double x[3]) const;
+  /// Whether point a comes before point b as the anchor of their cell.
+  bool Precedes(std::int64_t a, std::int64_t b, const CellKey& cell) const;
+
+  double Origin[3] = { 0.0, 0.0, 0.0 };
+  double CellSide = 1.0;
+  const double* Coordinates = nullptr;
+  const double* Normals = nullptr;
+  std::unordered_map<CellKey, std::int64_t, CellHash> Anchors;
+};
+
+} // namespace pcurv
+
+#endif
