@@ -33,21 +33,6 @@ struct WorkingUnit
   double ToInputLength(double length) const { return length / this->Scale; }
 };
 
-/// NeighborhoodMode::Automatic: the radii tried at each point and the rule
-/// that picks one (ItemEstimator::EstimateAutomaticScale).
-struct AutomaticScaleRule
-{
-  int BaseCount = 16;       // the first radius holds this many neighbours
-  int Levels = 8;           // radii base 2^(i/2), i < Levels: about 2000 neighbours at most
-  double Precision = 1e-3;  // a standard error this small (times the curvature) ends the growth
-  int MinimumCount = 12;    // fewer neighbours give no estimate to compare
-  double Tolerance = 2.0;   // standard errors two estimates may differ by
-  double LargestRadius = 0; // no radius beyond this (a length)
-  double TypicalRadius = 0; // the cloud's typical first radius (a length)
-  bool ShareFits = false;   // points near an anchor take its fit (SharedFits.h)
-  SharingRule Sharing;
-};
-
 /// How neighbourhoods and thresholds are chosen for every point.
 struct NeighborhoodRule
 {
@@ -474,68 +459,6 @@ private:
   int MinimumPointsPerDirection;
 };
 
-/// The automatic scale's estimate at a point: the chosen radius's fit, the
-/// radius (NaN when none was kept) and the reported standard error.
-struct ScaleEstimate
-{
-  OrientedCircleResult Fit;
-  double Radius = NaN;
-  double Error = NaN;
-};
-
-/// The anchors of a run with shared fits (SharedFits.h): which points they
-/// are, in the grid's order, and their estimates once the first pass made
-/// them. Own anchors are output; halo anchors serve own points near them.
-struct AnchorTable
-{
-  AnchorCells Cells;
-  std::vector<std::int64_t> Points;
-  std::vector<ScaleEstimate> Estimates; // by position in Points
-  std::vector<std::int64_t> EstimateOf; // by cloud point: position, or -1
-
-  /// Chooses the anchors (every eligible point of the cloud takes part, so
-  /// each cell's choice is the same on every process) and keeps those an
-  /// own point may ask for: in the cells around an own point's.
-  template<typename Eligible>
-  void Choose(const CloudPoints& cloud,
-    const PointGrid& grid,
-    const GridLattice& lattice,
-    double cellSide,
-    const Eligible& eligible)
-  {
-    const std::int64_t count = cloud.GetNumberOfPoints();
-    this->Cells.Build(cloud.Coordinates.data(),
-      cloud.Normals.data(),
-      count,
-      lattice.Origin.data(),
-      cellSide,
-      eligible);
-    this->EstimateOf.assign(static_cast<std::size_t>(count), -1);
-    std::vector<unsigned char> needed(static_cast<std::size_t>(count), 0);
-    this->Cells.MarkAnchorsAround(cloud.Coordinates.data(), cloud.NumberOfOwnPoints, needed);
-    for (std::int64_t j = 0; j < grid.GetNumberOfPoints(); ++j)
-    {
-      const std::int64_t point = grid.GetSortedId(j);
-      if (needed[point])
-      {
-        this->EstimateOf[point] = static_cast<std::int64_t>(this->Points.size());
-        this->Points.push_back(point);
-      }
-    }
-    this->Estimates.resize(this->Points.size());
-  }
-
-  /// Whether any anchor's fit may be shared (none on a noise-free cloud,
-  /// where every radius is small): else the second pass skips the lookup.
-  bool AnyShareable(const SharingRule& rule) const
-  {
-    return std::any_of(this->Estimates.begin(),
-      this->Estimates.end(),
-      [&](const ScaleEstimate& e)
-      { return e.Fit.Curvature.Valid && e.Radius >= rule.MinimumRadius; });
-  }
-};
-
 /// Estimates the work items; one instance is shared by all threads, each
 /// point written by one thread.
 class ItemEstimator
@@ -555,6 +478,7 @@ public:
     , Settings(settings)
     , Out(out)
     , Progress(progress)
+    , Automatic(cloud, grid, rule.Automatic, settings)
   {
   }
 
@@ -574,7 +498,7 @@ public:
         return;
       }
       const std::int64_t point = table.Points[item];
-      table.Estimates[item] = this->EstimateAutomaticScale(point, scratch);
+      table.Estimates[item] = this->Automatic.Estimate(point, scratch.Automatic);
       if (this->Cloud.IsOwn(point))
       {
         this->StoreScaleEstimate(point, table.Estimates[item]);
@@ -780,98 +704,6 @@ private:
       ReportedStandardError(result, nullptr, this->Rule.Automatic.Precision));
   }
 
-  /// NeighborhoodMode::Automatic (OrientedCircles): the neighbourhood grows
-  /// from the AutomaticScaleBase nearest by a factor of 2 in count (sqrt 2 in
-  /// radius), shell by shell into the same sums, and the largest radius is
-  /// kept whose curvatures agree with those of every smaller radius within
-  /// AutomaticScaleTolerance times their standard errors (Lepski's rule):
-  /// as long as the estimates agree, a larger neighbourhood only averages
-  /// the noise out; once they part, the surface's shape (bias) has begun to
-  /// show. A radius at which too many neighbours' normals oppose the point's
-  /// stops the growth (the neighbourhood would reach across the surface).
-  ScaleEstimate EstimateAutomaticScale(std::int64_t point, EstimationScratch& scratch)
-  {
-    const double* x = &this->Cloud.Coordinates[3 * point];
-    const double* n = &this->Cloud.Normals[3 * point];
-    const AutomaticScaleRule& rule = this->Rule.Automatic;
-    // k + 1: the point itself is found too.
-    const double base =
-      std::sqrt(this->Grid.SquaredDistanceToKth(x, rule.BaseCount + 1, scratch.Distances));
-    const double unit = std::nextafter(std::min(base, rule.LargestRadius), HUGE_VAL);
-    const double inverseUnit = 1.0 / unit;
-    const TangentFrame frame = MakeTangentFrame({ { n[0], n[1], n[2] } });
-    OrientedCircleAccumulator& accumulator = scratch.OrientedSums;
-    accumulator.Begin(frame);
-    OrientedCircleResult chosen;
-    double chosenRadius = NaN;
-    std::vector<OrientedCircleResult>& accepted = scratch.Scales;
-    accepted.clear();
-    UnestimatedReason reason = UnestimatedReason::TooFewNeighbors;
-    double inner = 0.0;
-    for (int level = 0; level < rule.Levels; ++level)
-    {
-      const double r = std::min(unit * std::pow(2.0, 0.5 * level), rule.LargestRadius);
-      // The inner radii's neighbours are in the sums already.
-      const ShellPoints& shell = scratch.Shell;
-      this->Grid.GatherShell(x, inner, r, scratch.Shell);
-      for (std::size_t i = 0; i < shell.Count; ++i)
-      {
-        const double d[3] = {
-          shell.Dx[i] * inverseUnit, shell.Dy[i] * inverseUnit, shell.Dz[i] * inverseUnit
-        };
-        accumulator.Add(d, &this->Cloud.Normals[3 * shell.Ids[i]]);
-      }
-      inner = r;
-      const OrientedCircleSums& sums = accumulator.Sums();
-      if (sums.ReachesAcross(this->Settings.MaximumOpposingFraction))
-      {
-        reason = UnestimatedReason::ReachesAcross;
-        break;
-      }
-      const OrientedCircleResult result = FitOrientedCircles(sums,
-        frame,
-        1.0 / unit,
-        this->Settings.MinimumPointsPerDirection,
-        this->Settings.MaximumOpposingFraction);
-      reason = result.Curvature.Valid
-        ? UnestimatedReason::TooFewNeighbors
-        : UnestimatedReasonOf(result.Curvature, this->Settings.MinimumPointsPerDirection);
-      if (result.Curvature.Valid && sums.Neighbors >= rule.MinimumCount)
-      {
-        if (!AgreesWithSmaller(result, accepted, rule.Tolerance))
-        {
-          break;
-        }
-        accepted.push_back(result);
-        chosen = result;
-        chosenRadius = r;
-        // More neighbours would not change the estimate measurably: done.
-        const double magnitude = std::max({ std::fabs(result.Curvature.MinimumCurvature),
-          std::fabs(result.Curvature.MaximumCurvature),
-          1.0 / r });
-        if (result.StandardError < rule.Precision * magnitude)
-        {
-          break;
-        }
-      }
-      if (r >= rule.LargestRadius)
-      {
-        break;
-      }
-    }
-    if (!chosen.Curvature.Valid)
-    {
-      chosen.Curvature.Reason = reason;
-    }
-    // The radius before the chosen one tells how much the growth moved
-    // the estimate: the bias it may have added.
-    const OrientedCircleResult* previous =
-      accepted.size() >= 2 ? &accepted[accepted.size() - 2] : nullptr;
-    return ScaleEstimate{
-      chosen, chosenRadius, ReportedStandardError(chosen, previous, rule.Precision)
-    };
-  }
-
   void StoreScaleEstimate(std::int64_t point, const ScaleEstimate& estimate) const
   {
     this->Out.Store(
@@ -891,25 +723,15 @@ private:
     {
       return;
     }
-    this->StoreScaleEstimate(point, this->EstimateAutomaticScale(point, scratch));
+    this->StoreScaleEstimate(point, this->Automatic.Estimate(point, scratch.Automatic));
   }
 
-  /// The anchors around the point (in the cells' fixed order: the same on
-  /// every process) whose fits the sharing rule lets it blend.
+  /// The anchors around the point whose fits the sharing rule lets it
+  /// blend (AutomaticScaleEstimator::FromAnchors).
   bool EstimateFromAnchors(std::int64_t point, EstimationScratch& scratch)
   {
-    const double* x = &this->Cloud.Coordinates[3 * point];
-    this->Anchors->Cells.AnchorsAround(x, scratch.Anchors);
-    std::vector<AnchorEstimate>& nearby = scratch.NearbyAnchors;
-    nearby.clear();
-    for (const std::int64_t anchor : scratch.Anchors.Anchors)
-    {
-      const ScaleEstimate& estimate = this->Anchors->Estimates[this->Anchors->EstimateOf[anchor]];
-      nearby.push_back(AnchorEstimate{
-        &estimate.Fit, estimate.Radius, estimate.Error, &this->Cloud.Coordinates[3 * anchor] });
-    }
-    const SharedEstimate shared = pcurv::EstimateFromAnchors(
-      nearby, x, &this->Cloud.Normals[3 * point], this->Rule.Automatic.Sharing);
+    const SharedEstimate shared =
+      this->Automatic.FromAnchors(point, *this->Anchors, scratch.Automatic);
     if (!shared.Curvature.Valid)
     {
       return false;
@@ -920,26 +742,6 @@ private:
     return true;
   }
 
-  /// Lepski's test: the principal curvatures agree with each smaller
-  /// radius's within `tolerance` times the sum of their standard errors.
-  static bool AgreesWithSmaller(const OrientedCircleResult& candidate,
-    const std::vector<OrientedCircleResult>& smaller,
-    double tolerance)
-  {
-    for (const OrientedCircleResult& other : smaller)
-    {
-      const double allowed = tolerance * (candidate.StandardError + other.StandardError);
-      if (std::fabs(candidate.Curvature.MinimumCurvature - other.Curvature.MinimumCurvature) >
-          allowed ||
-        std::fabs(candidate.Curvature.MaximumCurvature - other.Curvature.MaximumCurvature) >
-          allowed)
-      {
-        return false;
-      }
-    }
-    return true;
-  }
-
   const CloudPoints& Cloud;
   const PointGrid& Grid;
   const ProcessingOrder& Order;
@@ -947,6 +749,7 @@ private:
   FitSettings Settings;
   const ResultWriter& Out;
   StageProgress& Progress;
+  AutomaticScaleEstimator Automatic;
   const AnchorTable* Anchors = nullptr;
   unsigned char* SharedMarks = nullptr;
 };

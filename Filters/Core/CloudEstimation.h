@@ -16,13 +16,13 @@
 #ifndef CloudEstimation_h
 #define CloudEstimation_h
 
+#include "AutomaticScale.h"
 #include "CloudStatistics.h"
 #include "DynamicAdjustment.h"
 #include "NormalEstimation.h"
 #include "OrientedCircleFit.h"
 #include "PointGrid.h"
 #include "PrincipalCurvatureCore.h"
-#include "SharedFits.h"
 
 #include <array>
 #include <atomic>
@@ -188,15 +188,11 @@ struct EstimationScratch
 {
   PointCurvatureEstimator Estimator;
   OrientedCircleEstimator OrientedEstimator;
-  OrientedCircleAccumulator OrientedSums;
-  ShellPoints Shell;
+  AutomaticScaleScratch Automatic;
   DynamicAdjustment Adjustment;
   std::vector<double> Distances;
   NeighborOffsets Neighbors;
   std::vector<std::pair<double, std::int64_t>> Ranked;
-  std::vector<OrientedCircleResult> Scales;
-  AnchorCells::Around Anchors;
-  std::vector<AnchorEstimate> NearbyAnchors;
 };
 
 /// Told how far the work is (0 to 1); returns false to stop. Called from

@@ -1,0 +1,161 @@
+/**
+ * @file AutomaticScale.h
+ * @brief NeighborhoodMode::Automatic with OrientedCircles: per point, the
+ * largest neighbourhood whose estimate agrees with those of the smaller
+ * ones (Lepski's rule), and the anchors of shared fits (SharedFits.h) that
+ * serve the points near them. No VTK.
+ */
+#ifndef AutomaticScale_h
+#define AutomaticScale_h
+
+#include "CloudStatistics.h"
+#include "OrientedCircleFit.h"
+#include "PointGrid.h"
+#include "SharedFits.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+namespace pcurv
+{
+
+/// NeighborhoodMode::Automatic: the radii tried at each point and the rule
+/// that picks one (AutomaticScaleEstimator).
+struct AutomaticScaleRule
+{
+  int BaseCount = 16;       // the first radius holds this many neighbours
+  int Levels = 8;           // radii base 2^(i/2), i < Levels: about 2000 neighbours at most
+  double Precision = 1e-3;  // a standard error this small (times the curvature) ends the growth
+  int MinimumCount = 12;    // fewer neighbours give no estimate to compare
+  double Tolerance = 2.0;   // standard errors two estimates may differ by
+  double LargestRadius = 0; // no radius beyond this (a length)
+  double TypicalRadius = 0; // the cloud's typical first radius (a length)
+  bool ShareFits = false;   // points near an anchor take its fit (SharedFits.h)
+  SharingRule Sharing;
+};
+
+/// The automatic scale's estimate at a point: the chosen radius's fit, the
+/// radius (NaN when none was kept) and the reported standard error.
+struct ScaleEstimate
+{
+  OrientedCircleResult Fit;
+  double Radius = std::numeric_limits<double>::quiet_NaN();
+  double Error = std::numeric_limits<double>::quiet_NaN();
+};
+
+/// The anchors of a run with shared fits (SharedFits.h): which points they
+/// are, in the grid's order, and their estimates once the first pass made
+/// them. Own anchors are output; halo anchors serve own points near them.
+struct AnchorTable
+{
+  AnchorCells Cells;
+  std::vector<std::int64_t> Points;
+  std::vector<ScaleEstimate> Estimates; // by position in Points
+  std::vector<std::int64_t> EstimateOf; // by cloud point: position, or -1
+
+  /// Chooses the anchors (every eligible point of the cloud takes part, so
+  /// each cell's choice is the same on every process) and keeps those an
+  /// own point may ask for: in the cells around an own point's.
+  template<typename Eligible>
+  void Choose(const CloudPoints& cloud,
+    const PointGrid& grid,
+    const GridLattice& lattice,
+    double cellSide,
+    const Eligible& eligible)
+  {
+    const std::int64_t count = cloud.GetNumberOfPoints();
+    this->Cells.Build(cloud.Coordinates.data(),
+      cloud.Normals.data(),
+      count,
+      lattice.Origin.data(),
+      cellSide,
+      eligible);
+    this->EstimateOf.assign(static_cast<std::size_t>(count), -1);
+    std::vector<unsigned char> needed(static_cast<std::size_t>(count), 0);
+    this->Cells.MarkAnchorsAround(cloud.Coordinates.data(), cloud.NumberOfOwnPoints, needed);
+    for (std::int64_t j = 0; j < grid.GetNumberOfPoints(); ++j)
+    {
+      const std::int64_t point = grid.GetSortedId(j);
+      if (needed[point])
+      {
+        this->EstimateOf[point] = static_cast<std::int64_t>(this->Points.size());
+        this->Points.push_back(point);
+      }
+    }
+    this->Estimates.resize(this->Points.size());
+  }
+
+  /// Whether any anchor's fit may be shared (none on a noise-free cloud,
+  /// where every radius is small): else the second pass skips the lookup.
+  bool AnyShareable(const SharingRule& rule) const
+  {
+    return std::any_of(this->Estimates.begin(),
+      this->Estimates.end(),
+      [&](const ScaleEstimate& e)
+      { return e.Fit.Curvature.Valid && e.Radius >= rule.MinimumRadius; });
+  }
+};
+
+/// A thread's reusable buffers for AutomaticScaleEstimator.
+struct AutomaticScaleScratch
+{
+  OrientedCircleAccumulator Sums;
+  ShellPoints Shell;
+  std::vector<double> Distances;
+  std::vector<OrientedCircleResult> Scales;
+  AnchorCells::Around Anchors;
+  std::vector<AnchorEstimate> NearbyAnchors;
+};
+
+/// Estimates points of a cloud with the automatic scale; one instance is
+/// shared by all threads (each with its own scratch).
+class AutomaticScaleEstimator
+{
+public:
+  AutomaticScaleEstimator(const CloudPoints& cloud,
+    const PointGrid& grid,
+    const AutomaticScaleRule& rule,
+    const FitSettings& settings)
+    : Cloud(cloud)
+    , Grid(grid)
+    , Rule(rule)
+    , Settings(settings)
+  {
+  }
+
+  /// The neighbourhood grows from the BaseCount nearest by a factor of 2
+  /// in count (sqrt 2 in radius), shell by shell into the same sums, and
+  /// the largest radius is kept whose curvatures agree with those of every
+  /// smaller radius within Tolerance times their standard errors (Lepski's
+  /// rule): as long as the estimates agree, a larger neighbourhood only
+  /// averages the noise out; once they part, the surface's shape (bias)
+  /// has begun to show. A radius at which too many neighbours' normals
+  /// oppose the point's stops the growth (the neighbourhood would reach
+  /// across the surface).
+  ScaleEstimate Estimate(std::int64_t point, AutomaticScaleScratch& scratch) const;
+
+  /// The point's estimate from the anchors around it (in the cells' fixed
+  /// order: the same on every process) that the sharing rule lets it blend;
+  /// not valid where none does.
+  SharedEstimate FromAnchors(std::int64_t point,
+    const AnchorTable& anchors,
+    AutomaticScaleScratch& scratch) const;
+
+private:
+  /// Lepski's test: the principal curvatures agree with each smaller
+  /// radius's within `tolerance` times the sum of their standard errors.
+  static bool AgreesWithSmaller(const OrientedCircleResult& candidate,
+    const std::vector<OrientedCircleResult>& smaller,
+    double tolerance);
+
+  const CloudPoints& Cloud;
+  const PointGrid& Grid;
+  AutomaticScaleRule Rule;
+  FitSettings Settings;
+};
+
+} // namespace pcurv
+
+#endif
