@@ -16,7 +16,10 @@
 * the same with Abort requested from a progress event, as ParaView's Abort
   button does it, in the first serial steps, the parallel plane fits, the
   serial orientation of the normals and the curvatures' serial steps: the
-  filter returns within a second, with no output;
+  filter returns within a second, with no output. A request is made only
+  while the run is short of its end (progress below 1); one that missed its
+  stage (a serial stage ended before it, or was too short to be
+  recognised) is checked the same way, then made again, up to three runs;
 * Point Cloud Normals on the same cloud: progress on the main thread too.
 
 Every check prints one line; the exit code is 0 when all pass, 1 otherwise.
@@ -59,22 +62,29 @@ def producer(points):
 
 class ProgressLog:
     """The progress events of a filter: value, thread, time; optionally
-    aborts the filter once the progress passes abort_at."""
+    aborts the filter once the progress passes abort_at (and is short of 1:
+    at 1 the work is done, and a request then has nothing left to stop).
+    With abort_in_serial_stage, the abort waits for `repeats` events in a
+    row reporting the same progress: a serial stage, which is not counted."""
 
-    def __init__(self, proxy, abort_at=None, abort_in_serial_stage=False):
+    def __init__(self, proxy, abort_at=None, abort_in_serial_stage=False, repeats=3):
         self.algorithm = proxy.GetClientSideObject()
         self.events = []
         self.texts = []
         self.abort_at = abort_at
         self.abort_in_serial_stage = abort_in_serial_stage
+        self.repeats = repeats
         self.abort_time = None
+        self.abort_value = None
+        self.abort_event = None
         self.algorithm.AddObserver("ProgressEvent", self.on_progress)
 
     def in_serial_stage(self):
-        """The last three events past abort_at report the same progress: a
-        stage that is not counted, such as the normals' orientation."""
-        last = [value for value, _, _ in self.events[-3:]]
-        return len(last) == 3 and last[0] >= self.abort_at and len(set(last)) == 1
+        """The last `repeats` events report the same progress, at least
+        abort_at and short of the end: a stage that is not counted, such as
+        the normals' orientation."""
+        last = [value for value, _, _ in self.events[-self.repeats:]]
+        return len(last) == self.repeats and len(set(last)) == 1 and self.abort_at <= last[0] < 1.0
 
     def on_progress(self, algorithm, _event):
         progress = algorithm.GetProgress()
@@ -82,9 +92,24 @@ class ProgressLog:
         self.texts.append(algorithm.GetProgressText() or "")
         if self.abort_at is None or self.abort_time is not None:
             return
-        if self.in_serial_stage() if self.abort_in_serial_stage else progress >= self.abort_at:
+        if self.in_serial_stage() if self.abort_in_serial_stage else self.abort_at <= progress < 1.0:
             self.abort_time = time.perf_counter()
+            self.abort_value = progress
+            self.abort_event = len(self.events) - 1
             algorithm.SetAbortExecute(1)
+
+    def stopped_in_stage(self):
+        """The request was made in the stage aimed at, and the run stopped
+        there: for a serial stage, the progress did not move on between the
+        request and the return (the pipeline's closing 1 aside); the core
+        stores the progress it has reached on every check, so a request that
+        came after the stage shows as a later progress."""
+        if self.abort_event is None:
+            return False
+        if not self.abort_in_serial_stage:
+            return True
+        after = [value for value, _, _ in self.events[self.abort_event + 1:] if value < 1.0]
+        return all(value == self.abort_value for value in after)
 
     def values(self):
         return [value for value, _, _ in self.events]
@@ -137,21 +162,35 @@ def check_time_left(log, finished):
         check(False, "no time left announced past half-way")
 
 
-def check_abort(stage, log_type, log_options, source):
+def check_abort(stage, log_options, source, attempts=3):
     """Abort requested from a progress event in `stage`: the filter returns
-    within a second, with no output."""
-    aborted = simple.PrincipalCurvatures(Input=source)
-    abort_log = log_type(aborted, **log_options)
-    aborted.UpdatePipeline()
-    returned = time.perf_counter()
-    check(abort_log.abort_time is not None, "Abort requested in the %s" % stage)
-    if abort_log.abort_time is not None:
-        delay = returned - abort_log.abort_time
-        check(delay < 1.0, "Abort in the %s: the filter returned %.3f s after the request (at most 1 s)"
-              % (stage, delay))
-    check(aborted.GetDataInformation().GetNumberOfPoints() == 0, "Abort in the %s: no output" % stage)
-    check(abort_log.on_main_thread(), "Abort in the %s: progress on the main thread" % stage)
-    simple.Delete(aborted)
+    within a second, with no output. Every run in which Abort was requested
+    is checked so, whether or not the request came in `stage`; a run that
+    stopped so but not in `stage` (the stage was shorter than the events'
+    spacing, or ended just after the request), or in which no request was
+    made, is made again, at most `attempts` runs."""
+    for attempt in range(1, attempts + 1):
+        aborted = simple.PrincipalCurvatures(Input=source)
+        abort_log = ProgressLog(aborted, **log_options)
+        aborted.UpdatePipeline()
+        returned = time.perf_counter()
+        run = "Abort in the %s (run %d)" % (stage, attempt)
+        requested = abort_log.abort_time is not None
+        honoured = True
+        if requested:
+            delay = returned - abort_log.abort_time
+            honoured = check(delay < 1.0, "%s, requested at progress %.3f: the filter returned %.3f s after "
+                             "the request (at most 1 s)" % (run, abort_log.abort_value, delay))
+            honoured &= check(aborted.GetDataInformation().GetNumberOfPoints() == 0, "%s: no output" % run)
+        check(abort_log.on_main_thread(), "%s: progress on the main thread" % run)
+        in_stage = abort_log.stopped_in_stage()
+        simple.Delete(aborted)
+        if in_stage or not honoured:
+            break
+        missed = "stopped after the stage" if requested else "no request before the end"
+        print("       %s: %s%s" % (run, missed, "; again" if attempt < attempts else ""))
+    check(in_stage, "Abort requested, and the run stopped, in the %s (%d of at most %d runs)"
+          % (stage, attempt, attempts))
 
 
 def main(plugin):
@@ -169,12 +208,15 @@ def main(plugin):
     check(curvatures.GetDataInformation().GetNumberOfPoints() == 600000, "the full run gives every point")
 
     # Serial stages report no progress of their own: their progress repeats.
-    check_abort("first serial steps", ProgressLog, dict(abort_at=0.0, abort_in_serial_stage=True), source)
-    check_abort("plane fits", ProgressLog, dict(abort_at=0.2), source)
+    check_abort("first serial steps", dict(abort_at=0.0, abort_in_serial_stage=True), source)
+    check_abort("plane fits", dict(abort_at=0.2), source)
     # The orientation reports the plane fits' end (0.36) until it is done.
-    check_abort("orientation", ProgressLog, dict(abort_at=0.3, abort_in_serial_stage=True), source)
-    # The curvatures' thresholds, grid and order, at the normals' end (0.45).
-    check_abort("curvatures' serial steps", ProgressLog, dict(abort_at=0.4, abort_in_serial_stage=True), source)
+    check_abort("orientation", dict(abort_at=0.3, abort_in_serial_stage=True), source)
+    # The curvatures' thresholds, grid and order, at the normals' end (0.45):
+    # about 0.15 s on 600k points, often fewer than three events (0.1 s
+    # apart), so the first event past 0.4 requests it; the orientation
+    # reports 0.36, the curvatures' parallel stage more than 0.45.
+    check_abort("curvatures' serial steps", dict(abort_at=0.4, abort_in_serial_stage=True, repeats=1), source)
 
     normals = simple.PointCloudNormals(Input=source)
     normals_log = ProgressLog(normals)
