@@ -11,6 +11,7 @@
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkIdTypeArray.h"
+#include "vtkMath.h"
 #include "vtkIntArray.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
@@ -230,6 +231,43 @@ void ReportUnestimated(vtkPrincipalCurvatureEstimation* self,
   }
 }
 
+/// Float coordinates keep 24 bits: at magnitude M neighbouring floats lie
+/// up to M 2^-23 apart. A georeferenced scan (UTM metres, 1e5 to 1e7) in
+/// float is rounded to centimetres or decimetres, which is noise of that
+/// size to every fit; a warning with the numbers, when the rounding exceeds
+/// a hundredth of the point spacing (noise the estimate starts to show).
+/// `radius` holds about `count` neighbours at a typical point.
+void WarnOnCoarseCoordinates(vtkPrincipalCurvatureEstimation* self,
+  vtkPointSet* input,
+  double radius,
+  int count)
+{
+  vtkPoints* points = input->GetPoints();
+  if (!points || points->GetDataType() != VTK_FLOAT || !(radius > 0.0) || count <= 0)
+  {
+    return;
+  }
+  double bounds[6];
+  points->GetBounds(bounds);
+  double magnitude = 0.0;
+  for (const double b : bounds)
+  {
+    magnitude = std::isfinite(b) ? std::max(magnitude, std::fabs(b)) : magnitude;
+  }
+  const double resolution = magnitude > 0.0 ? std::ldexp(1.0, std::ilogb(magnitude) - 23) : 0.0;
+  const double spacing = radius / std::sqrt(count / vtkMath::Pi());
+  if (resolution > 0.01 * spacing)
+  {
+    vtkWarningWithObjectMacro(self,
+      "The input's coordinates are stored as float: at their magnitude ("
+        << magnitude << ") neighbouring floats are up to " << resolution << " apart, "
+        << resolution / spacing << " times the point spacing (about " << spacing
+        << "). The positions are rounded as if by noise of that size, and the curvatures "
+           "degrade. Keep the coordinates in double (the plugin's PLY, LAS and text readers "
+           "do), or subtract an offset before converting them to float.");
+  }
+}
+
 } // namespace
 
 vtkPrincipalCurvatureEstimation::vtkPrincipalCurvatureEstimation()
@@ -356,6 +394,13 @@ int vtkPrincipalCurvatureEstimation::RequestData(vtkInformation*,
   pcurv::CopyGeometry(input, output);
   arrays.AddTo(output->GetPointData(), this->SinglePrecisionOutput, this->DiagnosticArrays);
   ReportUnestimated(this, summary, processes, output);
+  WarnOnCoarseCoordinates(this,
+    input,
+    summary.UsedSurroundingsThreshold,
+    settings.Neighborhood == pcurv::NeighborhoodMode::Automatic &&
+        settings.Mode == pcurv::FitMode::OrientedCircles
+      ? 16
+      : settings.NumberOfNeighbors);
   if (arrays.Buffers.Trusted)
   {
     // What Curvature_Trusted compared the standard errors with.

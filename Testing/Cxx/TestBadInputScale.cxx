@@ -17,6 +17,7 @@
 #include "vtkStructuredGrid.h"
 #include "vtkUnstructuredGrid.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -254,6 +255,51 @@ void TestNumericalHardening(Checks& checks)
         CheckContract(checks, label, o, moved->GetPointData()->GetNormals());
       }
     }
+  }
+  {
+    // A georeferenced scan: the same cloud at UTM-like coordinates. In
+    // double, the same curvatures to a millionth of the largest and no
+    // warning; in float, the coordinates are rounded to a fraction of a
+    // metre, and a warning says by how much.
+    const std::string row = "georeferenced: translated by (600000, 5000000, 100)";
+    Row(row);
+    auto reference = Run(Torus(8000));
+    auto moved = Torus(8000);
+    vtkPoints* p = moved->GetPoints();
+    for (vtkIdType i = 0; i < p->GetNumberOfPoints(); ++i)
+    {
+      double x[3];
+      p->GetPoint(i, x);
+      p->SetPoint(i, x[0] + 600000.0, x[1] + 5000000.0, x[2] + 100.0);
+    }
+    const Outcome o = Run(moved);
+    double worst = 0.0, largest = 0.0;
+    for (vtkIdType i = 0; i < p->GetNumberOfPoints(); ++i)
+    {
+      for (const char* name : { "Minimum_Curvature", "Maximum_Curvature" })
+      {
+        worst = std::max(worst, std::fabs(o.Value(name, i) - reference.Value(name, i)));
+        largest = std::max(largest, std::fabs(reference.Value(name, i)));
+      }
+    }
+    checks.Below(
+      Label(row, "double: curvatures within 1e-6 of the largest").c_str(), worst / largest, 1e-6);
+    checks.Equal(Label(row, "double: all estimated").c_str(), o.Unestimated, 0);
+    checks.Equal(Label(row, "double: no warning").c_str(), o.Warnings, 0);
+    vtkNew<vtkPoints> rounded;
+    rounded->SetDataTypeToFloat();
+    rounded->DeepCopy(p);
+    moved->SetPoints(rounded);
+    const Outcome f = Run(moved);
+    const bool named = std::any_of(f.Messages.begin(),
+      f.Messages.end(),
+      [](const std::string& m)
+      {
+        return m.find("stored as float") != std::string::npos &&
+          m.find("0.5 apart") != std::string::npos;
+      });
+    checks.True(
+      Label(row, "float: a warning that the coordinates are rounded 0.5 apart").c_str(), named);
   }
   {
     // A tilted plane: heights are rounding noise around 0.
