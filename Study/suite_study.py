@@ -30,6 +30,7 @@ import json
 import math
 import os
 import sys
+import time
 from collections import defaultdict
 
 import numpy
@@ -146,14 +147,15 @@ def trust(pd, evaluation, exact, valid, kmin, kmax, largest):
 
 
 def peers_best(path):
-    """(method, shape, N, noise, normals) -> (best relative error, its median angle)."""
+    """(method, shape, N, noise, normals) -> (best relative error, its median angle,
+    its seconds per 1M points per core)."""
     best = {}
     with open(path) as handle:
         for row in csv.DictReader(handle):
             key = (row["method"], row["shape"], int(row["N"]), float(row["noise_x_h"]), row["normals"])
             error = max(float(row["rel_err_kmin"]), float(row["rel_err_kmax"]))
             if key not in best or error < best[key][0]:
-                best[key] = (error, float(row["median_angle_kmax_deg"]))
+                best[key] = (error, float(row["median_angle_kmax_deg"]), float(row["t_total_s_per_1M"]))
     return best
 
 
@@ -172,6 +174,8 @@ def main(argv):
     parser.add_argument("--shapes", default=",".join(LARGEST_CURVATURE), help="shapes to run")
     parser.add_argument("--normals", default="exact,PCA", help="normals to run: exact, PCA or both")
     parser.add_argument("--csv", help="write every measurement to this file")
+    parser.add_argument("--threads", type=int, default=0,
+                        help="threads of the filter (0: all); 1 gives the time per core")
     arguments = parser.parse_args(argv)
     settings = arguments.setting or ["default", "own-normals"]
     sizes = [int(s) for s in arguments.sizes.split(",")]
@@ -193,9 +197,13 @@ def main(argv):
                 curvatures.GlobalWarningDisplayOff()
                 curvatures.SetInputData(polydata(data, not estimates_normals(setting)))
                 configure(curvatures, setting)
+                curvatures.SetNumberOfThreads(arguments.threads)
+                began = time.perf_counter()
                 curvatures.Update()
+                seconds = time.perf_counter() - began
                 result = measure(cloud["shape"], data, evaluation, curvatures.GetOutput(),
                                  normals == "exact" and not estimates_normals(setting))
+                result["seconds_per_1M"] = seconds * 1e6 / cloud["N"]
                 result.update({"shape": cloud["shape"], "N": cloud["N"], "noise": cloud["noise"],
                                "normals": "own" if estimates_normals(setting) else normals, "setting": setting})
                 rows.append(result)
@@ -224,22 +232,25 @@ def main(argv):
     groups = defaultdict(list)
     for row in rows:
         groups[(row["N"], row["noise"], row["normals"], row["setting"])].append(row)
-    print("| points | noise | normals | setting | error | angle | normal angle | CNC best | CNC angle | jet2 best | jet2 angle |")
-    print("|---|---|---|---|---|---|---|---|---|---|---|")
+    print("| points | noise | normals | setting | error | angle | normal angle | CNC best | CNC angle | jet2 best | jet2 angle "
+          "| s per 1M (threads %d) | CNC best's s per 1M per core |" % arguments.threads)
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     for (n, noise, normals, setting), members in sorted(groups.items()):
         # CNC with the suite's PCA(30) normals where ours are estimated or
         # PCA; jet fitting uses positions only (its rows say "exact").
         peer_normals = "pca30" if normals in ("PCA", "own") else "exact"
         cnc = [peers.get(("ponca_cnc_avghex", m["shape"], n, noise, peer_normals)) for m in members]
         jet = [peers.get(("cgal_jet2", m["shape"], n, noise, "exact")) for m in members]
-        print("| %d | %g h | %s | %s | %.4f | %.2f | %s | %s | %s | %s | %s |" % (
+        print("| %d | %g h | %s | %s | %.4f | %.2f | %s | %s | %s | %s | %s | %s | %s |" % (
             n, noise, normals, setting, median([m["error"] for m in members]),
             median([m["angle"] for m in members]),
             "%.2f" % median([m["normal_angle"] for m in members]) if normals == "own" else "",
             "%.4f" % median([c[0] for c in cnc if c]) if any(cnc) else "",
             "%.2f" % median([c[1] for c in cnc if c]) if any(cnc) else "",
             "%.4f" % median([j[0] for j in jet if j]) if any(jet) else "",
-            "%.2f" % median([j[1] for j in jet if j]) if any(jet) else ""))
+            "%.2f" % median([j[1] for j in jet if j]) if any(jet) else "",
+            "%.1f" % median([m["seconds_per_1M"] for m in members]),
+            "%.1f" % median([c[2] for c in cnc if c]) if any(cnc) else ""))
     return 0
 
 
