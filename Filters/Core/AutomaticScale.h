@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <vector>
 
@@ -57,24 +58,34 @@ struct AnchorTable
 
   /// Chooses the anchors (every eligible point of the cloud takes part, so
   /// each cell's choice is the same on every process) and keeps those an
-  /// own point may ask for: in the cells around an own point's.
+  /// own point may ask for: in the cells around an own point's. Asks
+  /// `keepGoing()` now and then; false when it said to stop.
   template<typename Eligible>
-  void Choose(const CloudPoints& cloud,
+  bool Choose(const CloudPoints& cloud,
     const PointGrid& grid,
     const GridLattice& lattice,
     double cellSide,
-    const Eligible& eligible)
+    const Eligible& eligible,
+    const std::function<bool()>& keepGoing)
   {
     const std::int64_t count = cloud.GetNumberOfPoints();
-    this->Cells.Build(cloud.Coordinates.data(),
-      cloud.Normals.data(),
-      count,
-      lattice.Origin.data(),
-      cellSide,
-      eligible);
+    if (!this->Cells.Build(cloud.Coordinates.data(),
+          cloud.Normals.data(),
+          count,
+          lattice.Origin.data(),
+          cellSide,
+          eligible,
+          keepGoing))
+    {
+      return false;
+    }
     this->EstimateOf.assign(static_cast<std::size_t>(count), -1);
     std::vector<unsigned char> needed(static_cast<std::size_t>(count), 0);
-    this->Cells.MarkAnchorsAround(cloud.Coordinates.data(), cloud.NumberOfOwnPoints, needed);
+    if (!this->Cells.MarkAnchorsAround(
+          cloud.Coordinates.data(), cloud.NumberOfOwnPoints, needed, keepGoing))
+    {
+      return false;
+    }
     for (std::int64_t j = 0; j < grid.GetNumberOfPoints(); ++j)
     {
       const std::int64_t point = grid.GetSortedId(j);
@@ -85,6 +96,7 @@ struct AnchorTable
       }
     }
     this->Estimates.resize(this->Points.size());
+    return true;
   }
 
   /// Whether any anchor's fit may be shared (none on a noise-free cloud,

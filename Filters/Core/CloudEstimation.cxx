@@ -1037,7 +1037,10 @@ EstimationSummary EstimateCloud(CloudPoints cloud,
   const bool shared = rule.AutomaticScale && rule.Automatic.ShareFits;
   if (shared)
   {
-    anchors.Choose(cloud,
+    // Serial: Abort is asked for along the way, and every process agrees
+    // on it afterwards (the processes' loops differ in length).
+    const bool chosen = anchors.Choose(
+      cloud,
       grid,
       lattice,
       rule.Automatic.Sharing.CellFactor * rule.Automatic.TypicalRadius,
@@ -1045,7 +1048,15 @@ EstimationSummary EstimateCloud(CloudPoints cloud,
       {
         const double* n = &cloud.Normals[3 * point];
         return n[0] != 0.0 || n[1] != 0.0 || n[2] != 0.0;
-      });
+      },
+      [&]() { return !monitor || monitor->Continue(normalsShare); });
+    const bool everyProcessGoesOn =
+      processes.IsDistributed() ? processes.Min(chosen ? 1 : 0) == 1 : chosen;
+    if (!everyProcessGoesOn || !ContinueBetweenSteps(monitor, normalsShare, processes))
+    {
+      summary.Aborted = true;
+      return summary;
+    }
   }
   const double anchorShare = shared ? 0.7 * (1.0 - normalsShare) : 0.0;
   StageProgress anchorProgress(

@@ -333,14 +333,19 @@ void AnchorCells::AnchorsAround(const double x[3], Around& around) const
   }
 }
 
-void AnchorCells::MarkAnchorsAround(const double* coordinates,
+bool AnchorCells::MarkAnchorsAround(const double* coordinates,
   std::int64_t count,
-  std::vector<unsigned char>& marks) const
+  std::vector<unsigned char>& marks,
+  const std::function<bool()>& keepGoing) const
 {
   std::unordered_set<CellKey, CellHash> visited;
   Around around;
   for (std::int64_t point = 0; point < count; ++point)
   {
+    if (point % CheckInterval == 0 && !keepGoing())
+    {
+      return false;
+    }
     const double* x = coordinates + 3 * point;
     if (visited.insert(this->KeyOf(x)).second)
     {
@@ -351,6 +356,7 @@ void AnchorCells::MarkAnchorsAround(const double* coordinates,
       }
     }
   }
+  return true;
 }
 
 bool AnchorCells::IsAnchor(std::int64_t point, const double* coordinates) const

@@ -26,6 +26,7 @@
 #include "PointGrid.h"
 
 #include <cstdint>
+#include <functional>
 #include <unordered_map>
 #include <unordered_set>
 #include <vector>
@@ -112,24 +113,35 @@ public:
   };
 
   /// `eligible(point)` tells which points may be anchors (those with a
-  /// normal); lattice origin and cell side are global.
-  template<typename Eligible>
-  void Build(const double* coordinates,
+  /// normal); lattice origin and cell side are global. `keepGoing()` is
+  /// asked every CheckInterval points; false stops the build (the cells
+  /// are then incomplete) and returns false.
+  template<typename Eligible, typename KeepGoing>
+  bool Build(const double* coordinates,
     const double* normals,
     std::int64_t count,
     const double origin[3],
     double cellSide,
-    const Eligible& eligible)
+    const Eligible& eligible,
+    const KeepGoing& keepGoing)
   {
     this->Begin(origin, cellSide);
     for (std::int64_t point = 0; point < count; ++point)
     {
+      if (point % CheckInterval == 0 && !keepGoing())
+      {
+        return false;
+      }
       if (eligible(point))
       {
         this->Offer(point, coordinates, normals);
       }
     }
+    return true;
   }
+
+  /// Points between two asks whether to go on.
+  static constexpr std::int64_t CheckInterval = 1 << 16;
 
   /// The anchor of the cell holding x, and of the 26 cells around it, in a
   /// fixed order (cells without anchors skipped), into `around` (which
@@ -137,10 +149,12 @@ public:
   void AnchorsAround(const double x[3], Around& around) const;
 
   /// Sets marks[anchor] to 1 for the anchors around (AnchorsAround) any of
-  /// the first `count` points.
-  void MarkAnchorsAround(const double* coordinates,
+  /// the first `count` points; false when `keepGoing()` (asked every
+  /// CheckInterval points) said to stop.
+  bool MarkAnchorsAround(const double* coordinates,
     std::int64_t count,
-    std::vector<unsigned char>& marks) const;
+    std::vector<unsigned char>& marks,
+    const std::function<bool()>& keepGoing) const;
 
   /// Whether `point` is the anchor of its cell.
   bool IsAnchor(std::int64_t point, const double* coordinates) const;
