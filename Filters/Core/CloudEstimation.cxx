@@ -512,11 +512,13 @@ public:
     this->Progress.Advance(pending);
   }
 
-  /// The second pass of shared fits reads the anchors' estimates here, and
-  /// marks the points that took them in `shared` (one per cloud point).
-  void UseAnchors(const AnchorTable* table, unsigned char* shared)
+  /// The second pass of shared fits: the anchors are estimated already;
+  /// where `shareable`, the other points look for anchors' fits to take,
+  /// and those that took them are marked in `shared` (one per cloud point).
+  void UseAnchors(const AnchorTable* table, bool shareable, unsigned char* shared)
   {
     this->Anchors = table;
+    this->Shareable = shareable;
     this->SharedMarks = shared;
   }
 
@@ -719,7 +721,7 @@ private:
     {
       return;
     }
-    if (this->Anchors && this->EstimateFromAnchors(point, scratch))
+    if (this->Shareable && this->EstimateFromAnchors(point, scratch))
     {
       return;
     }
@@ -750,7 +752,8 @@ private:
   const ResultWriter& Out;
   StageProgress& Progress;
   AutomaticScaleEstimator Automatic;
-  const AnchorTable* Anchors = nullptr;
+  const AnchorTable* Anchors = nullptr; // the anchors, estimated already
+  bool Shareable = false;               // some anchor's fit may be shared
   unsigned char* SharedMarks = nullptr;
 };
 
@@ -1073,7 +1076,7 @@ EstimationSummary EstimateCloud(CloudPoints cloud,
   ItemEstimator estimator(cloud, grid, order, rule, fit, writer, progress);
   std::vector<unsigned char> sharedMarks(shared ? cloud.GetNumberOfPoints() : 0, 0);
   const bool shareable = shared && anchors.AnyShareable(rule.Automatic.Sharing);
-  estimator.UseAnchors(shareable ? &anchors : nullptr, sharedMarks.data());
+  estimator.UseAnchors(shared ? &anchors : nullptr, shareable, sharedMarks.data());
   if (!anchorProgress.Stopped())
   {
     runner.For(order.GetNumberOfItems(),

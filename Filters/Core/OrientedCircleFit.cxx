@@ -49,14 +49,15 @@ Vector<N> Full(const std::array<double, N>& right)
 }
 
 /// The unknowns (C, A, B, tilt u, tilt v, the cubic's four coefficients[,
-/// height]) and, where asked for (the covariance), the inverse of the
-/// normal matrix; invalid when it is singular to working precision.
+/// height]) and, where asked for (the covariance of C, A, B), the first
+/// three columns of the inverse of the normal matrix; invalid when it is
+/// singular to working precision.
 template<int N>
 struct Solution
 {
   bool Valid = false;
   Vector<N> X = Vector<N>::Zero();
-  Matrix<N> Inverse = Matrix<N>::Zero();
+  Eigen::Matrix<double, N, 3> Inverse = Eigen::Matrix<double, N, 3>::Zero();
 };
 
 /// Solves the normal equations, scaled to a unit diagonal first: the
@@ -87,8 +88,10 @@ Solution<N> Solve(const Matrix<N>& normal, const Vector<N>& right, bool withInve
   solution.X = unscale.cwiseProduct(ldlt.solve(unscale.cwiseProduct(right)));
   if (withInverse)
   {
-    solution.Inverse =
-      unscale.asDiagonal() * ldlt.solve(Matrix<N>::Identity()) * unscale.asDiagonal();
+    // Only C, A and B's covariance is wanted: three columns, not N.
+    const Eigen::Matrix<double, N, 3> columns =
+      ldlt.solve(unscale.asDiagonal() * Matrix<N>::Identity().template leftCols<3>());
+    solution.Inverse = unscale.asDiagonal() * columns;
   }
   solution.Valid = solution.X.allFinite() && solution.Inverse.allFinite();
   return solution;
@@ -174,7 +177,9 @@ TangentFrame FittedFrame(const TangentFrame& frame,
 
 /// The standard error of the principal curvatures C +- hypot(A, B) from
 /// the covariance of the unknowns (C, A, B first), to first order.
-double CurvatureStandardError(const PositionMatrix& covariance, double c, double s)
+double CurvatureStandardError(const Eigen::Matrix<double, PositionUnknowns, 3>& covariance,
+  double c,
+  double s)
 {
   const double amplitude = std::hypot(c, s);
   const double amplitudeVariance = amplitude > 0.0
@@ -336,7 +341,8 @@ OrientedCircleResult FitOrientedCircles(const OrientedCircleSums& sums,
     }
   }
 
-  const PositionMatrix covariance = positions.Inverse * positionVariance;
+  const Eigen::Matrix<double, PositionUnknowns, 3> covariance =
+    positions.Inverse * positionVariance;
   const double c = combined.X[1], s = combined.X[2];
   const double amplitude = std::hypot(c, s);
   result.StandardError = CurvatureStandardError(covariance, c, s) * inverseScale;
