@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <mutex>
 #include <type_traits>
 #include <utility>
 
@@ -58,31 +59,15 @@ struct Candidates
 /// contiguous runs of positions: it finds the neighbours in position order
 /// (the order every sum of the fit follows, as before) without looking
 /// positions up, and reads the coordinates where they lie in memory.
+///
+/// The order is PointGrid's (by cell, then by coordinates, then by id),
+/// found here with the sorting in parallel; the PointGrid itself, whose
+/// finer cells serve queries in cells far denser than the rest, is only
+/// built when such a query comes.
 class OrderedCloud
 {
 public:
-  OrderedCloud(const CloudPoints& cloud, const GridLattice& lattice)
-    : Lattice(lattice)
-  {
-    const std::int64_t n = cloud.NumberOfOwnPoints;
-    this->Grid.Build(cloud.Coordinates.data(), n, lattice);
-    this->Ids.resize(n);
-    this->PositionOfId.resize(n);
-    for (std::vector<double>* axis : { &this->X, &this->Y, &this->Z })
-    {
-      axis->resize(n);
-    }
-    for (std::int64_t p = 0; p < n; ++p)
-    {
-      const std::int64_t id = this->Grid.GetSortedId(p);
-      this->Ids[p] = id;
-      this->PositionOfId[id] = p;
-      this->X[p] = cloud.Coordinates[3 * id];
-      this->Y[p] = cloud.Coordinates[3 * id + 1];
-      this->Z[p] = cloud.Coordinates[3 * id + 2];
-    }
-    this->IndexCells();
-  }
+  OrderedCloud(const CloudPoints& cloud, const GridLattice& lattice, WorkRunner& runner);
 
   std::int64_t Size() const { return static_cast<std::int64_t>(this->Ids.size()); }
   std::int64_t Id(std::int64_t position) const { return this->Ids[position]; }
@@ -105,7 +90,7 @@ public:
   /// See PointGrid::SquaredDistanceToKth.
   double SquaredDistanceToKth(const double x[3], int k, std::vector<double>& scratch) const
   {
-    return this->Grid.SquaredDistanceToKth(x, k, scratch);
+    return this->FineGrid().SquaredDistanceToKth(x, k, scratch);
   }
 
 private:
@@ -119,60 +104,161 @@ private:
     return static_cast<std::int64_t>(cell > 0.0 ? (cell < last ? cell : last) : 0.0);
   }
 
-  /// CellStart from the positions' cells; rows are unusable (every query
-  /// then goes through the grid) if the positions were not in cell order.
-  void IndexCells();
+  std::int64_t CellOf(const double* x) const
+  {
+    return (this->CellIndex(x[2], 2) * this->Dimensions[1] + this->CellIndex(x[1], 1)) *
+      this->Dimensions[0] +
+      this->CellIndex(x[0], 0);
+  }
 
+  /// Low and Dimensions: the cells from the smallest coordinates' to the
+  /// largest's.
+  void SpanCells();
+  /// Ids and CellStart: a counting sort by cell, then each cell's points
+  /// by coordinates (in parallel).
+  void SortByCell(WorkRunner& runner);
+  /// X, Y, Z and PositionOfId from Ids (in parallel).
+  void CopyInOrder(WorkRunner& runner);
+
+  /// The PointGrid over the cloud, built by the first query that needs it.
+  const PointGrid& FineGrid() const
+  {
+    std::call_once(this->GridBuilt,
+      [this]() { this->Grid.Build(this->Cloud.Coordinates.data(), this->Size(), this->Lattice); });
+    return this->Grid;
+  }
+
+  const CloudPoints& Cloud;
   GridLattice Lattice;
-  PointGrid Grid; // over the cloud's own ids
   std::vector<double> X, Y, Z;
   std::vector<std::int64_t> Ids;          // position -> point id
   std::vector<std::int64_t> PositionOfId; // point id -> position
   std::array<std::int64_t, 3> Low{ { 0, 0, 0 } };
   std::array<std::int64_t, 3> Dimensions{ { 1, 1, 1 } };
   std::vector<std::int64_t> CellStart; // per cell its first position, one extra at the end
-  bool RowsUsable = false;
+  mutable PointGrid Grid;
+  mutable std::once_flag GridBuilt;
 };
 
-void OrderedCloud::IndexCells()
+OrderedCloud::OrderedCloud(const CloudPoints& cloud, const GridLattice& lattice, WorkRunner& runner)
+  : Cloud(cloud)
+  , Lattice(lattice)
 {
-  const std::int64_t n = this->Size();
-  if (n == 0)
+  if (cloud.NumberOfOwnPoints == 0)
   {
     return;
   }
+  this->SpanCells();
+  this->SortByCell(runner);
+  this->CopyInOrder(runner);
+}
+
+void OrderedCloud::SpanCells()
+{
+  const std::int64_t n = this->Cloud.NumberOfOwnPoints;
+  const double* coordinates = this->Cloud.Coordinates.data();
   double lower[3], upper[3];
   for (int k = 0; k < 3; ++k)
   {
-    const std::vector<double>& axis = k == 0 ? this->X : k == 1 ? this->Y : this->Z;
-    const auto [smallest, largest] = std::minmax_element(axis.begin(), axis.end());
-    lower[k] = *smallest;
-    upper[k] = *largest;
+    lower[k] = upper[k] = coordinates[k];
+  }
+  for (std::int64_t i = 1; i < n; ++i)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      lower[k] = std::min(lower[k], coordinates[3 * i + k]);
+      upper[k] = std::max(upper[k], coordinates[3 * i + k]);
+    }
   }
   for (int k = 0; k < 3; ++k)
   {
     this->Low[k] = this->Lattice.Cell(lower[k], k);
     this->Dimensions[k] = this->Lattice.Cell(upper[k], k) - this->Low[k] + 1;
   }
+}
+
+void OrderedCloud::SortByCell(WorkRunner& runner)
+{
+  const std::int64_t n = this->Cloud.NumberOfOwnPoints;
+  const double* coordinates = this->Cloud.Coordinates.data();
+  std::vector<std::int64_t> cellOf(n);
+  runner.For(n,
+    65536,
+    [&](std::int64_t begin, std::int64_t end, EstimationScratch&)
+    {
+      for (std::int64_t i = begin; i < end; ++i)
+      {
+        cellOf[i] = this->CellOf(coordinates + 3 * i);
+      }
+    });
   const std::int64_t cells = this->Dimensions[0] * this->Dimensions[1] * this->Dimensions[2];
   this->CellStart.assign(cells + 1, 0);
-  std::int64_t previous = 0;
-  bool ordered = true;
-  for (std::int64_t p = 0; p < n; ++p)
+  for (std::int64_t i = 0; i < n; ++i)
   {
-    const std::int64_t cell =
-      (this->CellIndex(this->Z[p], 2) * this->Dimensions[1] + this->CellIndex(this->Y[p], 1)) *
-        this->Dimensions[0] +
-      this->CellIndex(this->X[p], 0);
-    ordered = ordered && cell >= previous;
-    previous = cell;
-    ++this->CellStart[cell + 1];
+    ++this->CellStart[cellOf[i] + 1];
   }
   for (std::int64_t c = 0; c < cells; ++c)
   {
     this->CellStart[c + 1] += this->CellStart[c];
   }
-  this->RowsUsable = ordered;
+  std::vector<std::int64_t> next(this->CellStart.begin(), this->CellStart.end() - 1);
+  this->Ids.resize(n);
+  for (std::int64_t i = 0; i < n; ++i)
+  {
+    this->Ids[next[cellOf[i]]++] = i;
+  }
+  // Within a cell by coordinates, as PointGrid (a total order: any sort
+  // gives the same).
+  auto before = [coordinates](std::int64_t a, std::int64_t b)
+  {
+    const double* p = coordinates + 3 * a;
+    const double* q = coordinates + 3 * b;
+    if (p[0] != q[0])
+      return p[0] < q[0];
+    if (p[1] != q[1])
+      return p[1] < q[1];
+    if (p[2] != q[2])
+      return p[2] < q[2];
+    return a < b;
+  };
+  runner.For(cells,
+    65536,
+    [&](std::int64_t begin, std::int64_t end, EstimationScratch&)
+    {
+      for (std::int64_t c = begin; c < end; ++c)
+      {
+        if (this->CellStart[c + 1] - this->CellStart[c] > 1)
+        {
+          std::sort(this->Ids.begin() + this->CellStart[c],
+            this->Ids.begin() + this->CellStart[c + 1],
+            before);
+        }
+      }
+    });
+}
+
+void OrderedCloud::CopyInOrder(WorkRunner& runner)
+{
+  const std::int64_t n = this->Size();
+  const double* coordinates = this->Cloud.Coordinates.data();
+  this->PositionOfId.resize(n);
+  for (std::vector<double>* axis : { &this->X, &this->Y, &this->Z })
+  {
+    axis->resize(n);
+  }
+  runner.For(n,
+    65536,
+    [&](std::int64_t begin, std::int64_t end, EstimationScratch&)
+    {
+      for (std::int64_t p = begin; p < end; ++p)
+      {
+        const std::int64_t id = this->Ids[p];
+        this->PositionOfId[id] = p;
+        this->X[p] = coordinates[3 * id];
+        this->Y[p] = coordinates[3 * id + 1];
+        this->Z[p] = coordinates[3 * id + 2];
+      }
+    });
 }
 
 bool OrderedCloud::GatherRows(const double x[3],
@@ -180,52 +266,40 @@ bool OrderedCloud::GatherRows(const double x[3],
   std::size_t limit,
   Candidates& out) const
 {
-  if (!this->RowsUsable)
-  {
-    return false;
-  }
   std::array<std::int64_t, 3> low, high;
   for (int k = 0; k < 3; ++k)
   {
     low[k] = this->CellIndex(x[k] - radius, k);
     high[k] = this->CellIndex(x[k] + radius, k);
   }
-  auto rowStart = [&](std::int64_t iz, std::int64_t iy)
-  { return (iz * this->Dimensions[1] + iy) * this->Dimensions[0]; };
-  std::size_t total = 0;
-  for (std::int64_t iz = low[2]; iz <= high[2]; ++iz)
-  {
-    for (std::int64_t iy = low[1]; iy <= high[1]; ++iy)
-    {
-      const std::int64_t row = rowStart(iz, iy);
-      total += static_cast<std::size_t>(
-        this->CellStart[row + high[0] + 1] - this->CellStart[row + low[0]]);
-    }
-  }
-  if (total > limit)
-  {
-    return false;
-  }
-  out.Reserve(total);
   const double radiusSquared = radius * radius;
   const double* xs = this->X.data();
   const double* ys = this->Y.data();
   const double* zs = this->Z.data();
-  double* squared = out.Squared.data();
-  std::int64_t* positions = out.Positions.data();
-  std::size_t kept = 0;
+  const double x0 = x[0], x1 = x[1], x2 = x[2];
+  std::size_t seen = 0, kept = 0;
   for (std::int64_t iz = low[2]; iz <= high[2]; ++iz)
   {
     for (std::int64_t iy = low[1]; iy <= high[1]; ++iy)
     {
-      const std::int64_t row = rowStart(iz, iy);
+      const std::int64_t row = (iz * this->Dimensions[1] + iy) * this->Dimensions[0];
+      const std::int64_t begin = this->CellStart[row + low[0]];
       const std::int64_t end = this->CellStart[row + high[0] + 1];
+      const std::size_t length = static_cast<std::size_t>(end - begin);
+      seen += length;
+      if (seen > limit)
+      {
+        return false;
+      }
+      out.Reserve(kept + length);
+      double* squared = out.Squared.data();
+      std::int64_t* positions = out.Positions.data();
       // Every candidate is written, at the first free place; only those
       // within the radius advance it (branch free: a sphere cuts through
       // the rows too randomly for branch prediction).
-      for (std::int64_t j = this->CellStart[row + low[0]]; j < end; ++j)
+      for (std::int64_t j = begin; j < end; ++j)
       {
-        const double dx = xs[j] - x[0], dy = ys[j] - x[1], dz = zs[j] - x[2];
+        const double dx = xs[j] - x0, dy = ys[j] - x1, dz = zs[j] - x2;
         const double d = dx * dx + dy * dy + dz * dz;
         squared[kept] = d;
         positions[kept] = j;
@@ -243,7 +317,7 @@ void OrderedCloud::GatherFine(const double x[3],
   ShellPoints& shell,
   Candidates& out) const
 {
-  const std::size_t count = this->Grid.GatherShell(x, 0.0, radius, shell);
+  const std::size_t count = this->FineGrid().GatherShell(x, 0.0, radius, shell);
   out.Reserve(count);
   for (std::size_t i = 0; i < count; ++i)
   {
@@ -320,48 +394,6 @@ void FitPlane(const NeighborOffsets& offsets, double inverseRadius, double* norm
   }
 }
 
-/// The nearest others of a point by (squared distance, position), at most
-/// `wanted` of them: a sorted insertion, the list being short.
-class NearestOthers
-{
-public:
-  NearestOthers(int wanted, std::vector<std::pair<double, std::int64_t>>& buffer)
-    : Wanted(static_cast<std::size_t>(wanted))
-    , Entries(buffer)
-  {
-    this->Entries.resize(this->Wanted);
-  }
-
-  void Offer(double squared, std::int64_t position)
-  {
-    const std::pair<double, std::int64_t> entry(squared, position);
-    if (this->Size == this->Wanted && !(entry < this->Entries[this->Size - 1]))
-    {
-      return;
-    }
-    std::size_t i = this->Size < this->Wanted ? this->Size++ : this->Size - 1;
-    for (; i > 0 && entry < this->Entries[i - 1]; --i)
-    {
-      this->Entries[i] = this->Entries[i - 1];
-    }
-    this->Entries[i] = entry;
-  }
-
-  /// Writes the positions, nearest first, -1 padded to `count`.
-  void Write(std::int64_t* edges, int count) const
-  {
-    for (std::size_t e = 0; e < static_cast<std::size_t>(count); ++e)
-    {
-      edges[e] = e < this->Size ? this->Entries[e].second : -1;
-    }
-  }
-
-private:
-  std::size_t Wanted;
-  std::size_t Size = 0;
-  std::vector<std::pair<double, std::int64_t>>& Entries;
-};
-
 /// One thread's buffers of the k-nearest search, and its guess of the
 /// radius: the last point's, the points being visited in grid order (so
 /// the next one is near and about as dense).
@@ -371,9 +403,45 @@ struct NearestSearch
   ShellPoints Shell;
   std::vector<double> Selected;
   NeighborOffsets Offsets;
-  std::vector<std::pair<double, std::int64_t>> Nearest;
+  std::vector<std::pair<double, std::int64_t>> Ranked;
   double Guess = 0.0;
 };
+
+/// The k-th smallest (k from 1) of values[0, count): exact whatever the
+/// bounds, and quick when it lies in [low, high): the values below and
+/// within are counted without branches (a sphere's distances come too
+/// randomly for branch prediction) and only those within are sorted.
+double KthSmallest(const double* values,
+  std::size_t count,
+  std::size_t k,
+  double low,
+  double high,
+  std::vector<double>& scratch)
+{
+  std::size_t below = 0, within = 0;
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    const double v = values[i];
+    below += v < low;
+    within += (v >= low) & (v < high);
+  }
+  if (below < k && k <= below + within)
+  {
+    scratch.resize(within + 1); // one written past the last kept
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < count; ++i)
+    {
+      const double v = values[i];
+      scratch[kept] = v;
+      kept += (v >= low) & (v < high);
+    }
+    std::sort(scratch.begin(), scratch.begin() + within);
+    return scratch[k - below - 1];
+  }
+  scratch.assign(values, values + count);
+  std::nth_element(scratch.begin(), scratch.begin() + (k - 1), scratch.end());
+  return scratch[k - 1];
+}
 
 /// The points within `radius` of x: through rows of cells unless they hold
 /// far more points than wanted (a dense cell).
@@ -398,10 +466,11 @@ void Gather(const OrderedCloud& ordered,
 bool GatherAtLeast(const OrderedCloud& ordered,
   const double x[3],
   std::size_t wanted,
-  NearestSearch& search)
+  NearestSearch& search,
+  double& radius)
 {
   constexpr int Tries = 6;
-  double radius = search.Guess;
+  radius = search.Guess;
   for (int attempt = 0; attempt < Tries && radius > 0.0 && std::isfinite(radius); ++attempt)
   {
     Gather(ordered, x, radius, wanted, search);
@@ -418,44 +487,52 @@ bool GatherAtLeast(const OrderedCloud& ordered,
   return false;
 }
 
-/// The k-th smallest of the candidates' squared distances.
-double KthSquared(NearestSearch& search, std::size_t k)
+/// The k-th smallest of the candidates' squared distances (all within
+/// `radius`), looked for first about where it would lie were the points
+/// spread evenly on a surface: there the count within a distance grows
+/// with its square.
+double KthSquared(NearestSearch& search, double radius, std::size_t k)
 {
   const Candidates& found = search.Found;
-  search.Selected.assign(found.Squared.begin(), found.Squared.begin() + found.Count);
-  std::nth_element(
-    search.Selected.begin(), search.Selected.begin() + (k - 1), search.Selected.end());
-  return search.Selected[k - 1];
+  const double expected = radius * radius * static_cast<double>(k) /
+    static_cast<double>(std::max<std::size_t>(found.Count, 1));
+  return KthSmallest(
+    found.Squared.data(), found.Count, k, 0.8 * expected, 1.25 * expected, search.Selected);
 }
 
 /// Keeps the candidates nearer than `radius` (every point nearer than the
-/// k-th): their offsets in position order into search.Offsets, the nearest
-/// others into `nearest`.
+/// k-th): their squared distances and positions, in position order, stay
+/// the first `Count` candidates; their offsets go to search.Offsets.
 void KeepWithinRadius(const OrderedCloud& ordered,
   const double x[3],
-  std::int64_t position,
   double radius,
-  NearestSearch& search,
-  NearestOthers& nearest)
+  NearestSearch& search)
 {
   Candidates& found = search.Found;
   const double radiusSquared = radius * radius;
   std::size_t kept = 0;
   for (std::size_t i = 0; i < found.Count; ++i)
   {
-    const std::int64_t other = found.Positions[i];
-    if (found.Squared[i] < radiusSquared)
-    {
-      found.Positions[kept++] = other;
-      if (other != position)
-      {
-        nearest.Offer(found.Squared[i], other);
-      }
-    }
+    const double squared = found.Squared[i];
+    found.Squared[kept] = squared;
+    found.Positions[kept] = found.Positions[i];
+    kept += squared < radiusSquared;
   }
+  found.Count = kept;
   if (!found.InOrder)
   {
-    std::sort(found.Positions.begin(), found.Positions.begin() + kept);
+    std::vector<std::pair<std::int64_t, double>> byPosition(kept);
+    for (std::size_t i = 0; i < kept; ++i)
+    {
+      byPosition[i] = { found.Positions[i], found.Squared[i] };
+    }
+    std::sort(byPosition.begin(), byPosition.end());
+    for (std::size_t i = 0; i < kept; ++i)
+    {
+      found.Positions[i] = byPosition[i].first;
+      found.Squared[i] = byPosition[i].second;
+    }
+    found.InOrder = true;
   }
   NeighborOffsets& offsets = search.Offsets;
   if (offsets.Dx.size() < kept)
@@ -476,6 +553,54 @@ void KeepWithinRadius(const OrderedCloud& ordered,
   offsets.Count = kept;
 }
 
+/// The graph edges of the point at `position`: its `count` nearest others
+/// among the kept neighbours (within `radius`, `kept` of them), by
+/// (squared distance, position), nearest first, -1 padded. Only those
+/// within a distance that holds about twice as many on a surface are
+/// ranked; all of them where that is too few. The kept neighbours come in
+/// position order, so a stable sort by distance ranks ties by position.
+void WriteNearestOthers(std::int64_t position,
+  double radius,
+  NearestSearch& search,
+  int count,
+  std::int64_t* edges)
+{
+  const Candidates& kept = search.Found;
+  const std::size_t wanted = static_cast<std::size_t>(count);
+  std::vector<std::pair<double, std::int64_t>>& ranked = search.Ranked;
+  ranked.resize(kept.Count + 1); // one written past the last ranked
+  const double share = 2.0 * static_cast<double>(wanted + 1) / static_cast<double>(kept.Count);
+  std::size_t size = 0;
+  for (const double limit : { share * radius * radius, std::numeric_limits<double>::infinity() })
+  {
+    size = 0;
+    for (std::size_t i = 0; i < kept.Count; ++i)
+    {
+      ranked[size] = { kept.Squared[i], kept.Positions[i] };
+      size += (kept.Squared[i] <= limit) & (kept.Positions[i] != position);
+    }
+    if (size >= wanted)
+    {
+      break;
+    }
+  }
+  // Insertion sort: few entries, and stable.
+  for (std::size_t i = 1; i < size; ++i)
+  {
+    const std::pair<double, std::int64_t> entry = ranked[i];
+    std::size_t at = i;
+    for (; at > 0 && entry.first < ranked[at - 1].first; --at)
+    {
+      ranked[at] = ranked[at - 1];
+    }
+    ranked[at] = entry;
+  }
+  for (std::size_t e = 0; e < wanted; ++e)
+  {
+    edges[e] = e < size ? ranked[e].second : -1;
+  }
+}
+
 /// One point's plane and graph neighbours: the k nearest found with one
 /// radius query (usually), kept in position order for the fit, the nearest
 /// others for the graph.
@@ -490,10 +615,11 @@ void FitPoint(const OrderedCloud& ordered,
   double* normal = &fits.Normals[3 * position];
   // k + 1: the point itself is among those found.
   const std::size_t wanted = static_cast<std::size_t>(settings.NumberOfNeighbors) + 1;
-  const bool found =
-    static_cast<std::size_t>(ordered.Size()) > wanted && GatherAtLeast(ordered, x, wanted, search);
+  double searched = 0.0;
+  const bool found = static_cast<std::size_t>(ordered.Size()) > wanted &&
+    GatherAtLeast(ordered, x, wanted, search, searched);
   const double squared = found
-    ? KthSquared(search, wanted)
+    ? KthSquared(search, searched, wanted)
     : ordered.SquaredDistanceToKth(x, static_cast<int>(wanted), search.Selected);
   const double radius = std::nextafter(std::sqrt(squared), HUGE_VAL);
   if (!(radius > 0.0) || !std::isfinite(radius))
@@ -505,8 +631,7 @@ void FitPoint(const OrderedCloud& ordered,
   {
     Gather(ordered, x, radius, wanted, search);
   }
-  NearestOthers nearest(fits.GraphNeighbors, search.Nearest);
-  KeepWithinRadius(ordered, x, position, radius, search, nearest);
+  KeepWithinRadius(ordered, x, radius, search);
   search.Guess = 1.1 * radius;
   if (search.Offsets.Count < 3)
   {
@@ -514,7 +639,8 @@ void FitPoint(const OrderedCloud& ordered,
     return;
   }
   FitPlane(search.Offsets, 1.0 / radius, normal);
-  nearest.Write(&fits.Neighbors[position * fits.GraphNeighbors], fits.GraphNeighbors);
+  WriteNearestOthers(
+    position, radius, search, fits.GraphNeighbors, &fits.Neighbors[position * fits.GraphNeighbors]);
 }
 
 /// Which graph edges a -> b the orientation can do without: those whose
@@ -548,116 +674,137 @@ std::vector<unsigned char> FindRepeatedEdges(const PlaneFits& fits, WorkRunner& 
   return repeated;
 }
 
+/// What the traversal needs of an edge a -> b, worked out (in parallel)
+/// with the graph: the bucket of its weight sqrt(1 - |n_a . n_b|) (about
+/// the angle between the normals), and how b's sign follows a's (the sign
+/// of n_a . n_b; zero: b keeps its own), in one code; the traversal then
+/// reads no normal. Edges to a point without a normal are never followed.
+namespace edge
+{
+constexpr int Buckets = 1024;
+constexpr std::int16_t Unused = -1;
+enum Relation : std::int16_t
+{
+  Unrelated = 0,
+  Same = 1,
+  Opposite = 2
+};
+
+/// The bucket of an edge's weight, from the agreement |n_a . n_b|.
+inline int Bucket(double agreement)
+{
+  const double weight = std::sqrt(std::max(0.0, 1.0 - agreement));
+  return std::min(Buckets - 1, static_cast<int>(weight * Buckets));
+}
+
+/// The code of the edge from a point of normal a to one of normal b. The
+/// sign of n_b flips exactly with that of n_a: the agreement, and the
+/// relation, do not depend on the signs chosen so far.
+inline std::int16_t Code(const double* a, const double* b)
+{
+  if (IsZero(b))
+  {
+    return Unused;
+  }
+  const double dot = Dot(a, b);
+  const std::int16_t relation = dot > 0.0 ? Same : dot < 0.0 ? Opposite : Unrelated;
+  return static_cast<std::int16_t>(Bucket(std::fabs(dot)) * 4 + relation);
+}
+
+inline int BucketOf(std::int16_t code)
+{
+  return code >> 2;
+}
+
+/// The sign of b given the sign of a.
+inline signed char Propagate(std::int16_t code, signed char sign)
+{
+  const int relation = code & 3;
+  return relation == Same ? sign : relation == Opposite ? static_cast<signed char>(-sign) : 1;
+}
+} // namespace edge
+
 /// The edges of the orientation graph, both directions, as adjacency lists
-/// (in the order of the edges a -> b by a, then by b's rank among a's
-/// nearest: the order the traversal's ties follow). Targets of type Index:
-/// 32 bits where they fit halve the memory the traversal reads.
+/// in the order of the edges a -> b by a, then by b's rank among a's
+/// nearest (the order the traversal's ties follow), each entry with its
+/// edge's code. Built in parallel: the sources are cut into blocks, each
+/// block counts, then writes, its entries at offsets that the blocks
+/// before it leave free. Targets of type Index: 32 bits where they fit
+/// halve the memory the traversal reads.
 template<typename Index>
 struct Graph
 {
-  std::vector<std::int64_t> Start; // per position, its first entry of Targets; one extra
-  std::vector<Index> Targets;
+  struct Entry
+  {
+    Index Target;
+    std::int16_t Code;
+  };
+  std::vector<std::int64_t> Start; // per position, its first entry; one extra
+  std::vector<Entry> Entries;
 
   Graph(const PlaneFits& fits, WorkRunner& runner)
   {
     const std::vector<unsigned char> repeated = FindRepeatedEdges(fits, runner);
-    const int k = fits.GraphNeighbors;
     const std::int64_t n = static_cast<std::int64_t>(fits.Normals.size() / 3);
-    std::vector<std::int64_t> degree(n + 1, 0);
-    auto forEachEdge = [&](auto&& visit)
+    constexpr std::int64_t Blocks = 4;
+    // Per block, per position: the entries the block gives it, then where
+    // the block writes the next one (from the position's first entry).
+    std::vector<std::vector<std::int32_t>> placed(Blocks);
+    auto forEachEdge = [&](std::int64_t block, auto&& visit)
     {
-      for (std::int64_t a = 0; a < n; ++a)
+      const int k = fits.GraphNeighbors;
+      for (std::int64_t a = block * n / Blocks; a < (block + 1) * n / Blocks; ++a)
       {
         for (int e = 0; e < k; ++e)
         {
           const std::int64_t b = fits.Neighbors[a * k + e];
           if (b >= 0 && !repeated[a * k + e])
           {
-            visit(static_cast<Index>(a), static_cast<Index>(b));
-            visit(static_cast<Index>(b), static_cast<Index>(a));
+            visit(a, b);
+            visit(b, a);
           }
         }
       }
     };
-    forEachEdge([&](Index a, Index) { ++degree[a + 1]; });
-    for (std::int64_t a = 0; a < n; ++a)
-    {
-      degree[a + 1] += degree[a];
-    }
-    this->Start = degree;
-    this->Targets.resize(static_cast<std::size_t>(degree[n]));
-    forEachEdge([&](Index a, Index b) { this->Targets[degree[a]++] = b; });
-  }
-};
-
-/// What the traversal needs of an edge a -> b, worked out in parallel
-/// before it: the bucket of its weight sqrt(1 - |n_a . n_b|) (about the
-/// angle between the normals), and how b's sign follows a's (the sign of
-/// n_a . n_b; zero: b keeps its own). The traversal then reads no normal.
-/// Edges to a point without a normal are never followed.
-class EdgeWeights
-{
-public:
-  static constexpr int Buckets = 1024;
-  static constexpr std::int16_t Unused = -1;
-
-  template<typename Index>
-  EdgeWeights(const Graph<Index>& graph, const std::vector<double>& normals, WorkRunner& runner)
-    : Codes(graph.Targets.size())
-  {
-    const std::int64_t n = static_cast<std::int64_t>(graph.Start.size()) - 1;
-    runner.For(n,
-      4096,
+    runner.For(Blocks,
+      1,
       [&](std::int64_t begin, std::int64_t end, EstimationScratch&)
       {
-        for (std::int64_t a = begin; a < end; ++a)
+        for (std::int64_t block = begin; block < end; ++block)
         {
-          for (std::int64_t e = graph.Start[a]; e < graph.Start[a + 1]; ++e)
-          {
-            this->Codes[e] = Code(&normals[3 * a], &normals[3 * std::int64_t{ graph.Targets[e] }]);
-          }
+          placed[block].assign(n, 0);
+          forEachEdge(block, [&](std::int64_t a, std::int64_t) { ++placed[block][a]; });
+        }
+      });
+    this->Start.assign(n + 1, 0);
+    for (std::int64_t a = 0; a < n; ++a)
+    {
+      std::int64_t entries = 0;
+      for (std::vector<std::int32_t>& counts : placed)
+      {
+        const std::int32_t count = counts[a];
+        counts[a] = static_cast<std::int32_t>(entries);
+        entries += count;
+      }
+      this->Start[a + 1] = this->Start[a] + entries;
+    }
+    this->Entries.resize(static_cast<std::size_t>(this->Start[n]));
+    runner.For(Blocks,
+      1,
+      [&](std::int64_t begin, std::int64_t end, EstimationScratch&)
+      {
+        for (std::int64_t block = begin; block < end; ++block)
+        {
+          forEachEdge(block,
+            [&](std::int64_t a, std::int64_t b)
+            {
+              const std::int64_t entry = this->Start[a] + placed[block][a]++;
+              this->Entries[entry] = { static_cast<Index>(b),
+                edge::Code(&fits.Normals[3 * a], &fits.Normals[3 * b]) };
+            });
         }
       });
   }
-
-  /// The bucket of an edge's weight, from the agreement |n_a . n_b|.
-  static int Bucket(double agreement)
-  {
-    const double weight = std::sqrt(std::max(0.0, 1.0 - agreement));
-    return std::min(Buckets - 1, static_cast<int>(weight * Buckets));
-  }
-
-  bool Followed(std::int64_t e) const { return this->Codes[e] != Unused; }
-  int Bucket(std::int64_t e) const { return this->Codes[e] >> 2; }
-  /// The sign of b given the sign of a.
-  signed char Propagate(std::int64_t e, signed char sign) const
-  {
-    const int relation = this->Codes[e] & 3;
-    return relation == Same ? sign : relation == Opposite ? static_cast<signed char>(-sign) : 1;
-  }
-
-private:
-  enum Relation : std::int16_t
-  {
-    Unrelated = 0,
-    Same = 1,
-    Opposite = 2
-  };
-
-  static std::int16_t Code(const double* a, const double* b)
-  {
-    if (IsZero(b))
-    {
-      return Unused;
-    }
-    // n_b's sign flips exactly with n_a's: the agreement, and the relation,
-    // do not depend on the signs chosen so far.
-    const double dot = Dot(a, b);
-    const std::int16_t relation = dot > 0.0 ? Same : dot < 0.0 ? Opposite : Unrelated;
-    return static_cast<std::int16_t>(Bucket(std::fabs(dot)) * 4 + relation);
-  }
-
-  std::vector<std::int16_t> Codes; // per adjacency entry: bucket * 4 + relation, or Unused
 };
 
 /// Points of the tree's frontier with the sign they would get, by their
@@ -693,8 +840,8 @@ public:
   }
 
 private:
-  std::vector<std::make_unsigned_t<Index>> Buckets[EdgeWeights::Buckets];
-  int Lowest = EdgeWeights::Buckets - 1;
+  std::vector<std::make_unsigned_t<Index>> Buckets[edge::Buckets];
+  int Lowest = edge::Buckets - 1;
   std::int64_t Size = 0;
 };
 
@@ -704,7 +851,6 @@ private:
 /// part's points; returns them in the order reached.
 template<typename Index>
 std::vector<std::int64_t> OrientPart(const Graph<Index>& graph,
-  const EdgeWeights& weights,
   std::int64_t seed,
   std::vector<signed char>& signs,
   FrontierBuckets<Index>& frontier,
@@ -715,7 +861,7 @@ std::vector<std::int64_t> OrientPart(const Graph<Index>& graph,
   // then incomplete anyway).
   constexpr std::size_t StopCheckInterval = 4096;
   std::vector<std::int64_t> part;
-  frontier.Push(EdgeWeights::Bucket(1.0), static_cast<Index>(seed), 1);
+  frontier.Push(edge::Bucket(1.0), static_cast<Index>(seed), 1);
   while (!frontier.Empty())
   {
     const auto [to, sign] = frontier.Pop();
@@ -731,10 +877,10 @@ std::vector<std::int64_t> OrientPart(const Graph<Index>& graph,
     part.push_back(to);
     for (std::int64_t e = graph.Start[to]; e < graph.Start[to + 1]; ++e)
     {
-      const Index next = graph.Targets[e];
-      if (signs[next] == 0 && weights.Followed(e))
+      const auto& entry = graph.Entries[e];
+      if (signs[entry.Target] == 0 && entry.Code != edge::Unused)
       {
-        frontier.Push(weights.Bucket(e), next, weights.Propagate(e, sign));
+        frontier.Push(edge::BucketOf(entry.Code), entry.Target, edge::Propagate(entry.Code, sign));
       }
     }
   }
@@ -823,15 +969,13 @@ bool OrientOutward(const PlaneFits& fits,
 {
   const std::int64_t n = ordered.Size();
   const Graph<Index> graph(fits, runner);
-  const EdgeWeights weights(graph, normals, runner);
   std::vector<signed char> signs(n, 0); // 0: not reached yet
   FrontierBuckets<Index> frontier;
   for (std::int64_t p = 0; p < n; ++p)
   {
     if (signs[p] == 0 && !IsZero(&normals[3 * p]))
     {
-      TurnPartOutward(
-        OrientPart(graph, weights, p, signs, frontier, progress), ordered, normals, signs);
+      TurnPartOutward(OrientPart(graph, p, signs, frontier, progress), ordered, normals, signs);
       ++summary.Components;
       if (progress && progress->Stopped())
       {
@@ -879,7 +1023,7 @@ NormalSummary EstimateNormals(const CloudPoints& cloud,
   {
     return summary;
   }
-  const OrderedCloud ordered(cloud, GlobalLattice(boxes, radius));
+  const OrderedCloud ordered(cloud, GlobalLattice(boxes, radius), runner);
   if (progress && !progress->Reach(0.0))
   {
     return summary;
