@@ -69,9 +69,12 @@ struct AnchorTable
     const std::function<bool()>& keepGoing)
   {
     const std::int64_t count = cloud.GetNumberOfPoints();
+    // The grid's order keeps a cell's points together.
+    const auto inGridOrder = [&](std::int64_t j) { return grid.GetSortedId(j); };
     if (!this->Cells.Build(cloud.Coordinates.data(),
           cloud.Normals.data(),
           count,
+          inGridOrder,
           lattice.Origin.data(),
           cellSide,
           eligible,
@@ -81,10 +84,29 @@ struct AnchorTable
     }
     this->EstimateOf.assign(static_cast<std::size_t>(count), -1);
     std::vector<unsigned char> needed(static_cast<std::size_t>(count), 0);
-    if (!this->Cells.MarkAnchorsAround(
-          cloud.Coordinates.data(), cloud.NumberOfOwnPoints, needed, keepGoing))
+    if (count == cloud.NumberOfOwnPoints)
     {
-      return false;
+      this->Cells.MarkEveryAnchor(needed); // no halo: every anchor is an own point
+    }
+    else
+    {
+      std::vector<std::int64_t> own;
+      own.reserve(static_cast<std::size_t>(cloud.NumberOfOwnPoints));
+      for (std::int64_t j = 0; j < count; ++j)
+      {
+        if (cloud.IsOwn(grid.GetSortedId(j)))
+        {
+          own.push_back(grid.GetSortedId(j));
+        }
+      }
+      if (!this->Cells.MarkAnchorsAround(
+            static_cast<std::int64_t>(own.size()),
+            [&](std::int64_t j) { return own[static_cast<std::size_t>(j)]; },
+            needed,
+            keepGoing))
+      {
+        return false;
+      }
     }
     for (std::int64_t j = 0; j < grid.GetNumberOfPoints(); ++j)
     {

@@ -252,10 +252,15 @@ std::size_t AnchorCells::CellHash::operator()(const CellKey& key) const
   return static_cast<std::size_t>(h);
 }
 
-void AnchorCells::Begin(const double origin[3], double cellSide)
+void AnchorCells::Begin(const double origin[3],
+  double cellSide,
+  const double* coordinates,
+  const double* normals)
 {
   std::copy_n(origin, 3, this->Origin);
   this->CellSide = cellSide;
+  this->Coordinates = coordinates;
+  this->Normals = normals;
   this->Anchors.clear();
 }
 
@@ -294,13 +299,10 @@ bool AnchorCells::Precedes(std::int64_t a, std::int64_t b, const CellKey& cell) 
     (std::equal(xa, xa + 3, xb) && std::lexicographical_compare(na, na + 3, nb, nb + 3));
 }
 
-void AnchorCells::Offer(std::int64_t point, const double* coordinates, const double* normals)
+void AnchorCells::Offer(const CellKey& cell, std::int64_t point)
 {
-  this->Coordinates = coordinates;
-  this->Normals = normals;
-  const CellKey key = this->KeyOf(coordinates + 3 * point);
-  const auto [slot, added] = this->Anchors.try_emplace(key, point);
-  if (!added && this->Precedes(point, slot->second, key))
+  const auto [slot, added] = this->Anchors.try_emplace(cell, point);
+  if (!added && this->Precedes(point, slot->second, cell))
   {
     slot->second = point;
   }
@@ -333,21 +335,22 @@ void AnchorCells::AnchorsAround(const double x[3], Around& around) const
   }
 }
 
-bool AnchorCells::MarkAnchorsAround(const double* coordinates,
-  std::int64_t count,
+bool AnchorCells::MarkAnchorsAround(std::int64_t count,
+  const std::function<std::int64_t(std::int64_t)>& pointAt,
   std::vector<unsigned char>& marks,
   const std::function<bool()>& keepGoing) const
 {
   std::unordered_set<CellKey, CellHash> visited;
   Around around;
-  for (std::int64_t point = 0; point < count; ++point)
+  for (std::int64_t j = 0; j < count; ++j)
   {
-    if (point % CheckInterval == 0 && !keepGoing())
+    if (j % CheckInterval == 0 && !keepGoing())
     {
       return false;
     }
-    const double* x = coordinates + 3 * point;
-    if (visited.insert(this->KeyOf(x)).second)
+    const double* x = this->Coordinates + 3 * pointAt(j);
+    const CellKey cell = this->KeyOf(x);
+    if ((!around.Known || !(around.Cell == cell)) && visited.insert(cell).second)
     {
       this->AnchorsAround(x, around);
       for (const std::int64_t anchor : around.Anchors)

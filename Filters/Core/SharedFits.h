@@ -39,7 +39,7 @@ struct SharingRule
 {
   /// The lattice's cell side, in units of the cloud's typical radius of
   /// the automatic scale's first level.
-  double CellFactor = 1.5;
+  double CellFactor = 2.0;
   /// The point's distance from the anchor at most this fraction of the
   /// anchor's radius.
   double OffsetFraction = 0.15;
@@ -112,30 +112,55 @@ public:
     std::vector<std::int64_t> Anchors;
   };
 
-  /// `eligible(point)` tells which points may be anchors (those with a
-  /// normal); lattice origin and cell side are global. `keepGoing()` is
-  /// asked every CheckInterval points; false stops the build (the cells
-  /// are then incomplete) and returns false.
-  template<typename Eligible, typename KeepGoing>
+  /// `pointAt(j)`, j < count, visits the points (any order gives the same
+  /// anchors; one that keeps a cell's points together, as the grid's,
+  /// touches the table once per run of them); `eligible(point)` tells
+  /// which may be anchors (those with a normal); lattice origin and cell
+  /// side are global. `keepGoing()` is asked every CheckInterval points;
+  /// false stops the build (the cells are then incomplete) and returns
+  /// false.
+  template<typename PointAt, typename Eligible, typename KeepGoing>
   bool Build(const double* coordinates,
     const double* normals,
     std::int64_t count,
+    const PointAt& pointAt,
     const double origin[3],
     double cellSide,
     const Eligible& eligible,
     const KeepGoing& keepGoing)
   {
-    this->Begin(origin, cellSide);
-    for (std::int64_t point = 0; point < count; ++point)
+    this->Begin(origin, cellSide, coordinates, normals);
+    bool inRun = false;
+    CellKey runCell{ 0, 0, 0 };
+    std::int64_t runBest = -1;
+    for (std::int64_t j = 0; j < count; ++j)
     {
-      if (point % CheckInterval == 0 && !keepGoing())
+      if (j % CheckInterval == 0 && !keepGoing())
       {
         return false;
       }
-      if (eligible(point))
+      const std::int64_t point = pointAt(j);
+      if (!eligible(point))
       {
-        this->Offer(point, coordinates, normals);
+        continue;
       }
+      const CellKey cell = this->KeyOf(coordinates + 3 * point);
+      if (inRun && cell == runCell)
+      {
+        runBest = this->Precedes(point, runBest, cell) ? point : runBest;
+        continue;
+      }
+      if (inRun)
+      {
+        this->Offer(runCell, runBest);
+      }
+      inRun = true;
+      runCell = cell;
+      runBest = point;
+    }
+    if (inRun)
+    {
+      this->Offer(runCell, runBest);
     }
     return true;
   }
@@ -149,12 +174,21 @@ public:
   void AnchorsAround(const double x[3], Around& around) const;
 
   /// Sets marks[anchor] to 1 for the anchors around (AnchorsAround) any of
-  /// the first `count` points; false when `keepGoing()` (asked every
-  /// CheckInterval points) said to stop.
-  bool MarkAnchorsAround(const double* coordinates,
-    std::int64_t count,
+  /// the points `pointAt(j)`, j < count; false when `keepGoing()` (asked
+  /// every CheckInterval points) said to stop.
+  bool MarkAnchorsAround(std::int64_t count,
+    const std::function<std::int64_t(std::int64_t)>& pointAt,
     std::vector<unsigned char>& marks,
     const std::function<bool()>& keepGoing) const;
+
+  /// Sets marks[anchor] to 1 for every anchor.
+  void MarkEveryAnchor(std::vector<unsigned char>& marks) const
+  {
+    for (const auto& cell : this->Anchors)
+    {
+      marks[static_cast<std::size_t>(cell.second)] = 1;
+    }
+  }
 
   /// Whether `point` is the anchor of its cell.
   bool IsAnchor(std::int64_t point, const double* coordinates) const;
@@ -167,8 +201,12 @@ private:
     std::size_t operator()(const CellKey& key) const;
   };
 
-  void Begin(const double origin[3], double cellSide);
-  void Offer(std::int64_t point, const double* coordinates, const double* normals);
+  void Begin(const double origin[3],
+    double cellSide,
+    const double* coordinates,
+    const double* normals);
+  /// `point` competes for the anchor of `cell`.
+  void Offer(const CellKey& cell, std::int64_t point);
   CellKey KeyOf(const double x[3]) const;
   /// Whether point a comes before point b as the anchor of their cell.
   bool Precedes(std::int64_t a, std::int64_t b, const CellKey& cell) const;
