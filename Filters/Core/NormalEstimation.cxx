@@ -459,10 +459,10 @@ void Gather(const OrderedCloud& ordered,
 }
 
 /// Gathers the points within a radius of x that holds at least `wanted`
-/// of them, starting from the guess and growing it; false after a few
-/// tries, which a point far from the others needs. Whatever radius finds
-/// them, the k-th distance among them is the same: the guess only changes
-/// the cost.
+/// of them, starting from the guess and growing it (`radius` receives the
+/// one that found them); false after a few tries, which a point far from
+/// the others needs. Whatever radius finds them, the k-th distance among
+/// them is the same: the guess only changes the cost.
 bool GatherAtLeast(const OrderedCloud& ordered,
   const double x[3],
   std::size_t wanted,
@@ -615,11 +615,11 @@ void FitPoint(const OrderedCloud& ordered,
   double* normal = &fits.Normals[3 * position];
   // k + 1: the point itself is among those found.
   const std::size_t wanted = static_cast<std::size_t>(settings.NumberOfNeighbors) + 1;
-  double searched = 0.0;
+  double gathered = 0.0; // the radius the candidates were gathered within
   const bool found = static_cast<std::size_t>(ordered.Size()) > wanted &&
-    GatherAtLeast(ordered, x, wanted, search, searched);
+    GatherAtLeast(ordered, x, wanted, search, gathered);
   const double squared = found
-    ? KthSquared(search, searched, wanted)
+    ? KthSquared(search, gathered, wanted)
     : ordered.SquaredDistanceToKth(x, static_cast<int>(wanted), search.Selected);
   const double radius = std::nextafter(std::sqrt(squared), HUGE_VAL);
   if (!(radius > 0.0) || !std::isfinite(radius))
@@ -1233,9 +1233,9 @@ bool QuickTypicalRadius(const CloudPoints& cloud,
   // sampling box's diagonal): for a surface, the sample points' k nearest
   // lie within 0.9 cells.
   double diagonal = 0.0;
-  for (int k3 = 0; k3 < 3; ++k3)
+  for (int axis = 0; axis < 3; ++axis)
   {
-    diagonal += (upper[k3] - lower[k3]) * (upper[k3] - lower[k3]);
+    diagonal += (upper[axis] - lower[axis]) * (upper[axis] - lower[axis]);
   }
   const double cellSize =
     2.0 * std::sqrt(diagonal) * std::sqrt(k / (3.14159265358979323846 * count));
