@@ -918,43 +918,6 @@ const char* UnestimatedReasonName(UnestimatedReason reason)
   }
 }
 
-StageProgress::StageProgress(ProgressMonitor* monitor,
-  double first,
-  double share,
-  std::int64_t items)
-  : Monitor(monitor)
-  , First(first)
-  , Share(share)
-  , Items(std::max<std::int64_t>(items, 1))
-{
-}
-
-bool StageProgress::Advance(std::int64_t done)
-{
-  if (!this->Monitor || done <= 0)
-  {
-    return !this->Stopped();
-  }
-  const std::int64_t reached = this->Done.fetch_add(done, std::memory_order_relaxed) + done;
-  return this->Reach(static_cast<double>(reached) / static_cast<double>(this->Items));
-}
-
-bool StageProgress::Reach(double fraction)
-{
-  if (this->Monitor &&
-    !this->Monitor->Continue(this->First + this->Share * std::min(std::max(fraction, 0.0), 1.0)))
-  {
-    this->Stop.store(true, std::memory_order_relaxed);
-  }
-  return !this->Stopped();
-}
-
-void SerialRunner::For(std::int64_t count, std::int64_t, const Work& work)
-{
-  EstimationScratch scratch;
-  work(0, count, scratch);
-}
-
 EstimationSummary EstimateCloud(CloudPoints cloud,
   const EstimationSettings& settings,
   const Collectives& processes,

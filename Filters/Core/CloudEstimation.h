@@ -16,13 +16,13 @@
 #ifndef CloudEstimation_h
 #define CloudEstimation_h
 
-#include "AutomaticScale.h"
 #include "CloudStatistics.h"
 #include "DynamicAdjustment.h"
 #include "NormalEstimation.h"
 #include "OrientedCircleFit.h"
 #include "PointGrid.h"
 #include "PrincipalCurvatureCore.h"
+#include "WorkRunner.h"
 
 #include <array>
 #include <atomic>
@@ -181,72 +181,6 @@ struct EstimationSummary
   std::int64_t NumberOfSharedPoints = 0;
   /// The caller asked to stop: the buffers are incomplete.
   bool Aborted = false;
-};
-
-/// A thread's reusable buffers for the estimation's work items.
-struct EstimationScratch
-{
-  PointCurvatureEstimator Estimator;
-  OrientedCircleEstimator OrientedEstimator;
-  AutomaticScaleScratch Automatic;
-  DynamicAdjustment Adjustment;
-  std::vector<double> Distances;
-  NeighborOffsets Neighbors;
-  std::vector<std::pair<double, std::int64_t>> Ranked;
-};
-
-/// Told how far the work is (0 to 1); returns false to stop. Called from
-/// any of the runner's threads, possibly from several at once: an
-/// implementation must be thread-safe (the VTK glue stores the fraction for
-/// the thread ParaView listens to, and reads its abort flag there).
-class ProgressMonitor
-{
-public:
-  virtual ~ProgressMonitor() = default;
-  virtual bool Continue(double fraction) = 0;
-};
-
-/// One stage of the work, the part [first, first + share) of the whole,
-/// counted in finished items from any thread; remembers a stop request.
-class StageProgress
-{
-public:
-  StageProgress(ProgressMonitor* monitor, double first, double share, std::int64_t items);
-  /// `done` more items are finished; false once the monitor asked to stop.
-  bool Advance(std::int64_t done);
-  /// The part of the stage reached so far, `fraction` of it: for stages
-  /// that are not counted in items.
-  bool Reach(double fraction);
-  bool Stopped() const { return this->Stop.load(std::memory_order_relaxed); }
-
-private:
-  ProgressMonitor* Monitor;
-  double First, Share;
-  std::int64_t Items;
-  std::atomic<std::int64_t> Done{ 0 };
-  std::atomic<bool> Stop{ false };
-};
-
-/// Runs the work items [0, count), possibly on several threads.
-class WorkRunner
-{
-public:
-  /// Estimates the items [begin, end) with a scratch no other thread uses
-  /// meanwhile.
-  using Work =
-    std::function<void(std::int64_t begin, std::int64_t end, EstimationScratch& scratch)>;
-
-  virtual ~WorkRunner() = default;
-  /// Calls `work` on ranges of at least `grain` items (except the last)
-  /// that together cover [0, count) once.
-  virtual void For(std::int64_t count, std::int64_t grain, const Work& work) = 0;
-};
-
-/// All items in the calling thread.
-class SerialRunner : public WorkRunner
-{
-public:
-  void For(std::int64_t count, std::int64_t grain, const Work& work) override;
 };
 
 /// The curvatures of every input point of `cloud` (consumed: it is scaled

@@ -1,6 +1,6 @@
 #include "NormalEstimation.h"
 
-#include "CloudEstimation.h"
+#include "WorkRunner.h"
 #include "PointGrid.h"
 
 #include <Eigen/Dense>
