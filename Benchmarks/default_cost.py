@@ -23,7 +23,7 @@ import statistics
 import numpy
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
-from dense_patch import MAJOR, MINOR, cloud_of, torus_points
+from dense_patch import MAJOR, MINOR, cloud_of, torus_points, uniform_torus_angles
 from dense_patch import run as timed_run
 
 SETTINGS = ("paper: New01, 375", "default")
@@ -33,14 +33,7 @@ def torus(points, noise, seed=11):
     """The cloud with exact normals and curvatures (outward normals: the
     filter's sign, k = 1 around the tube)."""
     generator = numpy.random.default_rng(seed)
-    u = numpy.empty(0)
-    v = numpy.empty(0)
-    while len(u) < points:  # uniform in area: v by rejection on the ring's length
-        uu = generator.uniform(0.0, 2.0 * math.pi, points)
-        vv = generator.uniform(0.0, 2.0 * math.pi, points)
-        keep = generator.uniform(0.0, MAJOR + MINOR, points) < MAJOR + MINOR * numpy.cos(vv)
-        u, v = numpy.concatenate([u, uu[keep]]), numpy.concatenate([v, vv[keep]])
-    xyz, normals, kmin, kmax = torus_points(u[:points], v[:points])
+    xyz, normals, kmin, kmax = torus_points(*uniform_torus_angles(generator, points))
     spacing = math.sqrt(4.0 * math.pi ** 2 * MAJOR * MINOR / points)
     xyz += generator.normal(0.0, noise * spacing, xyz.shape)
     return cloud_of(xyz, normals), kmin, kmax

@@ -28,6 +28,19 @@ from principal_curvatures import vtkPrincipalCurvatureEstimation
 MAJOR, MINOR = 3.0, 1.0
 
 
+def uniform_torus_angles(generator, count):
+    """The angles u, v of `count` points uniform in the torus' area: v by
+    rejection on the ring's length."""
+    u = numpy.empty(0)
+    v = numpy.empty(0)
+    while len(u) < count:
+        uu = generator.uniform(0.0, 2.0 * numpy.pi, count)
+        vv = generator.uniform(0.0, 2.0 * numpy.pi, count)
+        keep = generator.uniform(0.0, MAJOR + MINOR, count) < MAJOR + MINOR * numpy.cos(vv)
+        u, v = numpy.concatenate([u, uu[keep]]), numpy.concatenate([v, vv[keep]])
+    return u[:count], v[:count]
+
+
 def torus_points(u, v):
     ring = MAJOR + MINOR * numpy.cos(v)
     points = numpy.column_stack([ring * numpy.cos(u), ring * numpy.sin(u), MINOR * numpy.sin(v)])

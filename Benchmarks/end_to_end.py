@@ -25,7 +25,7 @@ import time
 
 import numpy
 
-MAJOR, MINOR = 3.0, 1.0
+from dense_patch import MAJOR, MINOR, torus_points, uniform_torus_angles
 
 
 def make(points, path, noise=0.1, seed=5):
@@ -41,16 +41,7 @@ def make(points, path, noise=0.1, seed=5):
         written = 0
         while written < points:
             block = min(1000000, points - written)
-            u = numpy.empty(0)
-            v = numpy.empty(0)
-            while len(u) < block:  # uniform in area: v by rejection on the ring's length
-                uu = generator.uniform(0.0, 2.0 * math.pi, block)
-                vv = generator.uniform(0.0, 2.0 * math.pi, block)
-                keep = generator.uniform(0.0, MAJOR + MINOR, block) < MAJOR + MINOR * numpy.cos(vv)
-                u, v = numpy.concatenate([u, uu[keep]]), numpy.concatenate([v, vv[keep]])
-            u, v = u[:block], v[:block]
-            ring = MAJOR + MINOR * numpy.cos(v)
-            xyz = numpy.column_stack([ring * numpy.cos(u), ring * numpy.sin(u), MINOR * numpy.sin(v)])
+            xyz = torus_points(*uniform_torus_angles(generator, block))[0]
             xyz += generator.normal(0.0, noise * spacing, xyz.shape)
             handle.write(numpy.ascontiguousarray(xyz, dtype="<f8").tobytes())
             written += block

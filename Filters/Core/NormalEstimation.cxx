@@ -192,35 +192,10 @@ void OrderedCloud::SortByCell(WorkRunner& runner)
       }
     });
   const std::int64_t cells = this->Dimensions[0] * this->Dimensions[1] * this->Dimensions[2];
-  this->CellStart.assign(cells + 1, 0);
-  for (std::int64_t i = 0; i < n; ++i)
-  {
-    ++this->CellStart[cellOf[i] + 1];
-  }
-  for (std::int64_t c = 0; c < cells; ++c)
-  {
-    this->CellStart[c + 1] += this->CellStart[c];
-  }
-  std::vector<std::int64_t> next(this->CellStart.begin(), this->CellStart.end() - 1);
-  this->Ids.resize(n);
-  for (std::int64_t i = 0; i < n; ++i)
-  {
-    this->Ids[next[cellOf[i]]++] = i;
-  }
-  // Within a cell by coordinates, as PointGrid (a total order: any sort
-  // gives the same).
+  BucketByCell(cellOf, cells, this->CellStart, this->Ids);
+  // Within a cell by coordinates, as PointGrid.
   auto before = [coordinates](std::int64_t a, std::int64_t b)
-  {
-    const double* p = coordinates + 3 * a;
-    const double* q = coordinates + 3 * b;
-    if (p[0] != q[0])
-      return p[0] < q[0];
-    if (p[1] != q[1])
-      return p[1] < q[1];
-    if (p[2] != q[2])
-      return p[2] < q[2];
-    return a < b;
-  };
+  { return PrecedesInCell(coordinates, a, b); };
   runner.For(cells,
     65536,
     [&](std::int64_t begin, std::int64_t end, EstimationScratch&)

@@ -55,6 +55,29 @@ GridLattice GridLattice::Make(const double lower[3],
   return lattice;
 }
 
+void BucketByCell(const std::vector<std::int64_t>& cellOf,
+  std::int64_t cells,
+  std::vector<std::int64_t>& starts,
+  std::vector<std::int64_t>& ids)
+{
+  const std::int64_t count = static_cast<std::int64_t>(cellOf.size());
+  starts.assign(static_cast<std::size_t>(cells + 1), 0);
+  for (std::int64_t i = 0; i < count; ++i)
+  {
+    ++starts[cellOf[i] + 1];
+  }
+  for (std::int64_t c = 0; c < cells; ++c)
+  {
+    starts[c + 1] += starts[c];
+  }
+  std::vector<std::int64_t> next(starts.begin(), starts.end() - 1);
+  ids.resize(static_cast<std::size_t>(count));
+  for (std::int64_t i = 0; i < count; ++i)
+  {
+    ids[next[cellOf[i]]++] = i;
+  }
+}
+
 void PointGrid::Build(const double* coordinates, std::int64_t count, const GridLattice& lattice)
 {
   this->Lattice = lattice;
@@ -99,38 +122,17 @@ void PointGrid::Build(const double* coordinates, std::int64_t count, const GridL
   const std::int64_t numberOfCells =
     this->Dimensions[0] * this->Dimensions[1] * this->Dimensions[2];
   std::vector<std::int64_t> cellOf(count);
-  this->CellStart.assign(numberOfCells + 1, 0);
   for (std::int64_t i = 0; i < count; ++i)
   {
     const double* x = coordinates + 3 * i;
     cellOf[i] = (this->CellIndex(x[2], 2) * this->Dimensions[1] + this->CellIndex(x[1], 1)) *
         this->Dimensions[0] +
       this->CellIndex(x[0], 0);
-    ++this->CellStart[cellOf[i] + 1];
   }
-  for (std::int64_t c = 0; c < numberOfCells; ++c)
-  {
-    this->CellStart[c + 1] += this->CellStart[c];
-  }
-  std::vector<std::int64_t> next(this->CellStart.begin(), this->CellStart.end() - 1);
-  this->Ids.resize(count);
-  for (std::int64_t i = 0; i < count; ++i)
-  {
-    this->Ids[next[cellOf[i]]++] = i;
-  }
+  BucketByCell(cellOf, numberOfCells, this->CellStart, this->Ids);
   // Within a cell, by coordinates: independent of the input's order.
   auto before = [coordinates](std::int64_t a, std::int64_t b)
-  {
-    const double* p = coordinates + 3 * a;
-    const double* q = coordinates + 3 * b;
-    if (p[0] != q[0])
-      return p[0] < q[0];
-    if (p[1] != q[1])
-      return p[1] < q[1];
-    if (p[2] != q[2])
-      return p[2] < q[2];
-    return a < b; // identical points: any fixed order
-  };
+  { return PrecedesInCell(coordinates, a, b); };
   for (std::int64_t c = 0; c < numberOfCells; ++c)
   {
     if (this->CellStart[c + 1] - this->CellStart[c] > 1)

@@ -96,6 +96,32 @@ struct ShellPoints
   std::size_t Count = 0;
 };
 
+/// Points in cell order: `starts` (cells + 1) holds where each cell's
+/// points begin in `ids`, and `ids` the point indices, cell by cell, in
+/// increasing index within a cell (a counting sort of cellOf, which holds
+/// each point's cell in [0, cells)).
+void BucketByCell(const std::vector<std::int64_t>& cellOf,
+  std::int64_t cells,
+  std::vector<std::int64_t>& starts,
+  std::vector<std::int64_t>& ids);
+
+/// The order of two points within a cell: by coordinates (x, then y, then
+/// z), identical points by index. A total order that does not depend on
+/// the input's order, so that any sort of a cell gives the same.
+inline bool PrecedesInCell(const double* coordinates, std::int64_t a, std::int64_t b)
+{
+  const double* p = coordinates + 3 * a;
+  const double* q = coordinates + 3 * b;
+  for (int k = 0; k < 3; ++k)
+  {
+    if (p[k] != q[k])
+    {
+      return p[k] < q[k];
+    }
+  }
+  return a < b;
+}
+
 class PointGrid
 {
 public:
