@@ -17,6 +17,7 @@
 // instruction counts, run it under valgrind --tool=callgrind with --runs 1.
 #include "AnalyticSurfaces.h"
 #include "CloudEstimation.h"
+#include "ThreadRunner.h"
 #include "NormalEstimation.h"
 
 #include <time.h>
@@ -36,39 +37,7 @@ namespace
 {
 using namespace pcurv;
 
-/// Ranges of `grain` items handed out to the threads in turn, each with its
-/// own scratch (as the C++ tests' runner).
-class ThreadRunner : public WorkRunner
-{
-public:
-  explicit ThreadRunner(int threads)
-    : Threads(threads)
-  {
-  }
-  void For(std::int64_t count, std::int64_t grain, const Work& work) override
-  {
-    std::vector<std::thread> pool;
-    for (int t = 0; t < this->Threads; ++t)
-    {
-      pool.emplace_back(
-        [&, t]()
-        {
-          EstimationScratch scratch;
-          for (std::int64_t begin = t * grain; begin < count; begin += this->Threads * grain)
-          {
-            work(begin, std::min(count, begin + grain), scratch);
-          }
-        });
-    }
-    for (std::thread& thread : pool)
-    {
-      thread.join();
-    }
-  }
-
-private:
-  int Threads;
-};
+using testing::ThreadRunner;
 
 struct Options
 {

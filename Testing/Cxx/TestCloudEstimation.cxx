@@ -3,6 +3,7 @@
 // unit, the summary, and the stop request.
 #include "AnalyticSurfaces.h"
 #include "CloudEstimation.h"
+#include "ThreadRunner.h"
 #include "TestChecks.h"
 
 #include <algorithm>
@@ -93,39 +94,7 @@ CloudPoints MakeCloud(const std::vector<testing::SurfaceSample>& samples, double
   return cloud;
 }
 
-/// Ranges of `grain` items handed out to `threads` threads in turn, each
-/// with its own scratch.
-class ThreadRunner : public WorkRunner
-{
-public:
-  explicit ThreadRunner(int threads)
-    : Threads(threads)
-  {
-  }
-  void For(std::int64_t count, std::int64_t grain, const Work& work) override
-  {
-    std::vector<std::thread> pool;
-    for (int t = 0; t < this->Threads; ++t)
-    {
-      pool.emplace_back(
-        [&, t]()
-        {
-          EstimationScratch scratch;
-          for (std::int64_t begin = t * grain; begin < count; begin += this->Threads * grain)
-          {
-            work(begin, std::min(count, begin + grain), scratch);
-          }
-        });
-    }
-    for (std::thread& thread : pool)
-    {
-      thread.join();
-    }
-  }
-
-private:
-  int Threads;
-};
+using testing::ThreadRunner;
 
 /// Stops at the first report.
 class StopAtOnce : public ProgressMonitor
