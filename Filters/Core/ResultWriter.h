@@ -1,0 +1,85 @@
+/**
+ * @file ResultWriter.h
+ * @brief Where an estimation's per-point results go: the working length
+ * unit and the way back to the input's, and the writer of each point's
+ * results into the caller's buffers. No VTK.
+ */
+#ifndef ResultWriter_h
+#define ResultWriter_h
+
+#include "CloudEstimation.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <limits>
+
+namespace pcurv
+{
+
+/// The filter's working length unit (lengths multiplied by Scale, a power
+/// of two) and the way back to the input's: the only place lengths and
+/// curvatures change unit.
+struct WorkingUnit
+{
+  double Scale = 1.0;
+
+  /// A length the user gave, in the working unit (finite: a huge radius
+  /// stays the largest double).
+  double FromInput(double length) const
+  {
+    return std::min(length * this->Scale, std::numeric_limits<double>::max());
+  }
+  double ToInputLength(double length) const { return length / this->Scale; }
+};
+
+/// Writes one point's results into the caller's buffers (each point by
+/// exactly one thread), in the working unit until ToInputUnit.
+class ResultWriter
+{
+public:
+  /// `reasons`: one per input point, why it has no estimate.
+  ResultWriter(const CurvatureBuffers& out, std::uint8_t* reasons, int minimumPointsPerDirection)
+    : Out(out)
+    , Reasons(reasons)
+    , MinimumPointsPerDirection(minimumPointsPerDirection)
+  {
+  }
+
+  /// `target`: the adjustment's target count (0 where it has none).
+  void Store(std::int64_t i,
+    const PointCurvature& r,
+    double s,
+    double p,
+    int target = 0,
+    double standardError = std::numeric_limits<double>::quiet_NaN()) const;
+
+  void StoreUnestimated(std::int64_t i, UnestimatedReason reason) const;
+
+  /// Asks for the cache lines Store(i, ...) will write.
+  void Prefetch(std::int64_t i) const;
+
+  /// Back from the working unit to the input's: curvatures scale like
+  /// 1 / length.
+  void ToInputUnit(std::int64_t numberOfPoints, const WorkingUnit& unit) const;
+
+  /// Point `to` gets every result of point `from` (an exact repeat of it).
+  void Copy(std::int64_t from, std::int64_t to) const;
+
+  /// The curvedness from the curvatures in the input's unit.
+  void WriteCurvedness(std::int64_t numberOfPoints) const;
+
+  /// The mean curvature clipped to [-clip, clip] (NaN stays NaN).
+  void WriteClippedMean(std::int64_t numberOfPoints, double clip) const;
+
+  /// The points without an estimate, by reason (UnestimatedReason).
+  UnestimatedCounts CountUnestimated(std::int64_t numberOfPoints) const;
+
+private:
+  CurvatureBuffers Out;
+  std::uint8_t* Reasons;
+  int MinimumPointsPerDirection;
+};
+
+} // namespace pcurv
+
+#endif
