@@ -34,7 +34,8 @@ export ASAN_OPTIONS="detect_leaks=0:abort_on_error=1:halt_on_error=1:detect_stac
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 cd build-asan
 # A test that reports anything aborts and fails; the timeout covers the
-# slowdown of the sanitizers on a busy 2-core machine.
-nice ctest --output-on-failure --timeout 3600 \
+# slowdown of the sanitizers on a busy 2-core machine. Two tests at a time:
+# most are single-threaded, and the sanitized runs are most of CI's time.
+nice ctest --output-on-failure --timeout 3600 -j 2 \
   -R "${PCURV_SANITIZE_TESTS:-^((CurvatureCore|CloudEstimation|PrincipalCurvatureEstimation|DynamicAdjustment|BadInput(Configuration|Points|Scale))(_STDThread)?|BadInputExtreme_.*|LASReader|PLYReader|FuzzReaderSeeds)$}"
 echo "sanitizers: build $((built - start)) s, tests $(($(date +%s) - built)) s"
