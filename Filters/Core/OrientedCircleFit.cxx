@@ -147,9 +147,7 @@ TangentFrame FittedFrame(const TangentFrame& frame,
   double noiseVariance)
 {
   const double tilt = tiltU * tiltU + tiltV * tiltV;
-  const double displacement = noiseVariance * (k1 * k1 + k2 * k2);
-  const double share =
-    tilt > 0.0 ? std::max(0.0, 1.0 - DisplacementTiltAllowance * displacement / tilt) : 0.0;
+  const double share = TiltShare(tilt, noiseVariance * (k1 * k1 + k2 * k2));
   if (!(share > 0.0))
   {
     return frame;

@@ -38,6 +38,7 @@
 #include "PrincipalCurvatureCore.h"
 #include "SimdKernels.h"
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 
@@ -48,6 +49,17 @@ namespace pcurv
 /// the surface explains the fitted tilt's square must exceed before the
 /// directions are turned by it (the fitted frame's share of the tilt).
 constexpr double DisplacementTiltAllowance = 8.0;
+
+/// The share of a fitted tilt (squared, `tiltSquared`) that turns the
+/// directions' plane: what the query point's displacement along the surface
+/// (its squared tilt on average, `displacement`) does not explain
+/// DisplacementTiltAllowance times over; 0 for no tilt.
+inline double TiltShare(double tiltSquared, double displacement)
+{
+  return tiltSquared > 0.0
+    ? std::max(0.0, 1.0 - DisplacementTiltAllowance * displacement / tiltSquared)
+    : 0.0;
+}
 
 /// How much the reported standard error exceeds the root sum of squares of
 /// its parts: calibrated on the shared accuracy suite (the parts are

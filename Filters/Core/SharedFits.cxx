@@ -3,6 +3,7 @@
 #include <Eigen/Dense>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -63,8 +64,9 @@ SineFit SineOfJet(const SurfaceJet& jet,
   Eigen::Matrix2d first;
   first << xu.dot(xu), xu.dot(xv), xv.dot(xu), xv.dot(xv);
   Eigen::Matrix2d tangents; // columns: e1, e2 as (du, dv)
-  tangents.col(0) = first.ldlt().solve(Eigen::Vector2d(e1.dot(xu), e1.dot(xv)));
-  tangents.col(1) = first.ldlt().solve(Eigen::Vector2d(e2.dot(xu), e2.dot(xv)));
+  const Eigen::LDLT<Eigen::Matrix2d> metricTensor(first);
+  tangents.col(0) = metricTensor.solve(Eigen::Vector2d(e1.dot(xu), e1.dot(xv)));
+  tangents.col(1) = metricTensor.solve(Eigen::Vector2d(e2.dot(xu), e2.dot(xv)));
   Eigen::Matrix2d second;
   second << jet.Fuu, jet.Fuv, jet.Fuv, jet.Fvv;
   const Eigen::Matrix2d form = tangents.transpose() * (second / metric) * tangents;
@@ -90,9 +92,7 @@ Vector3d DirectionsNormal(const Vector3d& own,
   const double tilt = tangential.squaredNorm() / (cosine * cosine);
   const double amplitude = std::hypot(sine.CosineAmplitude, sine.SineAmplitude);
   const double k1 = sine.Offset + amplitude, k2 = sine.Offset - amplitude;
-  const double displacement = noiseVariance * (k1 * k1 + k2 * k2);
-  const double share =
-    tilt > 0.0 ? std::max(0.0, 1.0 - DisplacementTiltAllowance * displacement / tilt) : 0.0;
+  const double share = TiltShare(tilt, noiseVariance * (k1 * k1 + k2 * k2));
   const Vector3d turned = ((1.0 - share) * own + share * fitted).normalized();
   return turned.allFinite() ? turned : own;
 }
@@ -182,7 +182,11 @@ SharedEstimate EstimateFromAnchors(const std::vector<AnchorEstimate>& anchors,
   Eigen::Matrix3d shape = Eigen::Matrix3d::Zero();
   Vector3d fitted = Vector3d::Zero(), directionsNormal = Vector3d::Zero();
   int validDirections = 0;
-  std::vector<std::pair<double, Eigen::Matrix3d>> shapes;
+  // At most the 27 cells' anchors (AnchorCells::AnchorsAround): no
+  // allocation per point.
+  constexpr std::size_t MostAnchors = 27;
+  std::array<std::pair<double, Eigen::Matrix3d>, MostAnchors> shapes;
+  std::size_t used = 0;
   for (const AnchorEstimate& anchor : anchors)
   {
     const PointCurvature& k = anchor.Fit->Curvature;
@@ -195,7 +199,8 @@ SharedEstimate EstimateFromAnchors(const std::vector<AnchorEstimate>& anchors,
     {
       continue;
     }
-    const SurfaceAtPoint at = EvaluateAt(anchor, point, own, rule);
+    const SurfaceAtPoint at =
+      used < MostAnchors ? EvaluateAt(anchor, point, own, rule) : SurfaceAtPoint{};
     if (!at.Valid)
     {
       continue;
@@ -203,7 +208,7 @@ SharedEstimate EstimateFromAnchors(const std::vector<AnchorEstimate>& anchors,
     const double w = closeness * closeness;
     weights += w;
     shape += w * at.Shape;
-    shapes.emplace_back(w, at.Shape);
+    shapes[used++] = { w, at.Shape };
     fitted += w * at.Normal;
     directionsNormal += w * at.DirectionsNormal;
     errors += w * anchor.Error * anchor.Error;
@@ -220,8 +225,9 @@ SharedEstimate EstimateFromAnchors(const std::vector<AnchorEstimate>& anchors,
   {
     return estimate;
   }
+  const Eigen::Matrix3d mean = shape / weights;
   PointCurvature& out = estimate.Curvature;
-  out = CurvaturesOfShape(shape / weights, fitted.normalized(), directionsNormal.normalized());
+  out = CurvaturesOfShape(mean, fitted.normalized(), directionsNormal.normalized());
   if (!out.Valid)
   {
     return estimate;
@@ -231,9 +237,9 @@ SharedEstimate EstimateFromAnchors(const std::vector<AnchorEstimate>& anchors,
   // curvatures' differences): the extrapolations' error, which no anchor's
   // own error covers.
   double spread = 0.0;
-  for (std::size_t i = 0; i < shapes.size(); ++i)
+  for (std::size_t i = 0; i < used; ++i)
   {
-    spread += shapes[i].first * (shapes[i].second - shape / weights).squaredNorm();
+    spread += shapes[i].first * (shapes[i].second - mean).squaredNorm();
   }
   const double shift = std::sqrt(spread / weights);
   out.NeighborCount = static_cast<int>(std::lround(neighbors / weights));
@@ -360,12 +366,6 @@ bool AnchorCells::MarkAnchorsAround(std::int64_t count,
     }
   }
   return true;
-}
-
-bool AnchorCells::IsAnchor(std::int64_t point, const double* coordinates) const
-{
-  const auto found = this->Anchors.find(this->KeyOf(coordinates + 3 * point));
-  return found != this->Anchors.end() && found->second == point;
 }
 
 } // namespace pcurv

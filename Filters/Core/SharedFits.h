@@ -190,9 +190,6 @@ public:
     }
   }
 
-  /// Whether `point` is the anchor of its cell.
-  bool IsAnchor(std::int64_t point, const double* coordinates) const;
-
   double GetCellSide() const { return this->CellSide; }
 
 private:
