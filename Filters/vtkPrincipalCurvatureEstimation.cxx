@@ -72,46 +72,80 @@ vtkSmartPointer<ArrayT> NewArray(const char* name, int components, vtkIdType tup
   return array;
 }
 
-/// The output arrays, and the core's view of them (the core writes double).
+/// A float (`single`) or double array, and the core's buffer on it.
+vtkSmartPointer<vtkDataArray> NewRealArray(const char* name,
+  int components,
+  vtkIdType tuples,
+  bool single,
+  pcurv::RealBuffer& buffer)
+{
+  if (single)
+  {
+    auto array = NewArray<vtkFloatArray>(name, components, tuples);
+    buffer = pcurv::RealBuffer(array->GetPointer(0));
+    return array;
+  }
+  auto array = NewArray<vtkDoubleArray>(name, components, tuples);
+  buffer = pcurv::RealBuffer(array->GetPointer(0));
+  return array;
+}
+
+/// The output arrays, and the core's view of them: the real ones float
+/// with `single` (the core rounds each value once as it writes it: no
+/// double copy of the output is ever held), double otherwise.
 struct CurvatureArrays
 {
   /// Each array, and whether it is a diagnostic one.
   std::vector<std::pair<vtkSmartPointer<vtkDataArray>, bool>> InOrder;
   pcurv::CurvatureBuffers Buffers;
+  bool Single = false;
 
-  CurvatureArrays(vtkIdType n, bool adjusted, bool standardError, bool display)
+  CurvatureArrays(vtkIdType n, bool adjusted, bool standardError, bool display, bool single)
+    : Single(single)
   {
     pcurv::CurvatureBuffers& b = this->Buffers;
-    b.Minimum = this->Add<vtkDoubleArray>("Minimum_Curvature", 1, n);
-    b.Maximum = this->Add<vtkDoubleArray>("Maximum_Curvature", 1, n);
-    b.Mean = this->Add<vtkDoubleArray>("Mean_Curvature", 1, n);
-    b.Gauss = this->Add<vtkDoubleArray>("Gauss_Curvature", 1, n);
-    b.MinimumDirection = this->Add<vtkDoubleArray>("Minimum_Curvature_Direction", 3, n);
-    b.MaximumDirection = this->Add<vtkDoubleArray>("Maximum_Curvature_Direction", 3, n);
+    b.Minimum = this->AddReal("Minimum_Curvature", 1, n);
+    b.Maximum = this->AddReal("Maximum_Curvature", 1, n);
+    b.Mean = this->AddReal("Mean_Curvature", 1, n);
+    b.Gauss = this->AddReal("Gauss_Curvature", 1, n);
+    b.MinimumDirection = this->AddReal("Minimum_Curvature_Direction", 3, n);
+    b.MaximumDirection = this->AddReal("Maximum_Curvature_Direction", 3, n);
     b.Valid = this->Add<vtkUnsignedCharArray>("Curvature_Valid", 1, n);
     b.NeighborCount = this->Add<vtkIntArray>("Neighbor_Count", 1, n, true);
     b.ValidDirections = this->Add<vtkIntArray>("Valid_Direction_Count", 1, n, true);
-    b.SineFitRms = this->Add<vtkDoubleArray>("Sine_Fit_RMS", 1, n, true);
-    b.Surroundings = this->Add<vtkDoubleArray>("Surroundings_Threshold", 1, n, true);
-    b.PlaneDistance = this->Add<vtkDoubleArray>("Plane_Distance_Threshold", 1, n, true);
+    b.SineFitRms = this->AddReal("Sine_Fit_RMS", 1, n, true);
+    b.Surroundings = this->AddReal("Surroundings_Threshold", 1, n, true);
+    b.PlaneDistance = this->AddReal("Plane_Distance_Threshold", 1, n, true);
     // With the dynamic adjustment only: the neighbour count it aimed at for
     // the point, to compare with Neighbor_Count.
     b.TargetCount =
       adjusted ? this->Add<vtkIntArray>("Target_Neighbor_Count", 1, n, true) : nullptr;
-    b.ShapeIndex = this->Add<vtkDoubleArray>("Shape_Index", 1, n);
-    b.Curvedness = this->Add<vtkDoubleArray>("Curvedness", 1, n);
+    b.ShapeIndex = this->AddReal("Shape_Index", 1, n);
+    b.Curvedness = this->AddReal("Curvedness", 1, n);
     // For display; derived from Mean_Curvature, so left out (and not
     // computed) with the diagnostics when the output is to be small.
-    b.ClippedMean = display ? this->Add<vtkDoubleArray>("Mean_Curvature_Clipped", 1, n) : nullptr;
+    b.ClippedMean = display ? this->AddReal("Mean_Curvature_Clipped", 1, n) : nullptr;
     // With the fits that give one: the standard error of the curvatures.
     b.StandardError =
-      standardError ? this->Add<vtkDoubleArray>("Curvature_Standard_Error", 1, n, true) : nullptr;
+      standardError ? this->AddReal("Curvature_Standard_Error", 1, n, true) : nullptr;
     // With the same fits: 1 where the curvatures are within their stated
     // error of the cloud's scale (not a diagnostic: what a user filters by).
     b.Trusted =
       standardError ? this->Add<vtkUnsignedCharArray>("Curvature_Trusted", 1, n) : nullptr;
     // With the same fits: the normal their directions are tangent to.
-    b.FittedNormal = standardError ? this->Add<vtkDoubleArray>("Fitted_Normal", 3, n) : nullptr;
+    b.FittedNormal = standardError ? this->AddReal("Fitted_Normal", 3, n) : nullptr;
+  }
+
+  /// A float or double array (Single), as the core's buffer.
+  pcurv::RealBuffer AddReal(const char* name,
+    int components,
+    vtkIdType tuples,
+    bool diagnostic = false)
+  {
+    pcurv::RealBuffer buffer;
+    this->InOrder.emplace_back(
+      NewRealArray(name, components, tuples, this->Single, buffer), diagnostic);
+    return buffer;
   }
 
   template<typename ArrayT>
@@ -125,30 +159,16 @@ struct CurvatureArrays
     return array->GetPointer(0);
   }
 
-  /// Adds the arrays to `pd`: as float with `single`, the diagnostic ones
-  /// only with `diagnostics`.
-  void AddTo(vtkPointData* pd, bool single, bool diagnostics) const
+  /// Adds the arrays to `pd`, the diagnostic ones only with `diagnostics`.
+  void AddTo(vtkPointData* pd, bool diagnostics) const
   {
     for (const auto& entry : this->InOrder)
     {
-      if (entry.second && !diagnostics)
+      if (!entry.second || diagnostics)
       {
-        continue;
+        pd->AddArray(entry.first);
       }
-      pd->AddArray(single ? AsFloat(entry.first).Get() : entry.first.Get());
     }
-  }
-
-  /// A double array as a float one of the same name; other arrays as they are.
-  static vtkSmartPointer<vtkDataArray> AsFloat(vtkDataArray* array)
-  {
-    if (array->GetDataType() != VTK_DOUBLE)
-    {
-      return array;
-    }
-    auto single = vtkSmartPointer<vtkFloatArray>::New();
-    single->DeepCopy(array);
-    return single;
   }
 };
 
@@ -348,12 +368,13 @@ int vtkPrincipalCurvatureEstimation::RequestData(vtkInformation*,
   CurvatureArrays arrays(numberOfPoints,
     this->DynamicAdjustment,
     this->FitMode == ORIENTED_CIRCLES,
-    this->DiagnosticArrays);
-  vtkSmartPointer<vtkDoubleArray> estimatedNormals;
+    this->DiagnosticArrays,
+    this->SinglePrecisionOutput);
+  vtkSmartPointer<vtkDataArray> estimatedNormals;
   if (this->UsedEstimatedNormals)
   {
-    estimatedNormals = NewArray<vtkDoubleArray>("Normals", 3, numberOfPoints);
-    arrays.Buffers.Normals = estimatedNormals->GetPointer(0);
+    estimatedNormals = NewRealArray(
+      "Normals", 3, numberOfPoints, this->SinglePrecisionOutput, arrays.Buffers.Normals);
   }
   pcurv::AlgorithmProgress progress(this, "Principal curvatures");
   // One process: the whole estimation on a thread of its own, this one
@@ -392,7 +413,7 @@ int vtkPrincipalCurvatureEstimation::RequestData(vtkInformation*,
   this->NumberOfUnestimatedPoints = summary.NumberOfUnestimatedPoints;
   this->NumberOfSharedFitPoints = summary.NumberOfSharedPoints;
   pcurv::CopyGeometry(input, output);
-  arrays.AddTo(output->GetPointData(), this->SinglePrecisionOutput, this->DiagnosticArrays);
+  arrays.AddTo(output->GetPointData(), this->DiagnosticArrays);
   ReportUnestimated(this, summary, processes, output);
   WarnOnCoarseCoordinates(this,
     input,
@@ -419,9 +440,7 @@ int vtkPrincipalCurvatureEstimation::RequestData(vtkInformation*,
   }
   if (estimatedNormals)
   {
-    output->GetPointData()->SetNormals(this->SinglePrecisionOutput
-        ? CurvatureArrays::AsFloat(estimatedNormals).Get()
-        : estimatedNormals.Get());
+    output->GetPointData()->SetNormals(estimatedNormals);
   }
   // The active scalars: ParaView colours a new display by them, over their
   // range, so the first Apply shows the curvature rather than a solid

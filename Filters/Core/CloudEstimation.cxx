@@ -552,8 +552,8 @@ double WriteTrusted(const CurvatureBuffers& out,
   {
     if (out.Valid[i])
     {
-      largest[i] = std::max(std::fabs(out.Minimum[i]), std::fabs(out.Maximum[i]));
-      radii[i] = out.Surroundings[i];
+      largest[i] = std::max(std::fabs(out.Minimum.Get(i)), std::fabs(out.Maximum.Get(i)));
+      radii[i] = out.Surroundings.Get(i);
     }
   }
   // The curvatures that matter in this cloud: its large ones, or, where it
@@ -565,7 +565,7 @@ double WriteTrusted(const CurvatureBuffers& out,
     typicalRadius > 0.0 ? FlatCloudCurvatureShare / typicalRadius : 0.0);
   for (std::int64_t i = 0; i < numberOfPoints; ++i)
   {
-    const double error = out.StandardError ? out.StandardError[i] : NaN;
+    const double error = out.StandardError ? out.StandardError.Get(i) : NaN;
     out.Trusted[i] = out.Valid[i] && 2.0 * error <= TrustedErrorShare * scale ? 1 : 0;
   }
   return scale;
@@ -603,7 +603,7 @@ NormalSummary ReplaceNormals(CloudPoints& cloud,
   WorkRunner& runner,
   ProgressMonitor* monitor,
   double share,
-  double* out)
+  const RealBuffer& out)
 {
   CloudPoints whole;
   std::int64_t first = 0;
@@ -621,18 +621,27 @@ NormalSummary ReplaceNormals(CloudPoints& cloud,
   }
   const CloudPoints& estimated = processes.IsDistributed() ? whole : cloud;
   StageProgress planes(monitor, 0.0, 0.8 * share, estimated.NumberOfOwnPoints);
+  // The cloud's own normals are unknown until estimated (not read by the
+  // estimate): released meanwhile, they are not part of its peak memory.
+  std::vector<double>().swap(cloud.Normals);
   std::vector<double> normals;
   NormalSummary summary = EstimateNormals(estimated, settings, runner, normals, &planes);
   summary.Aborted =
     !processes.Min(planes.Stopped() ? 0 : 1) || !StageProgress(monitor, 0.0, share, 1).Reach(1.0);
-  cloud.DropHalo();
-  std::copy_n(normals.begin() + 3 * first, 3 * cloud.NumberOfOwnPoints, cloud.Normals.begin());
+  cloud.DropHalo(); // the normals back, zero
+  if (!normals.empty())
+  {
+    std::copy_n(normals.begin() + 3 * first, 3 * cloud.NumberOfOwnPoints, cloud.Normals.begin());
+  }
   if (out)
   {
-    std::fill_n(out, 3 * cloud.GetNumberOfInputPoints(), 0.0);
+    for (std::int64_t i = 0; i < 3 * cloud.GetNumberOfInputPoints(); ++i)
+    {
+      out.Set(i, 0.0);
+    }
     for (std::int64_t i = 0; i < cloud.NumberOfOwnPoints; ++i)
     {
-      std::copy_n(&cloud.Normals[3 * i], 3, out + 3 * cloud.InputIds[i]);
+      out.SetRange(3 * cloud.InputIds[i], &cloud.Normals[3 * i], 3);
     }
   }
   return summary;
@@ -644,7 +653,7 @@ NormalSummary EstimateCloudNormals(CloudPoints cloud,
   const NormalSettings& settings,
   const Collectives& processes,
   WorkRunner& runner,
-  double* out,
+  const RealBuffer& out,
   ProgressMonitor* monitor)
 {
   const std::vector<RepeatedPoint> repeats = RemoveRepeatedPoints(cloud);
@@ -660,7 +669,7 @@ NormalSummary EstimateCloudNormals(CloudPoints cloud,
   {
     if (out)
     {
-      std::copy_n(out + 3 * repeat.Original, 3, out + 3 * repeat.Copy);
+      out.CopyRange(3 * repeat.Original, 3 * repeat.Copy, 3);
     }
   }
   return summary;
@@ -699,6 +708,126 @@ const char* UnestimatedReasonName(UnestimatedReason reason)
       return "None";
   }
 }
+
+namespace
+{
+/// Who runs an estimation and whom it tells, for its steps.
+struct EstimationRun
+{
+  const Collectives& Processes;
+  WorkRunner& Runner;
+  ProgressMonitor* Monitor;
+  double NormalsShare; // the part of the progress the normals took
+};
+
+/// The anchors of the shared fits (serial: Abort is asked for along the
+/// way, and every process agrees on it afterwards, their loops differing
+/// in length). False when stopped on some process.
+bool ChooseAnchors(AnchorTable& anchors,
+  const CloudPoints& cloud,
+  const PointGrid& grid,
+  const GridLattice& lattice,
+  const NeighborhoodRule& rule,
+  const EstimationRun& run)
+{
+  const bool chosen = anchors.Choose(
+    cloud,
+    grid,
+    lattice,
+    rule.Automatic.Sharing.CellFactor * rule.Automatic.TypicalRadius,
+    [&](std::int64_t point)
+    {
+      const double* n = &cloud.Normals[3 * point];
+      return n[0] != 0.0 || n[1] != 0.0 || n[2] != 0.0;
+    },
+    [&]() { return !run.Monitor || run.Monitor->Continue(run.NormalsShare); });
+  const bool everyProcessGoesOn =
+    run.Processes.IsDistributed() ? run.Processes.Min(chosen ? 1 : 0) == 1 : chosen;
+  return everyProcessGoesOn && ContinueBetweenSteps(run.Monitor, run.NormalsShare, run.Processes);
+}
+
+/// The estimation proper, on the working copy `cloud` (consumed: it, its
+/// grid and the anchors are freed on return, before the passes over the
+/// results, which on large clouds would otherwise add to the peak memory).
+/// False when stopped on some process.
+bool EstimateEveryPoint(CloudPoints cloud,
+  NeighborhoodRule& rule,
+  const CloudBoxes& boxes,
+  const EstimationSettings& settings,
+  const EstimationRun& run,
+  const ResultWriter& writer,
+  EstimationSummary& summary)
+{
+  const GridLattice lattice = GlobalLattice(boxes, rule.CellRadius);
+  if (run.Processes.IsDistributed())
+  {
+    if (rule.KNearest)
+    {
+      rule.Reach = run.Processes.Max(LargestLocalKthDistance(cloud, lattice, rule.K));
+    }
+    ExchangeHalo(cloud, run.Processes, rule.Reach);
+    RemoveRepeatedHalo(cloud);
+  }
+  PointGrid grid;
+  grid.Build(cloud.Coordinates.data(), cloud.GetNumberOfPoints(), lattice);
+  ProcessingOrder order;
+  if (rule.Adjusted)
+  {
+    order.MakeBlocks(grid, cloud, lattice, rule.BlockLength);
+  }
+  else
+  {
+    order.MakePointwise(grid, cloud);
+  }
+  if (!ContinueBetweenSteps(run.Monitor, run.NormalsShare, run.Processes))
+  {
+    return false;
+  }
+
+  FitSettings fit;
+  fit.Mode = settings.Mode;
+  fit.MinimumPointsPerDirection = settings.MinimumPointsPerDirection;
+  fit.MaximumOpposingFraction = settings.MaximumOpposingFraction;
+  // With shared fits the anchors come first, and take most of the time.
+  AnchorTable anchors;
+  const bool shared = rule.AutomaticScale && rule.Automatic.ShareFits;
+  if (shared && !ChooseAnchors(anchors, cloud, grid, lattice, rule, run))
+  {
+    return false;
+  }
+  const double anchorShare = shared ? 0.7 * (1.0 - run.NormalsShare) : 0.0;
+  StageProgress anchorProgress(
+    run.Monitor, run.NormalsShare, anchorShare, static_cast<std::int64_t>(anchors.Points.size()));
+  ItemEstimator anchorEstimator(cloud, grid, order, rule, fit, writer, anchorProgress);
+  run.Runner.For(static_cast<std::int64_t>(anchors.Points.size()),
+    64,
+    [&](std::int64_t begin, std::int64_t end, EstimationScratch& scratch)
+    { anchorEstimator.EstimateAnchors(begin, end, anchors, scratch); });
+  StageProgress progress(run.Monitor,
+    run.NormalsShare + anchorShare,
+    1.0 - run.NormalsShare - anchorShare,
+    order.GetNumberOfItems());
+  ItemEstimator estimator(cloud, grid, order, rule, fit, writer, progress);
+  std::vector<unsigned char> sharedMarks(shared ? cloud.GetNumberOfPoints() : 0, 0);
+  const bool shareable = shared && anchors.AnyShareable(rule.Automatic.Sharing);
+  estimator.UseAnchors(shared ? &anchors : nullptr, shareable, sharedMarks.data());
+  if (!anchorProgress.Stopped())
+  {
+    run.Runner.For(order.GetNumberOfItems(),
+      rule.Adjusted ? 1 : 1024,
+      [&](std::int64_t begin, std::int64_t end, EstimationScratch& scratch)
+      { estimator.Estimate(begin, end, scratch); });
+  }
+  // Every process stops, or none: the steps after this one are collective.
+  if (!run.Processes.Min(progress.Stopped() || anchorProgress.Stopped() ? 0 : 1))
+  {
+    return false;
+  }
+  summary.NumberOfSharedPoints = run.Processes.Sum(static_cast<std::int64_t>(
+    std::count(sharedMarks.begin(), sharedMarks.end(), static_cast<unsigned char>(1))));
+  return true;
+}
+} // namespace
 
 EstimationSummary EstimateCloud(CloudPoints cloud,
   const EstimationSettings& settings,
@@ -739,37 +868,6 @@ EstimationSummary EstimateCloud(CloudPoints cloud,
     return summary;
   }
 
-  const GridLattice lattice = GlobalLattice(boxes, rule.CellRadius);
-  if (processes.IsDistributed())
-  {
-    if (rule.KNearest)
-    {
-      rule.Reach = processes.Max(LargestLocalKthDistance(cloud, lattice, rule.K));
-    }
-    ExchangeHalo(cloud, processes, rule.Reach);
-    RemoveRepeatedHalo(cloud);
-  }
-  PointGrid grid;
-  grid.Build(cloud.Coordinates.data(), cloud.GetNumberOfPoints(), lattice);
-  ProcessingOrder order;
-  if (rule.Adjusted)
-  {
-    order.MakeBlocks(grid, cloud, lattice, rule.BlockLength);
-  }
-  else
-  {
-    order.MakePointwise(grid, cloud);
-  }
-  if (!ContinueBetweenSteps(monitor, normalsShare, processes))
-  {
-    summary.Aborted = true;
-    return summary;
-  }
-
-  FitSettings fit;
-  fit.Mode = settings.Mode;
-  fit.MinimumPointsPerDirection = settings.MinimumPointsPerDirection;
-  fit.MaximumOpposingFraction = settings.MaximumOpposingFraction;
   const std::int64_t numberOfPoints = cloud.GetNumberOfInputPoints();
   std::vector<std::uint8_t> reasons(numberOfPoints, 0);
   const ResultWriter writer(out, reasons.data(), settings.MinimumPointsPerDirection);
@@ -780,63 +878,12 @@ EstimationSummary EstimateCloud(CloudPoints cloud,
       writer.StoreUnestimated(i, UnestimatedReason::BadCoordinate);
     }
   }
-  // With shared fits the anchors come first, and take most of the time.
-  AnchorTable anchors;
-  const bool shared = rule.AutomaticScale && rule.Automatic.ShareFits;
-  if (shared)
-  {
-    // Serial: Abort is asked for along the way, and every process agrees
-    // on it afterwards (the processes' loops differ in length).
-    const bool chosen = anchors.Choose(
-      cloud,
-      grid,
-      lattice,
-      rule.Automatic.Sharing.CellFactor * rule.Automatic.TypicalRadius,
-      [&](std::int64_t point)
-      {
-        const double* n = &cloud.Normals[3 * point];
-        return n[0] != 0.0 || n[1] != 0.0 || n[2] != 0.0;
-      },
-      [&]() { return !monitor || monitor->Continue(normalsShare); });
-    const bool everyProcessGoesOn =
-      processes.IsDistributed() ? processes.Min(chosen ? 1 : 0) == 1 : chosen;
-    if (!everyProcessGoesOn || !ContinueBetweenSteps(monitor, normalsShare, processes))
-    {
-      summary.Aborted = true;
-      return summary;
-    }
-  }
-  const double anchorShare = shared ? 0.7 * (1.0 - normalsShare) : 0.0;
-  StageProgress anchorProgress(
-    monitor, normalsShare, anchorShare, static_cast<std::int64_t>(anchors.Points.size()));
-  ItemEstimator anchorEstimator(cloud, grid, order, rule, fit, writer, anchorProgress);
-  runner.For(static_cast<std::int64_t>(anchors.Points.size()),
-    64,
-    [&](std::int64_t begin, std::int64_t end, EstimationScratch& scratch)
-    { anchorEstimator.EstimateAnchors(begin, end, anchors, scratch); });
-  StageProgress progress(monitor,
-    normalsShare + anchorShare,
-    1.0 - normalsShare - anchorShare,
-    order.GetNumberOfItems());
-  ItemEstimator estimator(cloud, grid, order, rule, fit, writer, progress);
-  std::vector<unsigned char> sharedMarks(shared ? cloud.GetNumberOfPoints() : 0, 0);
-  const bool shareable = shared && anchors.AnyShareable(rule.Automatic.Sharing);
-  estimator.UseAnchors(shared ? &anchors : nullptr, shareable, sharedMarks.data());
-  if (!anchorProgress.Stopped())
-  {
-    runner.For(order.GetNumberOfItems(),
-      rule.Adjusted ? 1 : 1024,
-      [&](std::int64_t begin, std::int64_t end, EstimationScratch& scratch)
-      { estimator.Estimate(begin, end, scratch); });
-  }
-  // Every process stops, or none: the steps after this one are collective.
-  if (!processes.Min(progress.Stopped() || anchorProgress.Stopped() ? 0 : 1))
+  const EstimationRun run{ processes, runner, monitor, normalsShare };
+  if (!EstimateEveryPoint(std::move(cloud), rule, boxes, settings, run, writer, summary))
   {
     summary.Aborted = true;
     return summary;
   }
-  summary.NumberOfSharedPoints = processes.Sum(static_cast<std::int64_t>(
-    std::count(sharedMarks.begin(), sharedMarks.end(), static_cast<unsigned char>(1))));
   for (const RepeatedPoint& repeat : repeats)
   {
     writer.Copy(repeat.Original, repeat.Copy);
@@ -847,11 +894,10 @@ EstimationSummary EstimateCloud(CloudPoints cloud,
     summary.NumberOfUnestimatedPoints += count;
   }
   writer.ToInputUnit(numberOfPoints, unit);
-  writer.WriteCurvedness(numberOfPoints);
   // Computed when asked for by any process (the quantile is collective; an
   // empty piece has no buffer).
   const bool clipped = processes.IsDistributed() ? processes.Max(out.ClippedMean ? 1.0 : 0.0) > 0.0
-                                                 : out.ClippedMean != nullptr;
+                                                 : static_cast<bool>(out.ClippedMean);
   if (clipped)
   {
     summary.MeanCurvatureClip = MagnitudeQuantile(out.Mean, numberOfPoints, 0.95, processes);

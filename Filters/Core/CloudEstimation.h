@@ -93,19 +93,20 @@ struct EstimationSettings
   NormalSettings Normals;
 };
 
-/// Where the results go: one value (or 3 for directions) per input point.
-/// TargetCount may be null (it is written with the dynamic adjustment only).
+/// Where the results go: one value (or 3 for directions) per input point,
+/// the real ones in double or single precision (RealBuffer). TargetCount
+/// may be null (it is written with the dynamic adjustment only).
 struct CurvatureBuffers
 {
-  double* Minimum = nullptr;
-  double* Maximum = nullptr;
-  double* Mean = nullptr;
-  double* Gauss = nullptr;
-  double* MinimumDirection = nullptr;
-  double* MaximumDirection = nullptr;
-  double* SineFitRms = nullptr;
-  double* Surroundings = nullptr;
-  double* PlaneDistance = nullptr;
+  RealBuffer Minimum = nullptr;
+  RealBuffer Maximum = nullptr;
+  RealBuffer Mean = nullptr;
+  RealBuffer Gauss = nullptr;
+  RealBuffer MinimumDirection = nullptr;
+  RealBuffer MaximumDirection = nullptr;
+  RealBuffer SineFitRms = nullptr;
+  RealBuffer Surroundings = nullptr;
+  RealBuffer PlaneDistance = nullptr;
   unsigned char* Valid = nullptr;
   int* NeighborCount = nullptr;
   int* ValidDirections = nullptr;
@@ -115,19 +116,19 @@ struct CurvatureBuffers
   /// cap such as a sphere with outward normals, +1/2 a ridge such as a
   /// cylinder, 0 a symmetric saddle, -1 a cup; NaN where both curvatures
   /// are 0), and the curvedness sqrt((k_min^2 + k_max^2) / 2), 1/length.
-  double* ShapeIndex = nullptr;
-  double* Curvedness = nullptr;
+  RealBuffer ShapeIndex = nullptr;
+  RealBuffer Curvedness = nullptr;
   /// Derived, for display (may be null): the mean curvature clipped to
   /// [-c, c], c the 95th percentile of |mean curvature| over the cloud
   /// (EstimationSummary::MeanCurvatureClip), NaN where not estimated. A
   /// colour map over its range shows the surface's structure, not a few
   /// outliers, and is centred on 0 (flat).
-  double* ClippedMean = nullptr;
+  RealBuffer ClippedMean = nullptr;
   /// With FitMode::OrientedCircles only (may be null): the standard error
   /// of the curvatures, 1/length: it covers the fit's variance, the bias
   /// of the chosen neighbourhood and the normals' errors, calibrated so
   /// that most errors are within twice it (docs/output-arrays.md).
-  double* StandardError = nullptr;
+  RealBuffer StandardError = nullptr;
   /// With FitMode::OrientedCircles only (may be null): 1 where the point is
   /// estimated and twice its standard error is within a tenth of the
   /// cloud's curvature scale (EstimationSummary::TrustedCurvatureScale).
@@ -135,10 +136,10 @@ struct CurvatureBuffers
   /// With FitMode::OrientedCircles only (may be null): the fitted
   /// surface's unit normal, 3 per point, to which the directions are
   /// tangent (zero where not estimated).
-  double* FittedNormal = nullptr;
+  RealBuffer FittedNormal = nullptr;
   /// With EstimateNormals only (may be null): the normals estimated, 3 per
   /// input point (zero where undetermined or the coordinates not finite).
-  double* Normals = nullptr;
+  RealBuffer Normals = nullptr;
 };
 
 /// Points without an estimate, indexed by UnestimatedReason (None: 0).
@@ -202,7 +203,7 @@ NormalSummary EstimateCloudNormals(CloudPoints cloud,
   const NormalSettings& settings,
   const Collectives& processes,
   WorkRunner& runner,
-  double* out,
+  const RealBuffer& out,
   ProgressMonitor* monitor = nullptr);
 
 } // namespace pcurv

@@ -558,7 +558,7 @@ double LargestLocalKthDistance(const CloudPoints& cloud, const GridLattice& latt
   return std::nextafter(std::sqrt(largest), HUGE_VAL);
 }
 
-double MagnitudeQuantile(const double* values,
+double MagnitudeQuantile(const RealBuffer& values,
   std::int64_t count,
   double quantile,
   const Collectives& processes)
@@ -571,7 +571,7 @@ double MagnitudeQuantile(const double* values,
   std::vector<std::int64_t> histogram(Bins, 0);
   for (std::int64_t i = 0; i < count; ++i)
   {
-    const double magnitude = std::fabs(values[i]);
+    const double magnitude = std::fabs(values.Get(i));
     if (std::isfinite(magnitude))
     {
       const int bin = magnitude > 0.0

@@ -16,6 +16,7 @@
 #define CloudStatistics_h
 
 #include "PointGrid.h"
+#include "RealBuffer.h"
 
 #include <array>
 #include <cstdint>
@@ -178,7 +179,7 @@ double LargestLocalKthDistance(const CloudPoints& cloud, const GridLattice& latt
 /// process: the upper edge of the histogram bin (2^(1/16) wide) that holds
 /// it. The histogram adds up over processes, so the result does not depend
 /// on how the cloud is split. 0 when no value is finite.
-double MagnitudeQuantile(const double* values,
+double MagnitudeQuantile(const RealBuffer& values,
   std::int64_t count,
   double quantile,
   const Collectives& processes);

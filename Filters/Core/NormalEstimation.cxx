@@ -1262,7 +1262,7 @@ NormalSummary EstimateNormals(const CloudPoints& cloud,
 {
   NormalSummary summary;
   const std::int64_t n = cloud.NumberOfOwnPoints;
-  normals.assign(3 * n, 0.0);
+  normals.clear();
   if (n == 0)
   {
     return summary;
@@ -1337,6 +1337,8 @@ NormalSummary EstimateNormals(const CloudPoints& cloud,
   {
     OrientPointwise(usable, ordered, fits.Normals);
   }
+  // Allocated last: the orientation's graph is the estimate's peak memory.
+  normals.assign(3 * n, 0.0);
   for (std::int64_t p = 0; p < n; ++p)
   {
     const double* normal = &fits.Normals[3 * p];

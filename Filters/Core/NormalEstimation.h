@@ -65,7 +65,7 @@ struct NormalSummary
 /// Unit normals of the own points of `cloud` (coordinates only are read),
 /// 3 per point, zero where undetermined. With `progress`, the plane fits
 /// (most of the time) are reported to it, one item a point, and it returns
-/// early (normals incomplete) when it is stopped, also during the
+/// early (`normals` then empty) when it is stopped, also during the
 /// orientation, which asks it every few thousand points.
 NormalSummary EstimateNormals(const CloudPoints& cloud,
   const NormalSettings& settings,

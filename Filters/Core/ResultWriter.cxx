@@ -32,27 +32,33 @@ void ResultWriter::Store(std::int64_t i,
 {
   if (this->Out.StandardError)
   {
-    this->Out.StandardError[i] = r.Valid ? standardError : NaN;
+    this->Out.StandardError.Set(i, r.Valid ? standardError : NaN);
   }
   if (this->Out.ShapeIndex)
   {
-    this->Out.ShapeIndex[i] = ShapeIndex(r);
+    this->Out.ShapeIndex.Set(i, ShapeIndex(r));
   }
   const double kMin = r.Valid ? r.MinimumCurvature : NaN;
   const double kMax = r.Valid ? r.MaximumCurvature : NaN;
-  this->Out.Minimum[i] = kMin;
-  this->Out.Maximum[i] = kMax;
-  this->Out.Mean[i] = 0.5 * (kMin + kMax);
-  this->Out.Gauss[i] = kMin * kMax;
-  std::copy_n(r.MinimumDirection.data(), 3, this->Out.MinimumDirection + 3 * i);
-  std::copy_n(r.MaximumDirection.data(), 3, this->Out.MaximumDirection + 3 * i);
+  this->Out.Minimum.Set(i, kMin);
+  this->Out.Maximum.Set(i, kMax);
+  this->Out.Mean.Set(i, 0.5 * (kMin + kMax));
+  this->Out.Gauss.Set(i, kMin * kMax);
+  if (this->Out.Curvedness)
+  {
+    // In the working unit; like the curvatures it scales exactly by a power
+    // of two on the way to the input's.
+    this->Out.Curvedness.Set(i, std::sqrt(0.5 * (kMin * kMin + kMax * kMax)));
+  }
+  this->Out.MinimumDirection.SetRange(3 * i, r.MinimumDirection.data(), 3);
+  this->Out.MaximumDirection.SetRange(3 * i, r.MaximumDirection.data(), 3);
   if (this->Out.FittedNormal)
   {
-    std::copy_n(r.FittedNormal.data(), 3, this->Out.FittedNormal + 3 * i);
+    this->Out.FittedNormal.SetRange(3 * i, r.FittedNormal.data(), 3);
   }
-  this->Out.SineFitRms[i] = r.Valid ? r.SineFitRms : NaN;
-  this->Out.Surroundings[i] = s;
-  this->Out.PlaneDistance[i] = p;
+  this->Out.SineFitRms.Set(i, r.Valid ? r.SineFitRms : NaN);
+  this->Out.Surroundings.Set(i, s);
+  this->Out.PlaneDistance.Set(i, p);
   this->Out.Valid[i] = r.Valid ? 1 : 0;
   this->Out.NeighborCount[i] = r.NeighborCount;
   this->Out.ValidDirections[i] = r.ValidDirections;
@@ -73,18 +79,18 @@ void ResultWriter::StoreUnestimated(std::int64_t i, UnestimatedReason reason) co
 
 void ResultWriter::Prefetch(std::int64_t i) const
 {
-  for (const double* values : { this->Out.Minimum,
-         this->Out.Maximum,
-         this->Out.Mean,
-         this->Out.Gauss,
-         this->Out.SineFitRms,
-         this->Out.Surroundings,
-         this->Out.PlaneDistance })
+  for (const RealBuffer* values : { &this->Out.Minimum,
+         &this->Out.Maximum,
+         &this->Out.Mean,
+         &this->Out.Gauss,
+         &this->Out.SineFitRms,
+         &this->Out.Surroundings,
+         &this->Out.PlaneDistance })
   {
-    __builtin_prefetch(values + i, 1);
+    values->Prefetch(i);
   }
-  __builtin_prefetch(this->Out.MinimumDirection + 3 * i, 1);
-  __builtin_prefetch(this->Out.MaximumDirection + 3 * i, 1);
+  this->Out.MinimumDirection.Prefetch(3 * i);
+  this->Out.MaximumDirection.Prefetch(3 * i);
   __builtin_prefetch(this->Out.Valid + i, 1);
   __builtin_prefetch(this->Out.NeighborCount + i, 1);
   __builtin_prefetch(this->Out.ValidDirections + i, 1);
@@ -97,50 +103,60 @@ void ResultWriter::ToInputUnit(std::int64_t numberOfPoints, const WorkingUnit& u
   {
     return;
   }
-  for (std::int64_t i = 0; i < numberOfPoints; ++i)
+  const auto scaleBy = [numberOfPoints](const RealBuffer& values, double factor)
   {
-    for (double* curvature :
-      { this->Out.Minimum, this->Out.Maximum, this->Out.Mean, this->Out.SineFitRms })
+    if (values)
     {
-      curvature[i] = curvature[i] * lengthScale;
+      for (std::int64_t i = 0; i < numberOfPoints; ++i)
+      {
+        values.Set(i, values.Get(i) * factor);
+      }
     }
-    if (this->Out.StandardError)
-    {
-      this->Out.StandardError[i] = this->Out.StandardError[i] * lengthScale;
-    }
-    this->Out.Gauss[i] = this->Out.Gauss[i] * lengthScale * lengthScale;
-    for (double* length : { this->Out.Surroundings, this->Out.PlaneDistance })
-    {
-      length[i] = unit.ToInputLength(length[i]);
-    }
+  };
+  // Curvatures scale like 1 / length (a power of two: exact, also after
+  // rounding to single precision).
+  for (const RealBuffer* curvature : { &this->Out.Minimum,
+         &this->Out.Maximum,
+         &this->Out.Mean,
+         &this->Out.SineFitRms,
+         &this->Out.StandardError,
+         &this->Out.Curvedness })
+  {
+    scaleBy(*curvature, lengthScale);
+  }
+  scaleBy(this->Out.Gauss, lengthScale * lengthScale);
+  for (const RealBuffer* length : { &this->Out.Surroundings, &this->Out.PlaneDistance })
+  {
+    scaleBy(*length, unit.ToInputLength(1.0));
   }
 }
 
 void ResultWriter::Copy(std::int64_t from, std::int64_t to) const
 {
-  for (double* values : { this->Out.Minimum,
-         this->Out.Maximum,
-         this->Out.Mean,
-         this->Out.Gauss,
-         this->Out.SineFitRms,
-         this->Out.Surroundings,
-         this->Out.PlaneDistance,
-         this->Out.StandardError,
-         this->Out.ShapeIndex })
+  for (const RealBuffer* values : { &this->Out.Minimum,
+         &this->Out.Maximum,
+         &this->Out.Mean,
+         &this->Out.Gauss,
+         &this->Out.SineFitRms,
+         &this->Out.Surroundings,
+         &this->Out.PlaneDistance,
+         &this->Out.StandardError,
+         &this->Out.ShapeIndex,
+         &this->Out.Curvedness })
   {
-    if (values)
+    if (*values)
     {
-      values[to] = values[from];
+      values->CopyRange(from, to, 1);
     }
   }
-  for (double* vectors : { this->Out.MinimumDirection,
-         this->Out.MaximumDirection,
-         this->Out.FittedNormal,
-         this->Out.Normals })
+  for (const RealBuffer* vectors : { &this->Out.MinimumDirection,
+         &this->Out.MaximumDirection,
+         &this->Out.FittedNormal,
+         &this->Out.Normals })
   {
-    if (vectors)
+    if (*vectors)
     {
-      std::copy_n(vectors + 3 * from, 3, vectors + 3 * to);
+      vectors->CopyRange(3 * from, 3 * to, 3);
     }
   }
   this->Out.Valid[to] = this->Out.Valid[from];
@@ -153,25 +169,12 @@ void ResultWriter::Copy(std::int64_t from, std::int64_t to) const
   }
 }
 
-void ResultWriter::WriteCurvedness(std::int64_t numberOfPoints) const
-{
-  if (!this->Out.Curvedness)
-  {
-    return;
-  }
-  for (std::int64_t i = 0; i < numberOfPoints; ++i)
-  {
-    const double a = this->Out.Minimum[i], b = this->Out.Maximum[i];
-    this->Out.Curvedness[i] = std::sqrt(0.5 * (a * a + b * b));
-  }
-}
-
 void ResultWriter::WriteClippedMean(std::int64_t numberOfPoints, double clip) const
 {
   for (std::int64_t i = 0; i < numberOfPoints; ++i)
   {
-    const double h = this->Out.Mean[i];
-    this->Out.ClippedMean[i] = std::isnan(h) ? h : std::min(std::max(h, -clip), clip);
+    const double h = this->Out.Mean.Get(i);
+    this->Out.ClippedMean.Set(i, std::isnan(h) ? h : std::min(std::max(h, -clip), clip));
   }
 }
 

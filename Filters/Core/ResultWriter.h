@@ -65,9 +65,6 @@ public:
   /// Point `to` gets every result of point `from` (an exact repeat of it).
   void Copy(std::int64_t from, std::int64_t to) const;
 
-  /// The curvedness from the curvatures in the input's unit.
-  void WriteCurvedness(std::int64_t numberOfPoints) const;
-
   /// The mean curvature clipped to [-clip, clip] (NaN stays NaN).
   void WriteClippedMean(std::int64_t numberOfPoints, double clip) const;
 

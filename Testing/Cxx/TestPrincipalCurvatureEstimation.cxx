@@ -300,6 +300,59 @@ void TestOutputSize(Checks& checks)
     cloud->GetNumberOfPoints());
 }
 
+/// Single precision written straight by the core: with every array on
+/// (estimated normals, diagnostics, a noisy cloud whose fits are shared
+/// and whose coordinates are far from the working unit), each real array
+/// of the double run comes out float with its values rounded once, and
+/// every other array and the field data unchanged.
+void TestSinglePrecisionEveryArray(Checks& checks)
+{
+  std::vector<SurfaceSample> torus = Sample(Torus(3000.0, 1000.0), 8000, 31);
+  AddPositionNoise(torus, 0.3 * std::sqrt(4.0 * 9.8696 * 3e6 / 8000), 32);
+  auto cloud = MakeCloud(torus);
+  cloud->GetPointData()->SetNormals(nullptr);
+  vtkSmartPointer<vtkPolyData> outputs[2];
+  for (int single = 0; single < 2; ++single)
+  {
+    vtkNew<vtkPrincipalCurvatureEstimation> filter;
+    filter->SetInputData(cloud);
+    filter->SetNormalsSourceToEstimated();
+    filter->SetSinglePrecisionOutput(single == 1);
+    filter->Update();
+    outputs[single] = filter->GetOutput();
+  }
+  vtkPointData* reference = outputs[0]->GetPointData();
+  vtkPointData* rounded = outputs[1]->GetPointData();
+  checks.Equal("single precision, every array: as many arrays",
+    rounded->GetNumberOfArrays(),
+    reference->GetNumberOfArrays());
+  for (int a = 0; a < reference->GetNumberOfArrays(); ++a)
+  {
+    vtkDataArray* r = reference->GetArray(a);
+    vtkDataArray* v = rounded->GetArray(r->GetName());
+    // The filter's own real arrays; the input's pass through as they are.
+    const bool real =
+      r->GetDataType() == VTK_DOUBLE && !cloud->GetPointData()->GetArray(r->GetName());
+    bool same = v && v->GetDataType() == (real ? VTK_FLOAT : r->GetDataType()) &&
+      v->GetNumberOfValues() == r->GetNumberOfValues();
+    for (vtkIdType i = 0; same && i < r->GetNumberOfValues(); ++i)
+    {
+      const double x = r->GetVariantValue(i).ToDouble();
+      const double y = v->GetVariantValue(i).ToDouble();
+      same = (std::isnan(x) && std::isnan(y)) ||
+        y == (real ? static_cast<double>(static_cast<float>(x)) : x);
+    }
+    checks.True(
+      (std::string("single precision, every array: ") + r->GetName() + " rounded once").c_str(),
+      same);
+  }
+  checks.True("single precision: the estimated normals are the output's normals, float",
+    vtkFloatArray::SafeDownCast(rounded->GetNormals()) != nullptr);
+  vtkDataArray* shared = outputs[1]->GetFieldData()->GetArray("Shared_Fit_Points");
+  checks.True(
+    "single precision, every array: the cloud shares fits", shared && shared->GetTuple1(0) > 1000);
+}
+
 /// Sphere: +1/R with outward normals, -1/R with inward ones; the same for
 /// float normals; K-nearest mode works too.
 void TestSignsAndNormals(Checks& checks)
@@ -531,6 +584,7 @@ int main()
   TestAccuracyOnShapes(checks);
   TestOutputContract(checks);
   TestOutputSize(checks);
+  TestSinglePrecisionEveryArray(checks);
   TestSignsAndNormals(checks);
   TestThreadIndependence(checks);
   TestBadInput(checks);

@@ -671,7 +671,7 @@ void CheckCloudEstimation(Bytes& in)
   std::vector<int> integers(3 * count);
   pcurv::CurvatureBuffers out;
   double* next = values.data();
-  for (double** array : { &out.Minimum,
+  for (pcurv::RealBuffer* array : { &out.Minimum,
          &out.Maximum,
          &out.Mean,
          &out.Gauss,
@@ -696,13 +696,13 @@ void CheckCloudEstimation(Bytes& in)
   {
     if (valid[i])
     {
-      Require(std::isfinite(out.Minimum[i]) && std::isfinite(out.Maximum[i]) &&
-          out.Maximum[i] >= out.Minimum[i],
+      Require(std::isfinite(out.Minimum.Get(i)) && std::isfinite(out.Maximum.Get(i)) &&
+          out.Maximum.Get(i) >= out.Minimum.Get(i),
         "cloud: a valid point has finite curvatures, max >= min");
     }
     else
     {
-      Require(std::isnan(out.Minimum[i]) && std::isnan(out.Mean[i]),
+      Require(std::isnan(out.Minimum.Get(i)) && std::isnan(out.Mean.Get(i)),
         "cloud: an unestimated point has NaN curvatures");
       ++unestimated;
     }
