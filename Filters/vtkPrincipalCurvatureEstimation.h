@@ -119,10 +119,12 @@ public:
 
   ///@{
   /**
-   * The circle fit per direction. Default NEW01: in the accuracy study
-   * (Study/REPORT.md) it is as accurate as PREVIOUS without noise, the most
-   * accurate with noise, and the fastest; NEW02's choice between its two
-   * closed forms picks the noise-biased one too often.
+   * The circle fit per direction. Default ORIENTED_CIRCLES (with the
+   * AUTOMATIC_SCALE neighbourhood), beyond the paper: the most accurate on
+   * the shared suite (Study/REPORT.md). Of the paper's three, NEW01 is as
+   * accurate as PREVIOUS without noise, the most accurate with noise, and
+   * the fastest; NEW02's choice between its two closed forms picks the
+   * noise-biased one too often.
    */
   vtkSetClampMacro(FitMode, int, PREVIOUS, ORIENTED_CIRCLES);
   vtkGetMacro(FitMode, int);
