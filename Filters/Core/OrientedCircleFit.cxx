@@ -60,6 +60,71 @@ struct Solution
   Eigen::Matrix<double, N, 3> Inverse = Eigen::Matrix<double, N, 3>::Zero();
 };
 
+/// LDL^T of a small symmetric positive definite matrix, without pivoting:
+/// on a unit diagonal no reordering is needed for stability, and the
+/// fixed size lets the compiler unroll it (Eigen's pivoting LDLT cost most
+/// of a fit on small neighbourhoods). Fails when a pivot is not above
+/// `smallest`: an unknown is then determined by the earlier ones to
+/// working precision.
+template<int N>
+class SmallLdlt
+{
+public:
+  bool Factor(const Matrix<N>& a, double smallest)
+  {
+    for (int j = 0; j < N; ++j)
+    {
+      double d = a(j, j);
+      for (int k = 0; k < j; ++k)
+      {
+        d -= this->L[j][k] * this->L[j][k] * this->D[k];
+      }
+      if (!(d > smallest))
+      {
+        return false;
+      }
+      this->D[j] = d;
+      for (int i = j + 1; i < N; ++i)
+      {
+        double v = a(i, j);
+        for (int k = 0; k < j; ++k)
+        {
+          v -= this->L[i][k] * this->L[j][k] * this->D[k];
+        }
+        this->L[i][j] = v / d;
+      }
+    }
+    return true;
+  }
+
+  Vector<N> Solve(Vector<N> x) const
+  {
+    for (int i = 0; i < N; ++i)
+    {
+      for (int k = 0; k < i; ++k)
+      {
+        x[i] -= this->L[i][k] * x[k];
+      }
+    }
+    for (int i = 0; i < N; ++i)
+    {
+      x[i] /= this->D[i];
+    }
+    for (int i = N - 1; i >= 0; --i)
+    {
+      for (int k = i + 1; k < N; ++k)
+      {
+        x[i] -= this->L[k][i] * x[k];
+      }
+    }
+    return x;
+  }
+
+private:
+  double L[N][N] = {};
+  double D[N] = {};
+};
+
 /// Solves the normal equations, scaled to a unit diagonal first: the
 /// unknowns differ in scale by orders of magnitude (curvatures, cubic
 /// coefficients, the height), and so do the two kinds of rows once weighted
@@ -80,18 +145,21 @@ Solution<N> Solve(const Matrix<N>& normal, const Vector<N>& right, bool withInve
   }
   const Vector<N> unscale = diagonal.cwiseSqrt().cwiseInverse();
   const Matrix<N> scaled = unscale.asDiagonal() * normal * unscale.asDiagonal();
-  Eigen::LDLT<Matrix<N>> ldlt(scaled);
-  if (ldlt.info() != Eigen::Success || !(ldlt.vectorD().cwiseAbs().minCoeff() > 1e-12))
+  SmallLdlt<N> ldlt;
+  if (!ldlt.Factor(scaled, 1e-12))
   {
     return solution;
   }
-  solution.X = unscale.cwiseProduct(ldlt.solve(unscale.cwiseProduct(right)));
+  solution.X = unscale.cwiseProduct(ldlt.Solve(unscale.cwiseProduct(right)));
   if (withInverse)
   {
     // Only C, A and B's covariance is wanted: three columns, not N.
-    const Eigen::Matrix<double, N, 3> columns =
-      ldlt.solve(unscale.asDiagonal() * Matrix<N>::Identity().template leftCols<3>());
-    solution.Inverse = unscale.asDiagonal() * columns;
+    for (int c = 0; c < 3; ++c)
+    {
+      Vector<N> unit = Vector<N>::Zero();
+      unit[c] = unscale[c];
+      solution.Inverse.col(c) = unscale.cwiseProduct(ldlt.Solve(unit));
+    }
   }
   solution.Valid = solution.X.allFinite() && solution.Inverse.allFinite();
   return solution;
