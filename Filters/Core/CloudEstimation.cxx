@@ -13,11 +13,6 @@ namespace pcurv
 namespace
 {
 constexpr double NaN = std::numeric_limits<double>::quiet_NaN();
-/// A curvature is trusted when twice its reported standard error is within
-/// this share of the cloud's curvature scale (WriteTrusted).
-constexpr double TrustedErrorShare = 0.1;
-/// A nearly flat cloud's curvature scale, times its median radius.
-constexpr double FlatCloudCurvatureShare = 0.25;
 
 /// The adjustment's target counts within [1, 1e6] (NaN: 1): a count outside
 /// it has no meaning, and beyond the int range it could not be reported in
@@ -135,38 +130,6 @@ NeighborhoodRule ChooseThresholds(const EstimationSettings& settings,
     rule.Reach = rule.Radius;
   }
   return rule;
-}
-
-/// CurvatureBuffers::Trusted from the reported standard errors, in the
-/// input's unit; returns the cloud's curvature scale it used. Collective:
-/// every process calls it when any has the buffer.
-double WriteTrusted(const CurvatureBuffers& out,
-  std::int64_t numberOfPoints,
-  const Collectives& processes)
-{
-  std::vector<double> largest(static_cast<std::size_t>(numberOfPoints), NaN);
-  std::vector<double> radii(static_cast<std::size_t>(numberOfPoints), NaN);
-  for (std::int64_t i = 0; i < numberOfPoints; ++i)
-  {
-    if (out.Valid[i])
-    {
-      largest[i] = std::max(std::fabs(out.Minimum.Get(i)), std::fabs(out.Maximum.Get(i)));
-      radii[i] = out.Surroundings.Get(i);
-    }
-  }
-  // The curvatures that matter in this cloud: its large ones, or, where it
-  // is (nearly) flat, a bending its typical neighbourhood resolves well (a
-  // quarter of one over its radius: a larger share would let the errors of
-  // gently curved parts, which take large radii, pass as trusted).
-  const double typicalRadius = MagnitudeQuantile(radii.data(), numberOfPoints, 0.5, processes);
-  const double scale = std::max(MagnitudeQuantile(largest.data(), numberOfPoints, 0.95, processes),
-    typicalRadius > 0.0 ? FlatCloudCurvatureShare / typicalRadius : 0.0);
-  for (std::int64_t i = 0; i < numberOfPoints; ++i)
-  {
-    const double error = out.StandardError ? out.StandardError.Get(i) : NaN;
-    out.Trusted[i] = out.Valid[i] && 2.0 * error <= TrustedErrorShare * scale ? 1 : 0;
-  }
-  return scale;
 }
 
 /// The used thresholds of the summary, in the input's unit.
@@ -487,12 +450,12 @@ EstimationSummary EstimateCloud(CloudPoints cloud,
   {
     writer.Copy(repeat.Original, repeat.Copy);
   }
-  summary.UnestimatedByReason = writer.CountUnestimated(numberOfPoints);
+  summary.UnestimatedByReason = CountUnestimated(out, reasons.data(), numberOfPoints);
   for (const std::int64_t count : summary.UnestimatedByReason)
   {
     summary.NumberOfUnestimatedPoints += count;
   }
-  writer.ToInputUnit(numberOfPoints, unit);
+  ToInputUnit(out, numberOfPoints, unit);
   // Computed when asked for by any process (the quantile is collective; an
   // empty piece has no buffer).
   const bool clipped = processes.IsDistributed() ? processes.Max(out.ClippedMean ? 1.0 : 0.0) > 0.0
@@ -503,7 +466,7 @@ EstimationSummary EstimateCloud(CloudPoints cloud,
   }
   if (out.ClippedMean)
   {
-    writer.WriteClippedMean(numberOfPoints, summary.MeanCurvatureClip);
+    WriteClippedMean(out, numberOfPoints, summary.MeanCurvatureClip);
   }
   const bool trusted = processes.IsDistributed() ? processes.Max(out.Trusted ? 1.0 : 0.0) > 0.0
                                                  : out.Trusted != nullptr;

@@ -1,12 +1,18 @@
 #include "ResultWriter.h"
 
 #include <cmath>
+#include <vector>
 
 namespace pcurv
 {
 namespace
 {
 constexpr double NaN = std::numeric_limits<double>::quiet_NaN();
+/// A curvature is trusted when twice its reported standard error is within
+/// this share of the cloud's curvature scale (WriteTrusted).
+constexpr double TrustedErrorShare = 0.1;
+/// A nearly flat cloud's curvature scale, times its median radius.
+constexpr double FlatCloudCurvatureShare = 0.25;
 
 /// Koenderink and van Doorn's shape index of an estimate (NaN where it has
 /// none or both curvatures are 0: a plane has no shape); scale free.
@@ -96,7 +102,7 @@ void ResultWriter::Prefetch(std::int64_t i) const
   __builtin_prefetch(this->Out.ValidDirections + i, 1);
 }
 
-void ResultWriter::ToInputUnit(std::int64_t numberOfPoints, const WorkingUnit& unit) const
+void ToInputUnit(const CurvatureBuffers& out, std::int64_t numberOfPoints, const WorkingUnit& unit)
 {
   const double lengthScale = unit.Scale;
   if (lengthScale == 1.0)
@@ -115,17 +121,13 @@ void ResultWriter::ToInputUnit(std::int64_t numberOfPoints, const WorkingUnit& u
   };
   // Curvatures scale like 1 / length (a power of two: exact, also after
   // rounding to single precision).
-  for (const RealBuffer* curvature : { &this->Out.Minimum,
-         &this->Out.Maximum,
-         &this->Out.Mean,
-         &this->Out.SineFitRms,
-         &this->Out.StandardError,
-         &this->Out.Curvedness })
+  for (const RealBuffer* curvature :
+    { &out.Minimum, &out.Maximum, &out.Mean, &out.SineFitRms, &out.StandardError, &out.Curvedness })
   {
     scaleBy(*curvature, lengthScale);
   }
-  scaleBy(this->Out.Gauss, lengthScale * lengthScale);
-  for (const RealBuffer* length : { &this->Out.Surroundings, &this->Out.PlaneDistance })
+  scaleBy(out.Gauss, lengthScale * lengthScale);
+  for (const RealBuffer* length : { &out.Surroundings, &out.PlaneDistance })
   {
     scaleBy(*length, unit.ToInputLength(1.0));
   }
@@ -169,24 +171,55 @@ void ResultWriter::Copy(std::int64_t from, std::int64_t to) const
   }
 }
 
-void ResultWriter::WriteClippedMean(std::int64_t numberOfPoints, double clip) const
+void WriteClippedMean(const CurvatureBuffers& out, std::int64_t numberOfPoints, double clip)
 {
   for (std::int64_t i = 0; i < numberOfPoints; ++i)
   {
-    const double h = this->Out.Mean.Get(i);
-    this->Out.ClippedMean.Set(i, std::isnan(h) ? h : std::min(std::max(h, -clip), clip));
+    const double h = out.Mean.Get(i);
+    out.ClippedMean.Set(i, std::isnan(h) ? h : std::min(std::max(h, -clip), clip));
   }
 }
 
-UnestimatedCounts ResultWriter::CountUnestimated(std::int64_t numberOfPoints) const
+UnestimatedCounts CountUnestimated(const CurvatureBuffers& out,
+  const std::uint8_t* reasons,
+  std::int64_t numberOfPoints)
 {
   UnestimatedCounts counts{};
   for (std::int64_t i = 0; i < numberOfPoints; ++i)
   {
-    counts[this->Out.Valid[i] ? 0 : std::max<int>(this->Reasons[i], 1)] += 1;
+    counts[out.Valid[i] ? 0 : std::max<int>(reasons[i], 1)] += 1;
   }
   counts[0] = 0;
   return counts;
+}
+
+double WriteTrusted(const CurvatureBuffers& out,
+  std::int64_t numberOfPoints,
+  const Collectives& processes)
+{
+  std::vector<double> largest(static_cast<std::size_t>(numberOfPoints), NaN);
+  std::vector<double> radii(static_cast<std::size_t>(numberOfPoints), NaN);
+  for (std::int64_t i = 0; i < numberOfPoints; ++i)
+  {
+    if (out.Valid[i])
+    {
+      largest[i] = std::max(std::fabs(out.Minimum.Get(i)), std::fabs(out.Maximum.Get(i)));
+      radii[i] = out.Surroundings.Get(i);
+    }
+  }
+  // The curvatures that matter in this cloud: its large ones, or, where it
+  // is (nearly) flat, a bending its typical neighbourhood resolves well (a
+  // quarter of one over its radius: a larger share would let the errors of
+  // gently curved parts, which take large radii, pass as trusted).
+  const double typicalRadius = MagnitudeQuantile(radii.data(), numberOfPoints, 0.5, processes);
+  const double scale = std::max(MagnitudeQuantile(largest.data(), numberOfPoints, 0.95, processes),
+    typicalRadius > 0.0 ? FlatCloudCurvatureShare / typicalRadius : 0.0);
+  for (std::int64_t i = 0; i < numberOfPoints; ++i)
+  {
+    const double error = out.StandardError ? out.StandardError.Get(i) : NaN;
+    out.Trusted[i] = out.Valid[i] && 2.0 * error <= TrustedErrorShare * scale ? 1 : 0;
+  }
+  return scale;
 }
 
 } // namespace pcurv

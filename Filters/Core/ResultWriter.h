@@ -1,8 +1,9 @@
 /**
  * @file ResultWriter.h
  * @brief Where an estimation's per-point results go: the working length
- * unit and the way back to the input's, and the writer of each point's
- * results into the caller's buffers. No VTK.
+ * unit and the way back to the input's, the writer of each point's
+ * results into the caller's buffers, and the passes over all of them at
+ * the end (unit, clipped mean, counts, trust). No VTK.
  */
 #ifndef ResultWriter_h
 #define ResultWriter_h
@@ -58,24 +59,36 @@ public:
   /// Asks for the cache lines Store(i, ...) will write.
   void Prefetch(std::int64_t i) const;
 
-  /// Back from the working unit to the input's: curvatures scale like
-  /// 1 / length.
-  void ToInputUnit(std::int64_t numberOfPoints, const WorkingUnit& unit) const;
-
   /// Point `to` gets every result of point `from` (an exact repeat of it).
   void Copy(std::int64_t from, std::int64_t to) const;
-
-  /// The mean curvature clipped to [-clip, clip] (NaN stays NaN).
-  void WriteClippedMean(std::int64_t numberOfPoints, double clip) const;
-
-  /// The points without an estimate, by reason (UnestimatedReason).
-  UnestimatedCounts CountUnestimated(std::int64_t numberOfPoints) const;
 
 private:
   CurvatureBuffers Out;
   std::uint8_t* Reasons;
   int MinimumPointsPerDirection;
 };
+
+// The passes over every point's results once all are written.
+
+/// Back from the working unit to the input's: curvatures scale like
+/// 1 / length.
+void ToInputUnit(const CurvatureBuffers& out, std::int64_t numberOfPoints, const WorkingUnit& unit);
+
+/// The mean curvature clipped to [-clip, clip] (NaN stays NaN).
+void WriteClippedMean(const CurvatureBuffers& out, std::int64_t numberOfPoints, double clip);
+
+/// The points without an estimate, by reason (`reasons`: one per point,
+/// UnestimatedReason).
+UnestimatedCounts CountUnestimated(const CurvatureBuffers& out,
+  const std::uint8_t* reasons,
+  std::int64_t numberOfPoints);
+
+/// CurvatureBuffers::Trusted from the reported standard errors, in the
+/// input's unit; returns the cloud's curvature scale it used. Collective:
+/// every process calls it when any has the buffer.
+double WriteTrusted(const CurvatureBuffers& out,
+  std::int64_t numberOfPoints,
+  const Collectives& processes);
 
 } // namespace pcurv
 
