@@ -304,12 +304,50 @@ void OrderedCloud::GatherFine(const double x[3],
   out.InOrder = false;
 }
 
+/// Grid positions (or -1 for none), 32-bit where the cloud allows: the
+/// nearest neighbours' positions are the largest input of the orientation
+/// graph's build, the normal estimate's peak memory.
+class PositionList
+{
+public:
+  void Assign(std::int64_t count, std::int64_t largest)
+  {
+    this->Wide = largest > std::numeric_limits<std::int32_t>::max();
+    this->Long.assign(this->Wide ? count : 0, -1);
+    this->Short.assign(this->Wide ? 0 : count, -1);
+  }
+  std::int64_t Size() const
+  {
+    return static_cast<std::int64_t>(this->Wide ? this->Long.size() : this->Short.size());
+  }
+  std::int64_t operator[](std::int64_t i) const
+  {
+    return this->Wide ? this->Long[i] : this->Short[i];
+  }
+  void Set(std::int64_t i, std::int64_t position)
+  {
+    if (this->Wide)
+    {
+      this->Long[i] = position;
+    }
+    else
+    {
+      this->Short[i] = static_cast<std::int32_t>(position);
+    }
+  }
+
+private:
+  bool Wide = false;
+  std::vector<std::int32_t> Short;
+  std::vector<std::int64_t> Long;
+};
+
 /// What the per-point pass leaves for the orientation: in grid order, the
 /// normal (arbitrary sign) and the nearest neighbours' grid positions.
 struct PlaneFits
 {
-  std::vector<double> Normals;         // 3 per grid position
-  std::vector<std::int64_t> Neighbors; // GraphNeighbors per position, -1 padded
+  std::vector<double> Normals; // 3 per grid position
+  PositionList Neighbors;      // GraphNeighbors per position, -1 padded
   int GraphNeighbors = 0;
 };
 
@@ -538,8 +576,9 @@ void WriteNearestOthers(std::int64_t position,
   double radius,
   NearestSearch& search,
   int count,
-  std::int64_t* edges)
+  PositionList& edges)
 {
+  const std::int64_t first = position * count;
   const Candidates& kept = search.Found;
   const std::size_t wanted = static_cast<std::size_t>(count);
   std::vector<std::pair<double, std::int64_t>>& ranked = search.Ranked;
@@ -572,7 +611,7 @@ void WriteNearestOthers(std::int64_t position,
   }
   for (std::size_t e = 0; e < wanted; ++e)
   {
-    edges[e] = e < size ? ranked[e].second : -1;
+    edges.Set(first + static_cast<std::int64_t>(e), e < size ? ranked[e].second : -1);
   }
 }
 
@@ -614,8 +653,7 @@ void FitPoint(const OrderedCloud& ordered,
     return;
   }
   FitPlane(search.Offsets, 1.0 / radius, normal);
-  WriteNearestOthers(
-    position, radius, search, fits.GraphNeighbors, &fits.Neighbors[position * fits.GraphNeighbors]);
+  WriteNearestOthers(position, radius, search, fits.GraphNeighbors, fits.Neighbors);
 }
 
 /// Which graph edges a -> b the orientation can do without: those whose
@@ -628,7 +666,7 @@ std::vector<unsigned char> FindRepeatedEdges(const PlaneFits& fits, WorkRunner& 
 {
   const int k = fits.GraphNeighbors;
   const std::int64_t n = static_cast<std::int64_t>(fits.Normals.size() / 3);
-  std::vector<unsigned char> repeated(fits.Neighbors.size(), 0);
+  std::vector<unsigned char> repeated(static_cast<std::size_t>(fits.Neighbors.Size()), 0);
   runner.For(n,
     4096,
     [&](std::int64_t begin, std::int64_t end, EstimationScratch&)
@@ -640,8 +678,12 @@ std::vector<unsigned char> FindRepeatedEdges(const PlaneFits& fits, WorkRunner& 
           const std::int64_t b = fits.Neighbors[a * k + e];
           if (b > a)
           {
-            const std::int64_t* back = &fits.Neighbors[b * k];
-            repeated[a * k + e] = std::find(back, back + k, a) != back + k;
+            bool back = false;
+            for (int f = 0; f < k && !back; ++f)
+            {
+              back = fits.Neighbors[b * k + f] == a;
+            }
+            repeated[a * k + e] = back;
           }
         }
       }
@@ -1296,7 +1338,7 @@ NormalSummary EstimateNormals(const CloudPoints& cloud,
   PlaneFits fits;
   fits.GraphNeighbors = usable.GraphNeighbors;
   fits.Normals.assign(3 * n, 0.0);
-  fits.Neighbors.assign(n * usable.GraphNeighbors, -1);
+  fits.Neighbors.Assign(n * usable.GraphNeighbors, n - 1);
   runner.For(n,
     1024,
     [&](std::int64_t begin, std::int64_t end, EstimationScratch&)
