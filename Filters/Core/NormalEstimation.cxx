@@ -324,6 +324,19 @@ public:
   {
     return this->Wide ? this->Long[i] : this->Short[i];
   }
+  /// Calls `visit` with the positions as a pointer to their stored type.
+  template<typename Visitor>
+  void Visit(Visitor&& visit) const
+  {
+    if (this->Wide)
+    {
+      visit(this->Long.data());
+    }
+    else
+    {
+      visit(this->Short.data());
+    }
+  }
   void Set(std::int64_t i, std::int64_t position)
   {
     if (this->Wide)
@@ -671,22 +684,22 @@ std::vector<unsigned char> FindRepeatedEdges(const PlaneFits& fits, WorkRunner& 
     4096,
     [&](std::int64_t begin, std::int64_t end, EstimationScratch&)
     {
-      for (std::int64_t a = begin; a < end; ++a)
-      {
-        for (int e = 0; e < k; ++e)
+      fits.Neighbors.Visit(
+        [&](const auto* ids)
         {
-          const std::int64_t b = fits.Neighbors[a * k + e];
-          if (b > a)
+          for (std::int64_t a = begin; a < end; ++a)
           {
-            bool back = false;
-            for (int f = 0; f < k && !back; ++f)
+            for (int e = 0; e < k; ++e)
             {
-              back = fits.Neighbors[b * k + f] == a;
+              const std::int64_t b = ids[a * k + e];
+              if (b > a)
+              {
+                const auto* back = ids + b * k;
+                repeated[a * k + e] = std::find(back, back + k, a) != back + k;
+              }
             }
-            repeated[a * k + e] = back;
           }
-        }
-      }
+        });
     });
   return repeated;
 }
