@@ -27,6 +27,18 @@ double ShapeIndex(const PointCurvature& r)
     std::atan2(r.MaximumCurvature + r.MinimumCurvature, r.MaximumCurvature - r.MinimumCurvature);
 }
 
+/// The real buffers of one value a point (each may be null).
+constexpr RealBuffer CurvatureBuffers::*Scalars[] = { &CurvatureBuffers::Minimum,
+  &CurvatureBuffers::Maximum,
+  &CurvatureBuffers::Mean,
+  &CurvatureBuffers::Gauss,
+  &CurvatureBuffers::SineFitRms,
+  &CurvatureBuffers::Surroundings,
+  &CurvatureBuffers::PlaneDistance,
+  &CurvatureBuffers::StandardError,
+  &CurvatureBuffers::ShapeIndex,
+  &CurvatureBuffers::Curvedness };
+
 } // namespace
 
 void ResultWriter::Store(std::int64_t i,
@@ -85,15 +97,12 @@ void ResultWriter::StoreUnestimated(std::int64_t i, UnestimatedReason reason) co
 
 void ResultWriter::Prefetch(std::int64_t i) const
 {
-  for (const RealBuffer* values : { &this->Out.Minimum,
-         &this->Out.Maximum,
-         &this->Out.Mean,
-         &this->Out.Gauss,
-         &this->Out.SineFitRms,
-         &this->Out.Surroundings,
-         &this->Out.PlaneDistance })
+  for (const auto member : Scalars)
   {
-    values->Prefetch(i);
+    if (const RealBuffer& values = this->Out.*member)
+    {
+      values.Prefetch(i);
+    }
   }
   this->Out.MinimumDirection.Prefetch(3 * i);
   this->Out.MaximumDirection.Prefetch(3 * i);
@@ -135,20 +144,11 @@ void ToInputUnit(const CurvatureBuffers& out, std::int64_t numberOfPoints, const
 
 void ResultWriter::Copy(std::int64_t from, std::int64_t to) const
 {
-  for (const RealBuffer* values : { &this->Out.Minimum,
-         &this->Out.Maximum,
-         &this->Out.Mean,
-         &this->Out.Gauss,
-         &this->Out.SineFitRms,
-         &this->Out.Surroundings,
-         &this->Out.PlaneDistance,
-         &this->Out.StandardError,
-         &this->Out.ShapeIndex,
-         &this->Out.Curvedness })
+  for (const auto member : Scalars)
   {
-    if (*values)
+    if (const RealBuffer& values = this->Out.*member)
     {
-      values->CopyRange(from, to, 1);
+      values.CopyRange(from, to, 1);
     }
   }
   for (const RealBuffer* vectors : { &this->Out.MinimumDirection,
