@@ -360,7 +360,7 @@ bool EstimateEveryPoint(CloudPoints cloud,
   StageProgress anchorProgress(
     run.Monitor, run.NormalsShare, anchorShare, static_cast<std::int64_t>(anchors.Points.size()));
   PointEstimator points(cloud, grid, rule, fit, writer);
-  ItemEstimator anchorEstimator(cloud, order, rule, points, anchorProgress);
+  ItemEstimator anchorEstimator(order, points, anchorProgress);
   run.Runner.For(static_cast<std::int64_t>(anchors.Points.size()),
     64,
     [&](std::int64_t begin, std::int64_t end, EstimationScratch& scratch)
@@ -372,7 +372,7 @@ bool EstimateEveryPoint(CloudPoints cloud,
   std::vector<unsigned char> sharedMarks(shared ? cloud.GetNumberOfPoints() : 0, 0);
   const bool shareable = shared && anchors.AnyShareable(rule.Automatic.Sharing);
   points.UseAnchors(shared ? &anchors : nullptr, shareable, sharedMarks.data());
-  ItemEstimator estimator(cloud, order, rule, points, progress);
+  ItemEstimator estimator(order, points, progress);
   if (!anchorProgress.Stopped())
   {
     run.Runner.For(order.GetNumberOfItems(),

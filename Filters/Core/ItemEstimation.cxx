@@ -258,7 +258,7 @@ void ItemEstimator::Estimate(std::int64_t begin, std::int64_t end, EstimationScr
 {
   // Points are reported in batches (a block of the adjustment at once),
   // which keeps the shared counter off the per-point path.
-  const std::int64_t batch = this->Rule.Adjusted ? 1 : 256;
+  const std::int64_t batch = this->Points.GetRule().Adjusted ? 1 : 256;
   std::int64_t pending = 0;
   for (std::int64_t item = begin; item < end; ++item)
   {
@@ -266,7 +266,7 @@ void ItemEstimator::Estimate(std::int64_t begin, std::int64_t end, EstimationScr
     {
       return;
     }
-    if (this->Rule.Adjusted)
+    if (this->Points.GetRule().Adjusted)
     {
       this->EstimateBlock(item, scratch);
     }
@@ -311,12 +311,12 @@ void ItemEstimator::EstimateBlock(std::int64_t block, EstimationScratch& scratch
   const auto neighborCount = [&scratch]()
   { return std::max(0, static_cast<int>(scratch.Neighbors.Count) - 1); };
   DynamicAdjustment& adjustment = scratch.Adjustment;
-  adjustment = DynamicAdjustment(this->Rule.Adjustment);
+  adjustment = DynamicAdjustment(this->Points.GetRule().Adjustment);
   bool firstPoint = true;
   for (std::int64_t k = this->Order.BlockStarts[block]; k < this->Order.BlockStarts[block + 1]; ++k)
   {
     const std::int64_t point = this->Order.Points[k];
-    const bool own = this->Cloud.IsOwn(point);
+    const bool own = this->Points.GetCloud().IsOwn(point);
     if (!this->Points.HasNormal(point))
     {
       if (own)
@@ -325,7 +325,7 @@ void ItemEstimator::EstimateBlock(std::int64_t block, EstimationScratch& scratch
       }
       continue;
     }
-    const double* x = &this->Cloud.Coordinates[3 * point];
+    const double* x = &this->Points.GetCloud().Coordinates[3 * point];
     double s = adjustment.GetSurroundingsThreshold();
     this->Points.Gather(x, s, scratch);
     if (firstPoint)

@@ -92,6 +92,8 @@ public:
     return n[0] != 0.0 || n[1] != 0.0 || n[2] != 0.0;
   }
 
+  const CloudPoints& GetCloud() const { return this->Cloud; }
+  const NeighborhoodRule& GetRule() const { return this->Rule; }
   bool Oriented() const { return this->Settings.Mode == FitMode::OrientedCircles; }
   void StoreUnestimated(std::int64_t point, UnestimatedReason reason) const
   {
@@ -144,14 +146,8 @@ private:
 class ItemEstimator
 {
 public:
-  ItemEstimator(const CloudPoints& cloud,
-    const ProcessingOrder& order,
-    const NeighborhoodRule& rule,
-    PointEstimator& points,
-    StageProgress& progress)
-    : Cloud(cloud)
-    , Order(order)
-    , Rule(rule)
+  ItemEstimator(const ProcessingOrder& order, PointEstimator& points, StageProgress& progress)
+    : Order(order)
     , Points(points)
     , Progress(progress)
   {
@@ -170,9 +166,7 @@ private:
   void PrefetchAhead(std::int64_t item, std::int64_t end) const;
   void EstimateBlock(std::int64_t block, EstimationScratch& scratch);
 
-  const CloudPoints& Cloud;
   const ProcessingOrder& Order;
-  const NeighborhoodRule& Rule;
   PointEstimator& Points;
   StageProgress& Progress;
 };

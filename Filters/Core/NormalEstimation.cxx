@@ -783,18 +783,22 @@ struct Graph
     auto forEachEdge = [&](std::int64_t block, auto&& visit)
     {
       const int k = fits.GraphNeighbors;
-      for (std::int64_t a = block * n / Blocks; a < (block + 1) * n / Blocks; ++a)
-      {
-        for (int e = 0; e < k; ++e)
+      fits.Neighbors.Visit(
+        [&](const auto* ids)
         {
-          const std::int64_t b = fits.Neighbors[a * k + e];
-          if (b >= 0 && !repeated[a * k + e])
+          for (std::int64_t a = block * n / Blocks; a < (block + 1) * n / Blocks; ++a)
           {
-            visit(a, b);
-            visit(b, a);
+            for (int e = 0; e < k; ++e)
+            {
+              const std::int64_t b = ids[a * k + e];
+              if (b >= 0 && !repeated[a * k + e])
+              {
+                visit(a, b);
+                visit(b, a);
+              }
+            }
           }
-        }
-      }
+        });
     };
     runner.For(Blocks,
       1,

@@ -121,8 +121,9 @@ public:
   }
 
 private:
-  double L[N][N] = {};
-  double D[N] = {};
+  // Factor writes every entry it and Solve read (L below the diagonal).
+  double L[N][N];
+  double D[N];
 };
 
 /// Solves the normal equations, scaled to a unit diagonal first: the

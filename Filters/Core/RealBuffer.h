@@ -31,8 +31,6 @@ public:
   }
 
   explicit operator bool() const { return this->Double || this->Single; }
-  bool operator==(std::nullptr_t) const { return !*this; }
-  bool operator!=(std::nullptr_t) const { return !!*this; }
 
   double Get(std::int64_t i) const
   {
