@@ -669,13 +669,15 @@ void FitPoint(const OrderedCloud& ordered,
   WriteNearestOthers(position, radius, search, fits.GraphNeighbors, fits.Neighbors);
 }
 
-/// Which graph edges a -> b the orientation can do without: those whose
-/// reverse b -> a is an edge too and comes later in a's adjacency list
-/// (b > a). The traversal pushes both with the same weight and sign, the
-/// later one is popped first (last in, first out within a bucket), and
-/// the earlier one then always finds b reached: dropping it changes
-/// nothing but the work.
-std::vector<unsigned char> FindRepeatedEdges(const PlaneFits& fits, WorkRunner& runner)
+/// Drops the graph edges a -> b the orientation can do without (their
+/// neighbour entry becomes -1): those whose reverse b -> a is an edge too
+/// and comes later in a's adjacency list (b > a). The traversal pushes
+/// both with the same weight and sign, the later one is popped first (last
+/// in, first out within a bucket), and the earlier one then always finds b
+/// reached: dropping it changes nothing but the work. The entries are
+/// marked first and dropped after, so that every search reads the lists as
+/// they were; the marks are freed before the graph is built (its peak).
+void DropRepeatedEdges(PlaneFits& fits, WorkRunner& runner)
 {
   const int k = fits.GraphNeighbors;
   const std::int64_t n = static_cast<std::int64_t>(fits.Normals.size() / 3);
@@ -701,7 +703,18 @@ std::vector<unsigned char> FindRepeatedEdges(const PlaneFits& fits, WorkRunner& 
           }
         });
     });
-  return repeated;
+  runner.For(fits.Neighbors.Size(),
+    1 << 16,
+    [&](std::int64_t begin, std::int64_t end, EstimationScratch&)
+    {
+      for (std::int64_t i = begin; i < end; ++i)
+      {
+        if (repeated[i])
+        {
+          fits.Neighbors.Set(i, -1);
+        }
+      }
+    });
 }
 
 /// What the traversal needs of an edge a -> b, worked out (in parallel)
@@ -764,17 +777,21 @@ inline signed char Propagate(std::int16_t code, signed char sign)
 template<typename Index>
 struct Graph
 {
+  // Packed: six bytes an entry with 32-bit targets (eight when aligned),
+  // the largest part of the orientation's memory.
+#pragma pack(push, 2)
   struct Entry
   {
     Index Target;
     std::int16_t Code;
   };
+#pragma pack(pop)
   std::vector<std::int64_t> Start; // per position, its first entry; one extra
   std::vector<Entry> Entries;
 
+  /// From fits whose repeated edges are dropped (DropRepeatedEdges).
   Graph(const PlaneFits& fits, WorkRunner& runner)
   {
-    const std::vector<unsigned char> repeated = FindRepeatedEdges(fits, runner);
     const std::int64_t n = static_cast<std::int64_t>(fits.Normals.size() / 3);
     constexpr std::int64_t Blocks = 4;
     // Per block, per position: the entries the block gives it, then where
@@ -791,7 +808,7 @@ struct Graph
             for (int e = 0; e < k; ++e)
             {
               const std::int64_t b = ids[a * k + e];
-              if (b >= 0 && !repeated[a * k + e])
+              if (b >= 0)
               {
                 visit(a, b);
                 visit(b, a);
@@ -992,9 +1009,10 @@ void OrientPointwise(const NormalSettings& settings,
 }
 
 /// Orients every connected part of the graph (NormalOrientation::Outward);
-/// false when the progress monitor asked to stop.
+/// false when the progress monitor asked to stop. The fits' repeated edges
+/// are dropped.
 template<typename Index>
-bool OrientOutward(const PlaneFits& fits,
+bool OrientOutward(PlaneFits& fits,
   const OrderedCloud& ordered,
   WorkRunner& runner,
   std::vector<double>& normals,
@@ -1002,6 +1020,7 @@ bool OrientOutward(const PlaneFits& fits,
   StageProgress* progress)
 {
   const std::int64_t n = ordered.Size();
+  DropRepeatedEdges(fits, runner);
   const Graph<Index> graph(fits, runner);
   std::vector<signed char> signs(n, 0); // 0: not reached yet
   FrontierBuckets<Index> frontier;
