@@ -99,9 +99,8 @@ SharedEstimate AutomaticScaleEstimator::FromAnchors(std::int64_t point,
   nearby.clear();
   for (const std::int64_t anchor : scratch.Anchors.Anchors)
   {
-    const ScaleEstimate& estimate = anchors.Estimates[anchors.EstimateOf[anchor]];
-    nearby.push_back(AnchorEstimate{
-      &estimate.Fit, estimate.Radius, estimate.Error, &this->Cloud.Coordinates[3 * anchor] });
+    nearby.push_back(
+      AnchorEstimate{ &anchors.Fits[anchors.FitOf[anchor]], &this->Cloud.Coordinates[3 * anchor] });
   }
   return EstimateFromAnchors(nearby, x, &this->Cloud.Normals[3 * point], this->Rule.Sharing);
 }

@@ -9,6 +9,7 @@
 #define AutomaticScale_h
 
 #include "CloudStatistics.h"
+#include "IndexList.h"
 #include "OrientedCircleFit.h"
 #include "PointGrid.h"
 #include "SharedFits.h"
@@ -53,8 +54,8 @@ struct AnchorTable
 {
   AnchorCells Cells;
   std::vector<std::int64_t> Points;
-  std::vector<ScaleEstimate> Estimates; // by position in Points
-  std::vector<std::int64_t> EstimateOf; // by cloud point: position, or -1
+  std::vector<AnchorFit> Fits; // by position in Points
+  IndexList FitOf;             // by cloud point: position, or -1
 
   /// Chooses the anchors (every eligible point of the cloud takes part, so
   /// each cell's choice is the same on every process) and keeps those an
@@ -82,7 +83,7 @@ struct AnchorTable
     {
       return false;
     }
-    this->EstimateOf.assign(static_cast<std::size_t>(count), -1);
+    this->FitOf.Assign(count, count);
     std::vector<unsigned char> needed(static_cast<std::size_t>(count), 0);
     if (count == cloud.NumberOfOwnPoints)
     {
@@ -113,11 +114,11 @@ struct AnchorTable
       const std::int64_t point = grid.GetSortedId(j);
       if (needed[point])
       {
-        this->EstimateOf[point] = static_cast<std::int64_t>(this->Points.size());
+        this->FitOf.Set(point, static_cast<std::int64_t>(this->Points.size()));
         this->Points.push_back(point);
       }
     }
-    this->Estimates.resize(this->Points.size());
+    this->Fits.resize(this->Points.size());
     return true;
   }
 
@@ -125,10 +126,9 @@ struct AnchorTable
   /// where every radius is small): else the second pass skips the lookup.
   bool AnyShareable(const SharingRule& rule) const
   {
-    return std::any_of(this->Estimates.begin(),
-      this->Estimates.end(),
-      [&](const ScaleEstimate& e)
-      { return e.Fit.Curvature.Valid && e.Radius >= rule.MinimumRadius; });
+    return std::any_of(this->Fits.begin(),
+      this->Fits.end(),
+      [&](const AnchorFit& fit) { return fit.Valid && fit.Radius >= rule.MinimumRadius; });
   }
 };
 

@@ -23,8 +23,20 @@ std::int64_t BlockIndex(double blocks)
 }
 } // namespace
 
+void ProcessingOrder::UsePoints()
+{
+  this->List = this->Points.data();
+  this->Size = static_cast<std::int64_t>(this->Points.size());
+}
+
 void ProcessingOrder::MakePointwise(const PointGrid& grid, const CloudPoints& cloud)
 {
+  if (cloud.NumberOfOwnPoints == grid.GetNumberOfPoints())
+  {
+    this->List = grid.GetSortedIds();
+    this->Size = grid.GetNumberOfPoints();
+    return;
+  }
   for (std::int64_t j = 0; j < grid.GetNumberOfPoints(); ++j)
   {
     const std::int64_t point = grid.GetSortedId(j);
@@ -33,6 +45,7 @@ void ProcessingOrder::MakePointwise(const PointGrid& grid, const CloudPoints& cl
       this->Points.push_back(point);
     }
   }
+  this->UsePoints();
 }
 
 void ProcessingOrder::MakeBlocks(const PointGrid& grid,
@@ -74,6 +87,7 @@ void ProcessingOrder::MakeBlocks(const PointGrid& grid,
     first = last;
   }
   this->BlockStarts.push_back(static_cast<std::int64_t>(this->Points.size()));
+  this->UsePoints();
 }
 
 PointEstimator::PointEstimator(const CloudPoints& cloud,
@@ -204,7 +218,7 @@ void PointEstimator::StoreScaleEstimate(std::int64_t point, const ScaleEstimate&
 /// radius is wide takes its fit; any other gathers its own neighbourhood.
 void PointEstimator::EstimateAutomaticPoint(std::int64_t point, EstimationScratch& scratch)
 {
-  if (this->Anchors && this->Anchors->EstimateOf[point] >= 0)
+  if (this->Anchors && this->Anchors->FitOf[point] >= 0)
   {
     return;
   }
@@ -244,7 +258,8 @@ void ItemEstimator::EstimateAnchors(std::int64_t begin,
     {
       return;
     }
-    table.Estimates[item] = this->Points.EstimateAnchor(table.Points[item], scratch);
+    const ScaleEstimate estimate = this->Points.EstimateAnchor(table.Points[item], scratch);
+    table.Fits[item] = AnchorFit::Of(estimate.Fit, estimate.Radius, estimate.Error);
     if (++pending == Batch)
     {
       this->Progress.Advance(pending);
@@ -273,7 +288,7 @@ void ItemEstimator::Estimate(std::int64_t begin, std::int64_t end, EstimationScr
     else
     {
       this->PrefetchAhead(item, end);
-      this->Points.EstimateFixed(this->Order.Points[item], scratch);
+      this->Points.EstimateFixed(this->Order.Point(item), scratch);
     }
     if (++pending == batch)
     {
@@ -293,11 +308,11 @@ void ItemEstimator::PrefetchAhead(std::int64_t item, std::int64_t end) const
   constexpr std::int64_t Inputs = 16, Outputs = 8;
   if (item + Inputs < end)
   {
-    this->Points.PrefetchInput(this->Order.Points[item + Inputs]);
+    this->Points.PrefetchInput(this->Order.Point(item + Inputs));
   }
   if (item + Outputs < end)
   {
-    this->Points.PrefetchOutput(this->Order.Points[item + Outputs]);
+    this->Points.PrefetchOutput(this->Order.Point(item + Outputs));
   }
 }
 
@@ -315,7 +330,7 @@ void ItemEstimator::EstimateBlock(std::int64_t block, EstimationScratch& scratch
   bool firstPoint = true;
   for (std::int64_t k = this->Order.BlockStarts[block]; k < this->Order.BlockStarts[block + 1]; ++k)
   {
-    const std::int64_t point = this->Order.Points[k];
+    const std::int64_t point = this->Order.Point(k);
     const bool own = this->Points.GetCloud().IsOwn(point);
     if (!this->Points.HasNormal(point))
     {

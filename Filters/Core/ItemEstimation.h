@@ -50,24 +50,37 @@ struct NeighborhoodRule
 /// processed in that order, each block started afresh. Blocks are defined
 /// in space, not by counting points, so neither the threads nor the split
 /// among processes change them.
-struct ProcessingOrder
+class ProcessingOrder
 {
-  std::vector<std::int64_t> Points;      // cloud point indices
-  std::vector<std::int64_t> BlockStarts; // DVA: block b is Points[BlockStarts[b], BlockStarts[b+1])
+public:
+  /// DVA: block b is items [BlockStarts[b], BlockStarts[b+1]) of the order.
+  std::vector<std::int64_t> BlockStarts;
 
   std::int64_t GetNumberOfItems() const
   {
-    return this->BlockStarts.empty() ? static_cast<std::int64_t>(this->Points.size())
+    return this->BlockStarts.empty() ? this->Size
                                      : static_cast<std::int64_t>(this->BlockStarts.size()) - 1;
   }
 
-  /// One item per own point, in the grid's order.
+  /// The cloud point index of the k-th point in the order.
+  std::int64_t Point(std::int64_t k) const { return this->List[k]; }
+
+  /// One item per own point, in the grid's order (read from the grid, which
+  /// must outlive the order, when every point is own: no copy).
   void MakePointwise(const PointGrid& grid, const CloudPoints& cloud);
   /// One item per block of side `blockLength` with an own point.
   void MakeBlocks(const PointGrid& grid,
     const CloudPoints& cloud,
     const GridLattice& lattice,
     double blockLength);
+
+private:
+  /// Publishes Points as the order.
+  void UsePoints();
+
+  std::vector<std::int64_t> Points; // cloud point indices, unless the grid's are used
+  const std::int64_t* List = nullptr;
+  std::int64_t Size = 0;
 };
 
 /// One point's estimate with the rule, written to the results; shared by

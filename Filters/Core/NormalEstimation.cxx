@@ -1,6 +1,7 @@
 #include "NormalEstimation.h"
 
 #include "WorkRunner.h"
+#include "IndexList.h"
 #include "PointGrid.h"
 
 #include <Eigen/Dense>
@@ -135,7 +136,7 @@ private:
   std::vector<std::int64_t> PositionOfId; // point id -> position
   std::array<std::int64_t, 3> Low{ { 0, 0, 0 } };
   std::array<std::int64_t, 3> Dimensions{ { 1, 1, 1 } };
-  std::vector<std::int64_t> CellStart; // per cell its first position, one extra at the end
+  CellStarts CellStart; // per cell its first position, one extra at the end
   mutable PointGrid Grid;
   mutable std::once_flag GridBuilt;
 };
@@ -192,7 +193,7 @@ void OrderedCloud::SortByCell(WorkRunner& runner)
       }
     });
   const std::int64_t cells = this->Dimensions[0] * this->Dimensions[1] * this->Dimensions[2];
-  BucketByCell(cellOf, cells, this->CellStart, this->Ids);
+  this->CellStart.Bucket(cellOf, cells, this->Ids);
   // Within a cell by coordinates, as PointGrid.
   auto before = [coordinates](std::int64_t a, std::int64_t b)
   { return PrecedesInCell(coordinates, a, b); };
@@ -304,63 +305,12 @@ void OrderedCloud::GatherFine(const double x[3],
   out.InOrder = false;
 }
 
-/// Grid positions (or -1 for none), 32-bit where the cloud allows: the
-/// nearest neighbours' positions are the largest input of the orientation
-/// graph's build, the normal estimate's peak memory.
-class PositionList
-{
-public:
-  void Assign(std::int64_t count, std::int64_t largest)
-  {
-    this->Wide = largest > std::numeric_limits<std::int32_t>::max();
-    this->Long.assign(this->Wide ? count : 0, -1);
-    this->Short.assign(this->Wide ? 0 : count, -1);
-  }
-  std::int64_t Size() const
-  {
-    return static_cast<std::int64_t>(this->Wide ? this->Long.size() : this->Short.size());
-  }
-  std::int64_t operator[](std::int64_t i) const
-  {
-    return this->Wide ? this->Long[i] : this->Short[i];
-  }
-  /// Calls `visit` with the positions as a pointer to their stored type.
-  template<typename Visitor>
-  void Visit(Visitor&& visit) const
-  {
-    if (this->Wide)
-    {
-      visit(this->Long.data());
-    }
-    else
-    {
-      visit(this->Short.data());
-    }
-  }
-  void Set(std::int64_t i, std::int64_t position)
-  {
-    if (this->Wide)
-    {
-      this->Long[i] = position;
-    }
-    else
-    {
-      this->Short[i] = static_cast<std::int32_t>(position);
-    }
-  }
-
-private:
-  bool Wide = false;
-  std::vector<std::int32_t> Short;
-  std::vector<std::int64_t> Long;
-};
-
 /// What the per-point pass leaves for the orientation: in grid order, the
 /// normal (arbitrary sign) and the nearest neighbours' grid positions.
 struct PlaneFits
 {
   std::vector<double> Normals; // 3 per grid position
-  PositionList Neighbors;      // GraphNeighbors per position, -1 padded
+  IndexList Neighbors;         // GraphNeighbors per position, -1 padded
   int GraphNeighbors = 0;
 };
 
@@ -589,7 +539,7 @@ void WriteNearestOthers(std::int64_t position,
   double radius,
   NearestSearch& search,
   int count,
-  PositionList& edges)
+  IndexList& edges)
 {
   const std::int64_t first = position * count;
   const Candidates& kept = search.Found;

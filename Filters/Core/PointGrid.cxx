@@ -55,9 +55,15 @@ GridLattice GridLattice::Make(const double lower[3],
   return lattice;
 }
 
-void BucketByCell(const std::vector<std::int64_t>& cellOf,
+namespace
+{
+/// CellStarts::Bucket in starts of one type: counts, their running sum,
+/// then each point placed at its cell's next free place (which moves every
+/// start one cell on: moved back after, no second array needed).
+template<typename Start>
+void BucketInto(const std::vector<std::int64_t>& cellOf,
   std::int64_t cells,
-  std::vector<std::int64_t>& starts,
+  std::vector<Start>& starts,
   std::vector<std::int64_t>& ids)
 {
   const std::int64_t count = static_cast<std::int64_t>(cellOf.size());
@@ -70,12 +76,43 @@ void BucketByCell(const std::vector<std::int64_t>& cellOf,
   {
     starts[c + 1] += starts[c];
   }
-  std::vector<std::int64_t> next(starts.begin(), starts.end() - 1);
   ids.resize(static_cast<std::size_t>(count));
   for (std::int64_t i = 0; i < count; ++i)
   {
-    ids[next[cellOf[i]]++] = i;
+    ids[starts[cellOf[i]]++] = i;
   }
+  // starts[c] is now where cell c + 1 begins.
+  for (std::int64_t c = cells; c > 0; --c)
+  {
+    starts[c] = starts[c - 1];
+  }
+  starts[0] = 0;
+}
+} // namespace
+
+void CellStarts::Bucket(const std::vector<std::int64_t>& cellOf,
+  std::int64_t cells,
+  std::vector<std::int64_t>& ids)
+{
+  this->Wide =
+    static_cast<std::uint64_t>(cellOf.size()) > std::numeric_limits<std::uint32_t>::max();
+  if (this->Wide)
+  {
+    std::vector<std::uint32_t>().swap(this->Short);
+    BucketInto(cellOf, cells, this->Long, ids);
+  }
+  else
+  {
+    std::vector<std::int64_t>().swap(this->Long);
+    BucketInto(cellOf, cells, this->Short, ids);
+  }
+}
+
+void CellStarts::Clear()
+{
+  this->Wide = false;
+  std::vector<std::int64_t>().swap(this->Long);
+  this->Short.assign(2, 0);
 }
 
 void PointGrid::Build(const double* coordinates, std::int64_t count, const GridLattice& lattice)
@@ -86,7 +123,7 @@ void PointGrid::Build(const double* coordinates, std::int64_t count, const GridL
   {
     axis.clear();
   }
-  this->CellStart.assign(2, 0);
+  this->CellStart.Clear();
   this->Low = { { 0, 0, 0 } };
   this->Dimensions = { { 1, 1, 1 } };
   this->Diagonal = 0.0;
@@ -129,7 +166,7 @@ void PointGrid::Build(const double* coordinates, std::int64_t count, const GridL
         this->Dimensions[0] +
       this->CellIndex(x[0], 0);
   }
-  BucketByCell(cellOf, numberOfCells, this->CellStart, this->Ids);
+  this->CellStart.Bucket(cellOf, numberOfCells, this->Ids);
   // Within a cell, by coordinates: independent of the input's order.
   auto before = [coordinates](std::int64_t a, std::int64_t b)
   { return PrecedesInCell(coordinates, a, b); };
@@ -162,7 +199,7 @@ void PointGrid::BuildDenseCells(const double* coordinates)
   {
     axis.clear();
   }
-  const std::int64_t numberOfCells = static_cast<std::int64_t>(this->CellStart.size()) - 1;
+  const std::int64_t numberOfCells = this->CellStart.Size() - 1;
   std::vector<std::int64_t> counts;
   for (std::int64_t c = 0; c < numberOfCells; ++c)
   {

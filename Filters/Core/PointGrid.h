@@ -96,14 +96,39 @@ struct ShellPoints
   std::size_t Count = 0;
 };
 
-/// Points in cell order: `starts` (cells + 1) holds where each cell's
-/// points begin in `ids`, and `ids` the point indices, cell by cell, in
-/// increasing index within a cell (a counting sort of cellOf, which holds
-/// each point's cell in [0, cells)).
-void BucketByCell(const std::vector<std::int64_t>& cellOf,
-  std::int64_t cells,
-  std::vector<std::int64_t>& starts,
-  std::vector<std::int64_t>& ids);
+/// Where each cell's points begin in the cell order (one more entry at the
+/// end), 32-bit where the points allow: the lattice over a surface's
+/// bounding box has several cells a point, most of them empty, and this
+/// index is then as large as the sorted coordinates.
+class CellStarts
+{
+public:
+  /// A counting sort of `cellOf`, which holds each point's cell in
+  /// [0, cells): the starts of the cells, and in `ids` the point indices
+  /// cell by cell, in increasing index within a cell.
+  void Bucket(const std::vector<std::int64_t>& cellOf,
+    std::int64_t cells,
+    std::vector<std::int64_t>& ids);
+
+  /// No points, in one cell.
+  void Clear();
+
+  std::int64_t operator[](std::int64_t cell) const
+  {
+    return this->Wide ? this->Long[cell] : static_cast<std::int64_t>(this->Short[cell]);
+  }
+
+  /// Cells, plus one.
+  std::int64_t Size() const
+  {
+    return static_cast<std::int64_t>(this->Wide ? this->Long.size() : this->Short.size());
+  }
+
+private:
+  bool Wide = false;
+  std::vector<std::uint32_t> Short;
+  std::vector<std::int64_t> Long;
+};
 
 /// The order of two points within a cell: by coordinates (x, then y, then
 /// z), identical points by index. A total order that does not depend on
@@ -135,6 +160,8 @@ public:
   /// Id (index into the coordinates given to Build) of the j-th point in
   /// cell order.
   std::int64_t GetSortedId(std::int64_t j) const { return this->Ids[j]; }
+  /// Every id in cell order (GetNumberOfPoints of them).
+  const std::int64_t* GetSortedIds() const { return this->Ids.data(); }
 
   /// Calls visit(q, id) for every point q with |q - x| < radius, in a fixed
   /// order that depends only on the grid and x.
@@ -277,7 +304,7 @@ private:
   std::array<std::int64_t, 3> Low{ { 0, 0, 0 } }; // lattice cell of local cell 0
   std::array<std::int64_t, 3> Dimensions{ { 1, 1, 1 } };
   double Diagonal = 0.0;
-  std::vector<std::int64_t> CellStart; // per cell, its first sorted point; one extra at the end
+  CellStarts CellStart; // per cell, its first sorted point; one extra at the end
   std::array<std::vector<double>, 3> Sorted; // coordinates in cell order, one array per axis
   std::vector<std::int64_t> Ids;             // original ids in cell order
   std::vector<std::int32_t> DenseOfCell;     // per cell, its DenseCells index or -1 (empty: none)

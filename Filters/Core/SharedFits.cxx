@@ -122,7 +122,7 @@ SurfaceAtPoint EvaluateAt(const AnchorEstimate& anchor,
   const double h = d.dot(ToEigen(surface.Frame.Normal));
   const SurfaceJet jet = JetAt(surface, u, v);
   const double allowedHeight = std::max(rule.HeightDeviations * std::sqrt(surface.NoiseVariance),
-    0.01 * anchor.Radius * surface.InverseScale);
+    0.01 * anchor.Fit->Radius * surface.InverseScale);
   if (!(std::fabs(h - jet.Height) <= allowedHeight))
   {
     return at;
@@ -189,13 +189,13 @@ SharedEstimate EstimateFromAnchors(const std::vector<AnchorEstimate>& anchors,
   std::size_t used = 0;
   for (const AnchorEstimate& anchor : anchors)
   {
-    const PointCurvature& k = anchor.Fit->Curvature;
-    const double reach = rule.OffsetFraction * anchor.Radius;
+    const AnchorFit& fit = *anchor.Fit;
+    const double reach = rule.OffsetFraction * fit.Radius;
     const Vector3d offset =
       point - Vector3d(anchor.Position[0], anchor.Position[1], anchor.Position[2]);
     const double closeness = 1.0 - offset.squaredNorm() / (reach * reach);
-    if (!k.Valid || !(closeness > 0.0) || !(anchor.Radius >= rule.MinimumRadius) ||
-      !(anchor.Fit->Surface.InverseScale > 0.0))
+    if (!fit.Valid || !(closeness > 0.0) || !(fit.Radius >= rule.MinimumRadius) ||
+      !(fit.Surface.InverseScale > 0.0))
     {
       continue;
     }
@@ -211,14 +211,14 @@ SharedEstimate EstimateFromAnchors(const std::vector<AnchorEstimate>& anchors,
     shapes[used++] = { w, at.Shape };
     fitted += w * at.Normal;
     directionsNormal += w * at.DirectionsNormal;
-    errors += w * anchor.Error * anchor.Error;
-    radius += w * anchor.Radius;
-    neighbors += w * k.NeighborCount;
-    rms += w * k.SineFitRms;
+    errors += w * fit.Error * fit.Error;
+    radius += w * fit.Radius;
+    neighbors += w * fit.NeighborCount;
+    rms += w * fit.SineFitRms;
     if (w > heaviest)
     {
       heaviest = w;
-      validDirections = k.ValidDirections;
+      validDirections = fit.ValidDirections;
     }
   }
   if (!(weights > 0.0))

@@ -55,12 +55,33 @@ struct SharingRule
   double HeightDeviations = 4.0;
 };
 
+/// What a point near an anchor uses of the anchor's estimate (kept for
+/// every anchor until the cloud is done; the rest of the estimate is
+/// written out when made).
+struct AnchorFit
+{
+  FittedSurface Surface;
+  double Radius = 0.0; ///< the neighbourhood's radius it was fitted over
+  double Error = 0.0;  ///< its reported standard error
+  double SineFitRms = 0.0;
+  int NeighborCount = 0;
+  int ValidDirections = 0;
+  bool Valid = false; ///< its curvatures were estimated
+
+  /// The part of `estimate` (fitted over `radius`, reported `error`) kept.
+  static AnchorFit Of(const OrientedCircleResult& estimate, double radius, double error)
+  {
+    const PointCurvature& k = estimate.Curvature;
+    return AnchorFit{
+      estimate.Surface, radius, error, k.SineFitRms, k.NeighborCount, k.ValidDirections, k.Valid
+    };
+  }
+};
+
 /// An anchor's estimate, as a point near it may use it.
 struct AnchorEstimate
 {
-  const OrientedCircleResult* Fit = nullptr;
-  double Radius = 0.0; ///< the neighbourhood's radius it was fitted over
-  double Error = 0.0;  ///< its reported standard error
+  const AnchorFit* Fit = nullptr;
   const double* Position = nullptr;
 };
 
