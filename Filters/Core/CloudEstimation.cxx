@@ -202,7 +202,7 @@ NormalSummary ReplaceNormals(CloudPoints& cloud,
     }
     for (std::int64_t i = 0; i < cloud.NumberOfOwnPoints; ++i)
     {
-      out.SetRange(3 * cloud.InputIds[i], &cloud.Normals[3 * i], 3);
+      out.SetRange(3 * cloud.InputId(i), &cloud.Normals[3 * i], 3);
     }
   }
   return summary;

@@ -1,6 +1,7 @@
 #include "CloudStatistics.h"
 
 #include <algorithm>
+#include <numeric>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -144,6 +145,7 @@ std::vector<std::int64_t> EarlierEqualPoints(const CloudPoints& cloud, std::int6
 template<typename Keep>
 void KeepPoints(CloudPoints& cloud, Keep&& keep)
 {
+  cloud.ListInputIds();
   std::int64_t kept = 0, keptOwn = 0;
   for (std::int64_t i = 0; i < cloud.GetNumberOfPoints(); ++i)
   {
@@ -256,8 +258,16 @@ void CloudPoints::Reset(std::int64_t numberOfInputPoints)
   this->FiniteInput.assign(numberOfInputPoints, 0);
   this->Coordinates.reserve(3 * numberOfInputPoints);
   this->Normals.reserve(3 * numberOfInputPoints);
-  this->InputIds.reserve(numberOfInputPoints);
   this->NumberOfOwnPoints = 0;
+}
+
+void CloudPoints::ListInputIds()
+{
+  if (this->InputIds.empty() && this->NumberOfOwnPoints > 0)
+  {
+    this->InputIds.resize(static_cast<std::size_t>(this->NumberOfOwnPoints));
+    std::iota(this->InputIds.begin(), this->InputIds.end(), std::int64_t{ 0 });
+  }
 }
 
 void CloudPoints::AddInputPoint(std::int64_t id, const double x[3], const double normal[3])
@@ -271,6 +281,16 @@ void CloudPoints::AddInputPoint(std::int64_t id, const double x[3], const double
   this->FiniteInput[id] = 1;
   this->Coordinates.insert(this->Coordinates.end(), x, x + 3);
   this->Normals.insert(this->Normals.end(), n, n + 3);
+  if (this->InputIds.empty() && id == this->NumberOfOwnPoints)
+  {
+    ++this->NumberOfOwnPoints; // the ids are still 0, 1, 2, ...
+    return;
+  }
+  if (this->InputIds.empty())
+  {
+    this->InputIds.reserve(this->FiniteInput.size());
+    this->ListInputIds();
+  }
   this->InputIds.push_back(id);
   this->NumberOfOwnPoints = static_cast<std::int64_t>(this->InputIds.size());
 }
@@ -284,7 +304,7 @@ std::vector<RepeatedPoint> RemoveRepeatedPoints(CloudPoints& cloud)
   {
     if (earlier[i] >= 0) // the earliest of equal points, which is kept
     {
-      repeats.push_back({ cloud.InputIds[i], cloud.InputIds[earlier[i]] });
+      repeats.push_back({ cloud.InputId(i), cloud.InputId(earlier[i]) });
     }
   }
   if (!repeats.empty())

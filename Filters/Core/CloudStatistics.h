@@ -29,9 +29,12 @@ namespace pcurv
 /// processes. Coordinates in double; normals unit, or zero when unusable.
 struct CloudPoints
 {
-  std::vector<double> Coordinates;        // 3 per point
-  std::vector<double> Normals;            // 3 per point
-  std::vector<std::int64_t> InputIds;     // input id of each own point
+  std::vector<double> Coordinates; // 3 per point
+  std::vector<double> Normals;     // 3 per point
+  /// The input id of each own point; empty while they are 0, 1, 2, ...
+  /// (every input point finite and kept: the usual cloud), which saves a
+  /// large array. Read through InputId.
+  std::vector<std::int64_t> InputIds;
   std::vector<unsigned char> FiniteInput; // per input point: coordinates finite
   std::int64_t NumberOfOwnPoints = 0;
 
@@ -40,6 +43,14 @@ struct CloudPoints
     return static_cast<std::int64_t>(this->Coordinates.size() / 3);
   }
   bool IsOwn(std::int64_t point) const { return point < this->NumberOfOwnPoints; }
+  /// The input id of own point `point`.
+  std::int64_t InputId(std::int64_t point) const
+  {
+    return this->InputIds.empty() ? point : this->InputIds[point];
+  }
+  /// Makes InputIds list every own point's id (before they stop being
+  /// 0, 1, 2, ...).
+  void ListInputIds();
   std::int64_t GetNumberOfInputPoints() const
   {
     return static_cast<std::int64_t>(this->FiniteInput.size());

@@ -113,21 +113,24 @@ void PointEstimator::UseAnchors(const AnchorTable* table, bool shareable, unsign
 
 void PointEstimator::PrefetchInput(std::int64_t point) const
 {
-  __builtin_prefetch(&this->Cloud.InputIds[point]);
+  if (!this->Cloud.InputIds.empty())
+  {
+    __builtin_prefetch(&this->Cloud.InputIds[point]);
+  }
   __builtin_prefetch(&this->Cloud.Coordinates[3 * point]);
   __builtin_prefetch(&this->Cloud.Normals[3 * point]);
 }
 
 void PointEstimator::PrefetchOutput(std::int64_t point) const
 {
-  this->Out.Prefetch(this->Cloud.InputIds[point]);
+  this->Out.Prefetch(this->Cloud.InputId(point));
 }
 
 void PointEstimator::EstimateFixed(std::int64_t point, EstimationScratch& scratch)
 {
   if (!this->HasNormal(point))
   {
-    this->Out.StoreUnestimated(this->Cloud.InputIds[point], UnestimatedReason::NoNormal);
+    this->Out.StoreUnestimated(this->Cloud.InputId(point), UnestimatedReason::NoNormal);
     return;
   }
   if (this->Rule.AutomaticScale)
@@ -168,7 +171,7 @@ void PointEstimator::EstimateGathered(std::int64_t point,
   const NeighborOffsets& offsets = scratch.Neighbors;
   estimator.AddNeighborOffsets(
     offsets.Dx.data(), offsets.Dy.data(), offsets.Dz.data(), offsets.Count);
-  this->Out.Store(this->Cloud.InputIds[point], estimator.Estimate(this->Settings), s, p, target);
+  this->Out.Store(this->Cloud.InputId(point), estimator.Estimate(this->Settings), s, p, target);
 }
 
 void PointEstimator::EstimateOriented(std::int64_t point,
@@ -190,7 +193,7 @@ void PointEstimator::EstimateOriented(std::int64_t point,
     });
   const OrientedCircleResult result = estimator.Estimate(
     this->Settings.MinimumPointsPerDirection, this->Settings.MaximumOpposingFraction);
-  this->Out.Store(this->Cloud.InputIds[point],
+  this->Out.Store(this->Cloud.InputId(point),
     result.Curvature,
     s,
     p,
@@ -211,7 +214,7 @@ ScaleEstimate PointEstimator::EstimateAnchor(std::int64_t point, EstimationScrat
 void PointEstimator::StoreScaleEstimate(std::int64_t point, const ScaleEstimate& estimate) const
 {
   this->Out.Store(
-    this->Cloud.InputIds[point], estimate.Fit.Curvature, estimate.Radius, 0.0, 0, estimate.Error);
+    this->Cloud.InputId(point), estimate.Fit.Curvature, estimate.Radius, 0.0, 0, estimate.Error);
 }
 
 /// An anchor's estimate is stored already; a point near an anchor whose
@@ -240,7 +243,7 @@ bool PointEstimator::EstimateFromAnchors(std::int64_t point, EstimationScratch& 
     return false;
   }
   this->Out.Store(
-    this->Cloud.InputIds[point], shared.Curvature, shared.Radius, 0.0, 0, shared.Error);
+    this->Cloud.InputId(point), shared.Curvature, shared.Radius, 0.0, 0, shared.Error);
   this->SharedMarks[point] = 1;
   return true;
 }

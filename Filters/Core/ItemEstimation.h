@@ -110,7 +110,7 @@ public:
   bool Oriented() const { return this->Settings.Mode == FitMode::OrientedCircles; }
   void StoreUnestimated(std::int64_t point, UnestimatedReason reason) const
   {
-    this->Out.StoreUnestimated(this->Cloud.InputIds[point], reason);
+    this->Out.StoreUnestimated(this->Cloud.InputId(point), reason);
   }
   /// The offsets of the neighbours within s into scratch.Neighbors.
   void Gather(const double* x, double s, EstimationScratch& scratch) const
