@@ -118,22 +118,31 @@ private:
   /// Ids and CellStart: a counting sort by cell, then each cell's points
   /// by coordinates (in parallel).
   void SortByCell(WorkRunner& runner);
-  /// X, Y, Z and PositionOfId from Ids (in parallel).
+  /// X, Y, Z from Ids (in parallel).
   void CopyInOrder(WorkRunner& runner);
 
-  /// The PointGrid over the cloud, built by the first query that needs it.
+  /// The PointGrid over the cloud, and PositionOfId, which only its queries
+  /// need: built by the first query that needs them.
   const PointGrid& FineGrid() const
   {
     std::call_once(this->GridBuilt,
-      [this]() { this->Grid.Build(this->Cloud.Coordinates.data(), this->Size(), this->Lattice); });
+      [this]()
+      {
+        this->Grid.Build(this->Cloud.Coordinates.data(), this->Size(), this->Lattice);
+        this->PositionOfId.resize(this->Ids.size());
+        for (std::int64_t p = 0; p < this->Size(); ++p)
+        {
+          this->PositionOfId[this->Ids[p]] = p;
+        }
+      });
     return this->Grid;
   }
 
   const CloudPoints& Cloud;
   GridLattice Lattice;
   std::vector<double> X, Y, Z;
-  std::vector<std::int64_t> Ids;          // position -> point id
-  std::vector<std::int64_t> PositionOfId; // point id -> position
+  std::vector<std::int64_t> Ids;                  // position -> point id
+  mutable std::vector<std::int64_t> PositionOfId; // point id -> position (with the PointGrid)
   std::array<std::int64_t, 3> Low{ { 0, 0, 0 } };
   std::array<std::int64_t, 3> Dimensions{ { 1, 1, 1 } };
   CellStarts CellStart; // per cell its first position, one extra at the end
@@ -217,7 +226,6 @@ void OrderedCloud::CopyInOrder(WorkRunner& runner)
 {
   const std::int64_t n = this->Size();
   const double* coordinates = this->Cloud.Coordinates.data();
-  this->PositionOfId.resize(n);
   for (std::vector<double>* axis : { &this->X, &this->Y, &this->Z })
   {
     axis->resize(n);
@@ -229,7 +237,6 @@ void OrderedCloud::CopyInOrder(WorkRunner& runner)
       for (std::int64_t p = begin; p < end; ++p)
       {
         const std::int64_t id = this->Ids[p];
-        this->PositionOfId[id] = p;
         this->X[p] = coordinates[3 * id];
         this->Y[p] = coordinates[3 * id + 1];
         this->Z[p] = coordinates[3 * id + 2];
