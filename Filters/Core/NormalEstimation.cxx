@@ -749,11 +749,28 @@ struct Graph
   /// From fits whose repeated edges are dropped (DropRepeatedEdges).
   Graph(const PlaneFits& fits, WorkRunner& runner)
   {
+    // A point has its own edges and those of the points it is nearest to:
+    // far fewer than 256 entries, but for a hub of many neighbourhoods,
+    // which makes the build start again with wider counts.
+    if (!this->Build<std::uint8_t>(fits, runner))
+    {
+      this->Build<std::int32_t>(fits, runner);
+    }
+  }
+
+private:
+  /// Builds the lists with per-block counts of type Count; false (nothing
+  /// built) when some point's entries do not fit in one.
+  template<typename Count>
+  bool Build(const PlaneFits& fits, WorkRunner& runner)
+  {
     const std::int64_t n = static_cast<std::int64_t>(fits.Normals.size() / 3);
     constexpr std::int64_t Blocks = 4;
+    constexpr Count Largest = std::numeric_limits<Count>::max();
     // Per block, per position: the entries the block gives it, then where
     // the block writes the next one (from the position's first entry).
-    std::vector<std::vector<std::int32_t>> placed(Blocks);
+    std::vector<std::vector<Count>> placed(Blocks);
+    std::vector<unsigned char> overflow(Blocks, 0);
     auto forEachEdge = [&](std::int64_t block, auto&& visit)
     {
       const int k = fits.GraphNeighbors;
@@ -781,18 +798,33 @@ struct Graph
         for (std::int64_t block = begin; block < end; ++block)
         {
           placed[block].assign(n, 0);
-          forEachEdge(block, [&](std::int64_t a, std::int64_t) { ++placed[block][a]; });
+          forEachEdge(block,
+            [&](std::int64_t a, std::int64_t)
+            {
+              Count& count = placed[block][a];
+              overflow[block] |= count == Largest;
+              count = static_cast<Count>(count + (count < Largest));
+            });
         }
       });
+    if (std::find(overflow.begin(), overflow.end(), 1) != overflow.end())
+    {
+      return false;
+    }
     this->Start.assign(n + 1, 0);
     for (std::int64_t a = 0; a < n; ++a)
     {
       std::int64_t entries = 0;
-      for (std::vector<std::int32_t>& counts : placed)
+      for (std::vector<Count>& counts : placed)
       {
-        const std::int32_t count = counts[a];
-        counts[a] = static_cast<std::int32_t>(entries);
+        const Count count = counts[a];
+        counts[a] = static_cast<Count>(entries);
         entries += count;
+      }
+      if (entries > Largest) // the last block's writes would not fit
+      {
+        std::vector<std::int64_t>().swap(this->Start);
+        return false;
       }
       this->Start[a + 1] = this->Start[a] + entries;
     }
@@ -812,6 +844,7 @@ struct Graph
             });
         }
       });
+    return true;
   }
 };
 

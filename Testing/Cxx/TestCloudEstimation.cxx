@@ -784,6 +784,35 @@ void TestNormalEstimation(Checks& checks)
       expected);
   }
 }
+
+/// An orientation graph of 300 neighbours a point: every point has more
+/// than 255 entries (too many for the graph build's one-byte counts; it
+/// then counts again in wider integers). The normals' signs follow the
+/// graph's edges, so a misplaced entry turns some normal inward: every
+/// normal of the sphere is outward, and the same for any thread count.
+void TestWideOrientationGraph(Checks& checks)
+{
+  const auto samples = testing::Sample(testing::Sphere(2.0), 3000, 23);
+  NormalSettings settings;
+  settings.NumberOfNeighbors = 300;
+  settings.GraphNeighbors = 300;
+  SerialRunner serial;
+  std::vector<double> normals(3 * samples.size());
+  const NormalSummary summary =
+    EstimateCloudNormals(MakeCloud(samples), settings, Collectives{}, serial, normals.data());
+  int outward = 0;
+  for (std::size_t i = 0; i < samples.size(); ++i)
+  {
+    outward += testing::Dot({ { normals[3 * i], normals[3 * i + 1], normals[3 * i + 2] } },
+                 samples[i].Normal) > 0.9;
+  }
+  checks.Equal("wide graph: every normal outward", outward, static_cast<int>(samples.size()));
+  checks.Equal("wide graph: one connected part", summary.Components, 1);
+  ThreadRunner threads(3);
+  std::vector<double> threaded(normals.size());
+  EstimateCloudNormals(MakeCloud(samples), settings, Collectives{}, threads, threaded.data());
+  checks.True("wide graph: 3 threads bit-identical to 1", threaded == normals);
+}
 } // namespace
 
 /// The robust colour limit: the 95th percentile of |values| to within one
@@ -1131,6 +1160,7 @@ int main(int argc, char* argv[])
     { "TestFlaggedAndStopped", TestFlaggedAndStopped },
     { "TestAdjustmentWithoutSpacing", TestAdjustmentWithoutSpacing },
     { "TestNormalEstimation", TestNormalEstimation },
+    { "TestWideOrientationGraph", TestWideOrientationGraph },
     { "TestRepeatedPoints", TestRepeatedPoints },
     { "TestOrientedCircles", TestOrientedCircles },
     { "TestNoisyScan", TestNoisyScan },
