@@ -97,10 +97,10 @@ SharedEstimate AutomaticScaleEstimator::FromAnchors(std::int64_t point,
   anchors.Cells.AnchorsAround(x, scratch.Anchors);
   std::vector<AnchorEstimate>& nearby = scratch.NearbyAnchors;
   nearby.clear();
-  for (const std::int64_t anchor : scratch.Anchors.Anchors)
+  for (const std::int64_t position : scratch.Anchors.Anchors)
   {
-    nearby.push_back(
-      AnchorEstimate{ &anchors.Fits[anchors.FitOf[anchor]], &this->Cloud.Coordinates[3 * anchor] });
+    nearby.push_back(AnchorEstimate{
+      &anchors.Fits[position], &this->Cloud.Coordinates[3 * anchors.Points[position]] });
   }
   return EstimateFromAnchors(nearby, x, &this->Cloud.Normals[3 * point], this->Rule.Sharing);
 }

@@ -9,7 +9,6 @@
 #define AutomaticScale_h
 
 #include "CloudStatistics.h"
-#include "IndexList.h"
 #include "OrientedCircleFit.h"
 #include "PointGrid.h"
 #include "SharedFits.h"
@@ -54,8 +53,10 @@ struct AnchorTable
 {
   AnchorCells Cells;
   std::vector<std::int64_t> Points;
-  std::vector<AnchorFit> Fits; // by position in Points
-  IndexList FitOf;             // by cloud point: position, or -1
+  std::vector<AnchorFit> Fits;     // by position in Points
+  std::vector<unsigned char> Kept; // by cloud point: 1 for the anchors in Points
+
+  bool IsAnchor(std::int64_t point) const { return this->Kept[point] != 0; }
 
   /// Chooses the anchors (every eligible point of the cloud takes part, so
   /// each cell's choice is the same on every process) and keeps those an
@@ -83,8 +84,8 @@ struct AnchorTable
     {
       return false;
     }
-    this->FitOf.Assign(count, count);
-    std::vector<unsigned char> needed(static_cast<std::size_t>(count), 0);
+    std::vector<unsigned char>& needed = this->Kept;
+    needed.assign(static_cast<std::size_t>(count), 0);
     if (count == cloud.NumberOfOwnPoints)
     {
       this->Cells.MarkEveryAnchor(needed); // no halo: every anchor is an own point
@@ -114,10 +115,10 @@ struct AnchorTable
       const std::int64_t point = grid.GetSortedId(j);
       if (needed[point])
       {
-        this->FitOf.Set(point, static_cast<std::int64_t>(this->Points.size()));
         this->Points.push_back(point);
       }
     }
+    this->Cells.NumberAnchors(this->Points);
     this->Fits.resize(this->Points.size());
     return true;
   }

@@ -440,6 +440,7 @@ EstimationSummary EstimateCloud(CloudPoints cloud,
       writer.StoreUnestimated(i, UnestimatedReason::BadCoordinate);
     }
   }
+  cloud.ReleaseFiniteInput(); // not read again
   const EstimationRun run{ processes, runner, monitor, normalsShare };
   if (!EstimateEveryPoint(std::move(cloud), rule, boxes, settings, run, writer, summary))
   {

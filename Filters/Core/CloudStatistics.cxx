@@ -256,6 +256,7 @@ void CloudPoints::Reset(std::int64_t numberOfInputPoints)
   this->Normals.clear();
   this->InputIds.clear();
   this->FiniteInput.assign(numberOfInputPoints, 0);
+  this->NumberOfInputPoints = numberOfInputPoints;
   this->Coordinates.reserve(3 * numberOfInputPoints);
   this->Normals.reserve(3 * numberOfInputPoints);
   this->NumberOfOwnPoints = 0;

@@ -35,8 +35,11 @@ struct CloudPoints
   /// (every input point finite and kept: the usual cloud), which saves a
   /// large array. Read through InputId.
   std::vector<std::int64_t> InputIds;
-  std::vector<unsigned char> FiniteInput; // per input point: coordinates finite
+  /// Per input point: coordinates finite (may be released once read:
+  /// ReleaseFiniteInput).
+  std::vector<unsigned char> FiniteInput;
   std::int64_t NumberOfOwnPoints = 0;
+  std::int64_t NumberOfInputPoints = 0;
 
   std::int64_t GetNumberOfPoints() const
   {
@@ -48,13 +51,11 @@ struct CloudPoints
   {
     return this->InputIds.empty() ? point : this->InputIds[point];
   }
+  void ReleaseFiniteInput() { std::vector<unsigned char>().swap(this->FiniteInput); }
   /// Makes InputIds list every own point's id (before they stop being
   /// 0, 1, 2, ...).
   void ListInputIds();
-  std::int64_t GetNumberOfInputPoints() const
-  {
-    return static_cast<std::int64_t>(this->FiniteInput.size());
-  }
+  std::int64_t GetNumberOfInputPoints() const { return this->NumberOfInputPoints; }
 
   /// Starts a cloud of `numberOfInputPoints` input points, none added yet.
   void Reset(std::int64_t numberOfInputPoints);

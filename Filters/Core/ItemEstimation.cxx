@@ -221,7 +221,7 @@ void PointEstimator::StoreScaleEstimate(std::int64_t point, const ScaleEstimate&
 /// radius is wide takes its fit; any other gathers its own neighbourhood.
 void PointEstimator::EstimateAutomaticPoint(std::int64_t point, EstimationScratch& scratch)
 {
-  if (this->Anchors && this->Anchors->FitOf[point] >= 0)
+  if (this->Anchors && this->Anchors->IsAnchor(point))
   {
     return;
   }

@@ -332,12 +332,26 @@ void AnchorCells::AnchorsAround(const double x[3], Around& around) const
       {
         const auto found =
           this->Anchors.find(CellKey{ centre.I + di, centre.J + dj, centre.K + dk });
-        if (found != this->Anchors.end())
+        if (found != this->Anchors.end() && found->second >= 0)
         {
           around.Anchors.push_back(found->second);
         }
       }
     }
+  }
+}
+
+void AnchorCells::NumberAnchors(const std::vector<std::int64_t>& kept)
+{
+  for (auto& cell : this->Anchors)
+  {
+    cell.second = -1;
+  }
+  for (std::size_t position = 0; position < kept.size(); ++position)
+  {
+    // An anchor is the one of the cell that holds it.
+    this->Anchors[this->KeyOf(this->Coordinates + 3 * kept[position])] =
+      static_cast<std::int64_t>(position);
   }
 }
 

@@ -125,7 +125,9 @@ public:
   };
 
   /// The anchors around the last cell asked for (AnchorsAround): points in
-  /// the grid's order mostly share their cell with the one before.
+  /// the grid's order mostly share their cell with the one before. Point
+  /// indices, or their positions in the list given to NumberAnchors once
+  /// it was called.
   struct Around
   {
     bool Known = false;
@@ -201,6 +203,10 @@ public:
     const std::function<std::int64_t(std::int64_t)>& pointAt,
     std::vector<unsigned char>& marks,
     const std::function<bool()>& keepGoing) const;
+
+  /// From now on AnchorsAround gives each anchor's position in `kept`
+  /// (point indices of anchors), and skips the anchors not in it.
+  void NumberAnchors(const std::vector<std::int64_t>& kept);
 
   /// Sets marks[anchor] to 1 for every anchor.
   void MarkEveryAnchor(std::vector<unsigned char>& marks) const
