@@ -94,13 +94,20 @@ SharedEstimate AutomaticScaleEstimator::FromAnchors(std::int64_t point,
   AutomaticScaleScratch& scratch) const
 {
   const double* x = &this->Cloud.Coordinates[3 * point];
-  anchors.Cells.AnchorsAround(x, scratch.Anchors);
   std::vector<AnchorEstimate>& nearby = scratch.NearbyAnchors;
-  nearby.clear();
-  for (const std::int64_t position : scratch.Anchors.Anchors)
+  // Points in the grid's order mostly share their cell with the one
+  // before: the anchors around it, with their frames, are made once.
+  if (anchors.Cells.AnchorsAround(x, scratch.Anchors))
   {
-    nearby.push_back(AnchorEstimate{
-      &anchors.Fits[position], &this->Cloud.Coordinates[3 * anchors.Points[position]] });
+    nearby.clear();
+    for (const std::int64_t position : scratch.Anchors.Anchors)
+    {
+      const std::int64_t anchor = anchors.Points[position];
+      const double* n = &this->Cloud.Normals[3 * anchor];
+      nearby.push_back(AnchorEstimate{ &anchors.Fits[position],
+        &this->Cloud.Coordinates[3 * anchor],
+        MakeTangentFrame({ { n[0], n[1], n[2] } }) });
+    }
   }
   return EstimateFromAnchors(nearby, x, &this->Cloud.Normals[3 * point], this->Rule.Sharing);
 }

@@ -29,9 +29,10 @@ struct SurfaceJet
   double Height, Fu, Fv, Fuu, Fuv, Fvv;
 };
 
-SurfaceJet JetAt(const FittedSurface& surface, double u, double v)
+SurfaceJet JetAt(const std::array<double, OrientedCircleSums::PositionUnknowns>& x,
+  double u,
+  double v)
 {
-  const auto& x = surface.Coefficients;
   const double c = x[0], a = x[1], b = x[2];
   SurfaceJet jet;
   jet.Height = 0.5 * x[9] + x[3] * u + x[4] * v +
@@ -114,13 +115,13 @@ SurfaceAtPoint EvaluateAt(const AnchorEstimate& anchor,
   const SharingRule& rule)
 {
   SurfaceAtPoint at;
-  const FittedSurface& surface = anchor.Fit->Surface;
+  const AnchorFit& surface = *anchor.Fit;
   const Vector3d d = (x - Vector3d(anchor.Position[0], anchor.Position[1], anchor.Position[2])) *
     surface.InverseScale;
-  const double u = d.dot(ToEigen(surface.Frame.V0));
-  const double v = d.dot(ToEigen(surface.Frame.W0));
-  const double h = d.dot(ToEigen(surface.Frame.Normal));
-  const SurfaceJet jet = JetAt(surface, u, v);
+  const double u = d.dot(ToEigen(anchor.Frame.V0));
+  const double v = d.dot(ToEigen(anchor.Frame.W0));
+  const double h = d.dot(ToEigen(anchor.Frame.Normal));
+  const SurfaceJet jet = JetAt(surface.Coefficients, u, v);
   const double allowedHeight = std::max(rule.HeightDeviations * std::sqrt(surface.NoiseVariance),
     0.01 * anchor.Fit->Radius * surface.InverseScale);
   if (!(std::fabs(h - jet.Height) <= allowedHeight))
@@ -128,7 +129,7 @@ SurfaceAtPoint EvaluateAt(const AnchorEstimate& anchor,
     return at;
   }
   Vector3d e1;
-  const SineFit sine = SineOfJet(jet, surface.Frame, at.Normal, e1);
+  const SineFit sine = SineOfJet(jet, anchor.Frame, at.Normal, e1);
   if (!sine.Valid || !(own.dot(at.Normal) >= rule.MinimumNormalCosine))
   {
     return at;
@@ -195,7 +196,7 @@ SharedEstimate EstimateFromAnchors(const std::vector<AnchorEstimate>& anchors,
       point - Vector3d(anchor.Position[0], anchor.Position[1], anchor.Position[2]);
     const double closeness = 1.0 - offset.squaredNorm() / (reach * reach);
     if (!fit.Valid || !(closeness > 0.0) || !(fit.Radius >= rule.MinimumRadius) ||
-      !(fit.Surface.InverseScale > 0.0))
+      !(fit.InverseScale > 0.0))
     {
       continue;
     }
@@ -314,12 +315,12 @@ void AnchorCells::Offer(const CellKey& cell, std::int64_t point)
   }
 }
 
-void AnchorCells::AnchorsAround(const double x[3], Around& around) const
+bool AnchorCells::AnchorsAround(const double x[3], Around& around) const
 {
   const CellKey centre = this->KeyOf(x);
   if (around.Known && around.Cell == centre)
   {
-    return;
+    return false;
   }
   around.Known = true;
   around.Cell = centre;
@@ -339,6 +340,7 @@ void AnchorCells::AnchorsAround(const double x[3], Around& around) const
       }
     }
   }
+  return true;
 }
 
 void AnchorCells::NumberAnchors(const std::vector<std::int64_t>& kept)

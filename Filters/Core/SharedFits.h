@@ -57,10 +57,13 @@ struct SharingRule
 
 /// What a point near an anchor uses of the anchor's estimate (kept for
 /// every anchor until the cloud is done; the rest of the estimate is
-/// written out when made).
+/// written out when made). The fitted surface without its frame, which is
+/// MakeTangentFrame of the anchor's normal: made again where used.
 struct AnchorFit
 {
-  FittedSurface Surface;
+  std::array<double, OrientedCircleSums::PositionUnknowns> Coefficients{};
+  double InverseScale = 0.0;
+  double NoiseVariance = 0.0;
   double Radius = 0.0; ///< the neighbourhood's radius it was fitted over
   double Error = 0.0;  ///< its reported standard error
   double SineFitRms = 0.0;
@@ -72,9 +75,16 @@ struct AnchorFit
   static AnchorFit Of(const OrientedCircleResult& estimate, double radius, double error)
   {
     const PointCurvature& k = estimate.Curvature;
-    return AnchorFit{
-      estimate.Surface, radius, error, k.SineFitRms, k.NeighborCount, k.ValidDirections, k.Valid
-    };
+    const FittedSurface& surface = estimate.Surface;
+    return AnchorFit{ surface.Coefficients,
+      surface.InverseScale,
+      surface.NoiseVariance,
+      radius,
+      error,
+      k.SineFitRms,
+      k.NeighborCount,
+      k.ValidDirections,
+      k.Valid };
   }
 };
 
@@ -83,6 +93,7 @@ struct AnchorEstimate
 {
   const AnchorFit* Fit = nullptr;
   const double* Position = nullptr;
+  TangentFrame Frame{}; ///< the frame of the fit: MakeTangentFrame of the anchor's normal
 };
 
 /// A point's estimate from the anchors near it: the curvatures (output
@@ -193,8 +204,9 @@ public:
 
   /// The anchor of the cell holding x, and of the 26 cells around it, in a
   /// fixed order (cells without anchors skipped), into `around` (which
-  /// keeps them for the next point in the same cell).
-  void AnchorsAround(const double x[3], Around& around) const;
+  /// keeps them for the next point in the same cell). False when `around`
+  /// held them already.
+  bool AnchorsAround(const double x[3], Around& around) const;
 
   /// Sets marks[anchor] to 1 for the anchors around (AnchorsAround) any of
   /// the points `pointAt(j)`, j < count; false when `keepGoing()` (asked
