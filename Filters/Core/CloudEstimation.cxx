@@ -180,7 +180,7 @@ NormalSummary ReplaceNormals(CloudPoints& cloud,
       first += lengths[p] / 3;
     }
   }
-  const CloudPoints& estimated = processes.IsDistributed() ? whole : cloud;
+  CloudPoints& estimated = processes.IsDistributed() ? whole : cloud;
   StageProgress planes(monitor, 0.0, 0.8 * share, estimated.NumberOfOwnPoints);
   // The cloud's own normals are unknown until estimated (not read by the
   // estimate): released meanwhile, they are not part of its peak memory.

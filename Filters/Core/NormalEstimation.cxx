@@ -78,6 +78,16 @@ public:
     x[1] = this->Y[position];
     x[2] = this->Z[position];
   }
+  /// The cloud's own coordinates (xyz triplets) from the ordered copy, bit
+  /// for bit, into `coordinates`.
+  void WriteCoordinates(std::vector<double>& coordinates) const
+  {
+    coordinates.resize(static_cast<std::size_t>(3 * this->Size()));
+    for (std::int64_t p = 0; p < this->Size(); ++p)
+    {
+      this->Point(p, &coordinates[3 * this->Ids[p]]);
+    }
+  }
 
   /// The points q with |q - x| < radius into `out`, in position order;
   /// false, with `out` unusable, where the cells searched hold more than
@@ -1322,7 +1332,7 @@ bool QuickTypicalRadius(const CloudPoints& cloud,
 }
 } // namespace
 
-NormalSummary EstimateNormals(const CloudPoints& cloud,
+NormalSummary EstimateNormals(CloudPoints& cloud,
   const NormalSettings& settings,
   WorkRunner& runner,
   std::vector<double>& normals,
@@ -1389,6 +1399,27 @@ NormalSummary EstimateNormals(const CloudPoints& cloud,
     return summary;
   }
 
+  // The orientation reads the ordered copy alone: without a halo, the
+  // cloud's coordinates are released meanwhile and written back from the
+  // copy on the way out, whichever it is.
+  struct CoordinatesAside
+  {
+    CloudPoints& Cloud;
+    const OrderedCloud& Ordered;
+    const bool Released;
+    ~CoordinatesAside()
+    {
+      if (this->Released)
+      {
+        this->Ordered.WriteCoordinates(this->Cloud.Coordinates);
+      }
+    }
+  };
+  const CoordinatesAside aside{ cloud, ordered, cloud.GetNumberOfPoints() == n };
+  if (aside.Released)
+  {
+    std::vector<double>().swap(cloud.Coordinates);
+  }
   if (usable.Orientation == NormalOrientation::Outward)
   {
     // Twice as many points as 32-bit positions hold: the frontier keeps a

@@ -62,12 +62,14 @@ struct NormalSummary
   bool Aborted = false;
 };
 
-/// Unit normals of the own points of `cloud` (coordinates only are read),
+/// Unit normals of the own points of `cloud` (coordinates only are read;
+/// without a halo they are released while the normals are oriented, the
+/// estimate's peak memory, and restored bit for bit before it returns),
 /// 3 per point, zero where undetermined. With `progress`, the plane fits
 /// (most of the time) are reported to it, one item a point, and it returns
 /// early (`normals` then empty) when it is stopped, also during the
 /// orientation, which asks it every few thousand points.
-NormalSummary EstimateNormals(const CloudPoints& cloud,
+NormalSummary EstimateNormals(CloudPoints& cloud,
   const NormalSettings& settings,
   WorkRunner& runner,
   std::vector<double>& normals,
