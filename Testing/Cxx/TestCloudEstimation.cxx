@@ -3,6 +3,7 @@
 // unit, the summary, and the stop request.
 #include "AnalyticSurfaces.h"
 #include "CloudEstimation.h"
+#include "OrientationGraph.h"
 #include "ThreadRunner.h"
 #include "TestChecks.h"
 
@@ -785,6 +786,49 @@ void TestNormalEstimation(Checks& checks)
   }
 }
 
+/// The orientation graph's lists, built by hand: every point's one edge
+/// goes to point 0 (and point 0's to point 1, which the reverse edge makes
+/// redundant), so point 0's list holds every other point in order: more
+/// than 255 entries at 1000 points (the build's one-byte counts overflow,
+/// and it counts again in 32 bits), fewer at 100. Any thread count.
+void TestOrientationGraphLists(Checks& checks)
+{
+  for (const std::int64_t n : { 100, 1000 })
+  {
+    for (const int threadCount : { 1, 3 })
+    {
+      PlaneFits fits;
+      fits.GraphNeighbors = 1;
+      fits.Normals.assign(3 * n, 0.0);
+      fits.Neighbors.Assign(n, n - 1);
+      for (std::int64_t a = 0; a < n; ++a)
+      {
+        fits.Normals[3 * a + 2] = 1.0;
+        fits.Neighbors.Set(a, a == 0 ? 1 : 0);
+      }
+      ThreadRunner runner(threadCount);
+      DropRepeatedEdges(fits, runner);
+      const Graph<std::int32_t> graph(fits, runner);
+      bool right = graph.Start.size() == static_cast<std::size_t>(n + 1) &&
+        graph.Start[1] == n - 1 && graph.Start[n] == 2 * (n - 1);
+      for (std::int64_t e = 0; right && e < n - 1; ++e)
+      {
+        right = graph.Entries[e].Target == e + 1 &&
+          edge::Propagate(graph.Entries[e].Code, 1) == 1 &&
+          edge::BucketOf(graph.Entries[e].Code) == 0;
+      }
+      for (std::int64_t a = 1; right && a < n; ++a)
+      {
+        right =
+          graph.Start[a + 1] - graph.Start[a] == 1 && graph.Entries[graph.Start[a]].Target == 0;
+      }
+      const std::string name = "orientation graph of " + std::to_string(n) + " points, " +
+        std::to_string(threadCount) + " thread(s): the hub lists every other point in order";
+      checks.True(name.c_str(), right);
+    }
+  }
+}
+
 /// An orientation graph of 300 neighbours a point: every point has more
 /// than 255 entries (too many for the graph build's one-byte counts; it
 /// then counts again in wider integers). The normals' signs follow the
@@ -1161,6 +1205,7 @@ int main(int argc, char* argv[])
     { "TestAdjustmentWithoutSpacing", TestAdjustmentWithoutSpacing },
     { "TestNormalEstimation", TestNormalEstimation },
     { "TestWideOrientationGraph", TestWideOrientationGraph },
+    { "TestOrientationGraphLists", TestOrientationGraphLists },
     { "TestRepeatedPoints", TestRepeatedPoints },
     { "TestOrientedCircles", TestOrientedCircles },
     { "TestNoisyScan", TestNoisyScan },
