@@ -80,13 +80,18 @@ public:
   }
   /// The cloud's own coordinates (xyz triplets) from the ordered copy, bit
   /// for bit, into `coordinates`.
-  void WriteCoordinates(std::vector<double>& coordinates) const
+  void WriteCoordinates(std::vector<double>& coordinates, WorkRunner& runner) const
   {
     coordinates.resize(static_cast<std::size_t>(3 * this->Size()));
-    for (std::int64_t p = 0; p < this->Size(); ++p)
-    {
-      this->Point(p, &coordinates[3 * this->Ids[p]]);
-    }
+    runner.For(this->Size(),
+      65536,
+      [&](std::int64_t begin, std::int64_t end, EstimationScratch&)
+      {
+        for (std::int64_t p = begin; p < end; ++p)
+        {
+          this->Point(p, &coordinates[3 * this->Ids[p]]);
+        }
+      });
   }
 
   /// The points q with |q - x| < radius into `out`, in position order;
@@ -1175,16 +1180,17 @@ NormalSummary EstimateNormals(CloudPoints& cloud,
   {
     CloudPoints& Cloud;
     const OrderedCloud& Ordered;
+    WorkRunner& Runner;
     const bool Released;
     ~CoordinatesAside()
     {
       if (this->Released)
       {
-        this->Ordered.WriteCoordinates(this->Cloud.Coordinates);
+        this->Ordered.WriteCoordinates(this->Cloud.Coordinates, this->Runner);
       }
     }
   };
-  const CoordinatesAside aside{ cloud, ordered, cloud.GetNumberOfPoints() == n };
+  const CoordinatesAside aside{ cloud, ordered, runner, cloud.GetNumberOfPoints() == n };
   if (aside.Released)
   {
     std::vector<double>().swap(cloud.Coordinates);
