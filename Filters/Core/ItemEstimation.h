@@ -53,6 +53,11 @@ struct NeighborhoodRule
 class ProcessingOrder
 {
 public:
+  ProcessingOrder() = default;
+  // Not copied: the order may point into its own list.
+  ProcessingOrder(const ProcessingOrder&) = delete;
+  ProcessingOrder& operator=(const ProcessingOrder&) = delete;
+
   /// DVA: block b is items [BlockStarts[b], BlockStarts[b+1]) of the order.
   std::vector<std::int64_t> BlockStarts;
 
