@@ -75,6 +75,15 @@ struct ReadWorker
 {
   CloudPoints& Cloud;
 
+  template<typename Tuple>
+  static void ToDouble(const Tuple& tuple, double out[3])
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      out[k] = static_cast<double>(tuple[k]);
+    }
+  }
+
   template<typename PointArray, typename NormalArray>
   void operator()(PointArray* points, NormalArray* normals) const
   {
@@ -82,12 +91,9 @@ struct ReadWorker
     const auto n = vtk::DataArrayTupleRange<3>(normals);
     for (vtkIdType i = 0; i < x.size(); ++i)
     {
-      const double point[3] = {
-        static_cast<double>(x[i][0]), static_cast<double>(x[i][1]), static_cast<double>(x[i][2])
-      };
-      const double normal[3] = {
-        static_cast<double>(n[i][0]), static_cast<double>(n[i][1]), static_cast<double>(n[i][2])
-      };
+      double point[3], normal[3];
+      ToDouble(x[i], point);
+      ToDouble(n[i], normal);
       this->Cloud.AddInputPoint(i, point, normal);
     }
   }
@@ -99,9 +105,8 @@ struct ReadWorker
     const double none[3] = { 0.0, 0.0, 0.0 };
     for (vtkIdType i = 0; i < x.size(); ++i)
     {
-      const double point[3] = {
-        static_cast<double>(x[i][0]), static_cast<double>(x[i][1]), static_cast<double>(x[i][2])
-      };
+      double point[3];
+      ToDouble(x[i], point);
       this->Cloud.AddInputPoint(i, point, none);
     }
   }

@@ -141,29 +141,40 @@ std::vector<std::int64_t> EarlierEqualPoints(const CloudPoints& cloud, std::int6
   return earlier;
 }
 
-/// Keeps the points i for which keep(i) holds, in order.
+/// Keeps the points i for which keep(i) holds, in order. The input ids are
+/// listed only once an own point is dropped (before, they stay 0, 1, 2, ...).
 template<typename Keep>
 void KeepPoints(CloudPoints& cloud, Keep&& keep)
 {
-  cloud.ListInputIds();
   std::int64_t kept = 0, keptOwn = 0;
   for (std::int64_t i = 0; i < cloud.GetNumberOfPoints(); ++i)
   {
     if (!keep(i))
     {
+      if (cloud.IsOwn(i))
+      {
+        cloud.ListInputIds();
+      }
       continue;
     }
     std::copy_n(&cloud.Coordinates[3 * i], 3, &cloud.Coordinates[3 * kept]);
     std::copy_n(&cloud.Normals[3 * i], 3, &cloud.Normals[3 * kept]);
     if (cloud.IsOwn(i))
     {
-      cloud.InputIds[keptOwn++] = cloud.InputIds[i];
+      if (!cloud.InputIds.empty())
+      {
+        cloud.InputIds[keptOwn] = cloud.InputIds[i];
+      }
+      ++keptOwn;
     }
     ++kept;
   }
   cloud.Coordinates.resize(3 * kept);
   cloud.Normals.resize(3 * kept);
-  cloud.InputIds.resize(keptOwn);
+  if (!cloud.InputIds.empty())
+  {
+    cloud.InputIds.resize(keptOwn);
+  }
   cloud.NumberOfOwnPoints = keptOwn;
 }
 

@@ -18,12 +18,13 @@ namespace pcurv
 class IndexList
 {
 public:
-  /// `count` entries of -1, able to hold indices up to `largest`.
-  void Assign(std::int64_t count, std::int64_t largest)
+  /// `count` entries of `value` (-1: none), able to hold indices up to
+  /// `largest`.
+  void Assign(std::int64_t count, std::int64_t largest, std::int32_t value = -1)
   {
     this->Wide = largest > std::numeric_limits<std::int32_t>::max();
-    this->Long.assign(this->Wide ? count : 0, -1);
-    this->Short.assign(this->Wide ? 0 : count, -1);
+    this->Long.assign(this->Wide ? count : 0, value);
+    this->Short.assign(this->Wide ? 0 : count, value);
   }
   std::int64_t Size() const
   {
@@ -34,6 +35,18 @@ public:
     return this->Wide ? this->Long[i] : this->Short[i];
   }
   /// Calls `visit` with the indices as a pointer to their stored type.
+  template<typename Visitor>
+  void Visit(Visitor&& visit)
+  {
+    if (this->Wide)
+    {
+      visit(this->Long.data());
+    }
+    else
+    {
+      visit(this->Short.data());
+    }
+  }
   template<typename Visitor>
   void Visit(Visitor&& visit) const
   {

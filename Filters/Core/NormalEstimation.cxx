@@ -17,21 +17,14 @@ namespace pcurv
 {
 namespace
 {
-double Dot(const double* a, const double* b)
-{
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
+using edge::Dot;
+using edge::IsZero;
 
 void Flip(double* n)
 {
   n[0] = -n[0];
   n[1] = -n[1];
   n[2] = -n[2];
-}
-
-bool IsZero(const double* n)
-{
-  return n[0] == 0.0 && n[1] == 0.0 && n[2] == 0.0;
 }
 
 /// Points found around a query point: squared distances and grid positions

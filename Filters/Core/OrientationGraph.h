@@ -46,6 +46,7 @@ void DropRepeatedEdges(PlaneFits& fits, WorkRunner& runner);
 /// reads no normal. Edges to a point without a normal are never followed.
 namespace edge
 {
+/// Normals' helpers (NormalEstimation.cxx uses them too).
 inline double Dot(const double* a, const double* b)
 {
   return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
@@ -134,8 +135,9 @@ struct Graph
   }
 
 private:
-  /// Builds the lists with per-block counts of type Count; false (nothing
-  /// built) when some point's entries do not fit in one.
+  /// Builds the lists with per-block counts of type Count; false (the
+  /// lists unusable) when some point has Count's largest value of entries
+  /// or more.
   template<typename Count>
   bool Build(const PlaneFits& fits, WorkRunner& runner)
   {
@@ -145,7 +147,6 @@ private:
     // Per block, per position: the entries the block gives it, then where
     // the block writes the next one (from the position's first entry).
     std::vector<std::vector<Count>> placed(Blocks);
-    std::vector<unsigned char> overflow(Blocks, 0);
     auto forEachEdge = [&](std::int64_t block, auto&& visit)
     {
       const int k = fits.GraphNeighbors;
@@ -177,15 +178,10 @@ private:
             [&](std::int64_t a, std::int64_t)
             {
               Count& count = placed[block][a];
-              overflow[block] |= count == Largest;
-              count = static_cast<Count>(count + (count < Largest));
+              count = static_cast<Count>(count + (count < Largest)); // saturating
             });
         }
       });
-    if (std::find(overflow.begin(), overflow.end(), 1) != overflow.end())
-    {
-      return false;
-    }
     this->Start.assign(n + 1, 0);
     for (std::int64_t a = 0; a < n; ++a)
     {
@@ -196,9 +192,10 @@ private:
         counts[a] = static_cast<Count>(entries);
         entries += count;
       }
-      if (entries > Largest) // the last block's writes would not fit
+      // Also reached when a block's count saturated: the offsets of the
+      // writes might not fit.
+      if (entries >= Largest)
       {
-        std::vector<std::int64_t>().swap(this->Start);
         return false;
       }
       this->Start[a + 1] = this->Start[a] + entries;

@@ -436,7 +436,6 @@ OrientedCircleResult FitOrientedCircles(const OrientedCircleSums& sums,
     combined.X[0] - amplitude,
     positionVariance / 4.0);
   PrincipalCurvaturesFromSine(sine, fitted, out);
-  result.Surface.Frame = frame;
   std::copy_n(combined.X.data(), PositionUnknowns, result.Surface.Coefficients.begin());
   result.Surface.InverseScale = inverseScale;
   result.Surface.NoiseVariance = positionVariance / 4.0;

@@ -148,14 +148,14 @@ private:
 };
 
 /// The surface the combined fit describes, a height over the query
-/// normal's tangent frame in units of the scale (u, v along V0, W0):
+/// normal's tangent frame (MakeTangentFrame of that normal, not stored) in
+/// units of the scale (u, v along V0, W0):
 /// h = e + tu u + tv v + ((C + A) u^2 + 2 B u v + (C - A) v^2) / 2
 ///   + c30 u^3 + c21 u^2 v + c12 u v^2 + c03 v^3,
 /// with Coefficients (C, A, B, tu, tv, c30, c21, c12, c03, 2 e), C, A, B in
 /// the paper's sign.
 struct FittedSurface
 {
-  TangentFrame Frame{};
   std::array<double, OrientedCircleSums::PositionUnknowns> Coefficients{};
   double InverseScale = 0.0;
   /// The positions' noise variance, in units of the scale squared.

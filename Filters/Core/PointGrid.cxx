@@ -55,64 +55,43 @@ GridLattice GridLattice::Make(const double lower[3],
   return lattice;
 }
 
-namespace
-{
-/// CellStarts::Bucket in starts of one type: counts, their running sum,
-/// then each point placed at its cell's next free place (which moves every
-/// start one cell on: moved back after, no second array needed).
-template<typename Start>
-void BucketInto(const std::vector<std::int64_t>& cellOf,
-  std::int64_t cells,
-  std::vector<Start>& starts,
-  std::vector<std::int64_t>& ids)
-{
-  const std::int64_t count = static_cast<std::int64_t>(cellOf.size());
-  starts.assign(static_cast<std::size_t>(cells + 1), 0);
-  for (std::int64_t i = 0; i < count; ++i)
-  {
-    ++starts[cellOf[i] + 1];
-  }
-  for (std::int64_t c = 0; c < cells; ++c)
-  {
-    starts[c + 1] += starts[c];
-  }
-  ids.resize(static_cast<std::size_t>(count));
-  for (std::int64_t i = 0; i < count; ++i)
-  {
-    ids[starts[cellOf[i]]++] = i;
-  }
-  // starts[c] is now where cell c + 1 begins.
-  for (std::int64_t c = cells; c > 0; --c)
-  {
-    starts[c] = starts[c - 1];
-  }
-  starts[0] = 0;
-}
-} // namespace
-
 void CellStarts::Bucket(const std::vector<std::int64_t>& cellOf,
   std::int64_t cells,
   std::vector<std::int64_t>& ids)
 {
-  this->Wide =
-    static_cast<std::uint64_t>(cellOf.size()) > std::numeric_limits<std::uint32_t>::max();
-  if (this->Wide)
-  {
-    std::vector<std::uint32_t>().swap(this->Short);
-    BucketInto(cellOf, cells, this->Long, ids);
-  }
-  else
-  {
-    std::vector<std::int64_t>().swap(this->Long);
-    BucketInto(cellOf, cells, this->Short, ids);
-  }
+  const std::int64_t count = static_cast<std::int64_t>(cellOf.size());
+  this->Starts.Assign(cells + 1, count, 0);
+  // Counts, their running sum, then each point placed at its cell's next
+  // free place, which moves every start one cell on: moved back after, so
+  // that no second array is needed.
+  this->Starts.Visit(
+    [&](auto* starts)
+    {
+      for (std::int64_t i = 0; i < count; ++i)
+      {
+        ++starts[cellOf[i] + 1];
+      }
+      for (std::int64_t c = 0; c < cells; ++c)
+      {
+        starts[c + 1] += starts[c];
+      }
+      ids.resize(static_cast<std::size_t>(count));
+      for (std::int64_t i = 0; i < count; ++i)
+      {
+        ids[starts[cellOf[i]]++] = i;
+      }
+      // starts[c] is now where cell c + 1 begins.
+      for (std::int64_t c = cells; c > 0; --c)
+      {
+        starts[c] = starts[c - 1];
+      }
+      starts[0] = 0;
+    });
 }
 
 void CellStarts::Clear()
 {
-  this->Wide = false;
-  std::vector<std::int64_t>().swap(this->Long);
-  this->Short.assign(2, 0);
+  this->Starts.Assign(2, 0, 0);
 }
 
 void PointGrid::Build(const double* coordinates, std::int64_t count, const GridLattice& lattice)

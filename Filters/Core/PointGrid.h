@@ -21,6 +21,8 @@
 #ifndef PointGrid_h
 #define PointGrid_h
 
+#include "IndexList.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -97,9 +99,9 @@ struct ShellPoints
 };
 
 /// Where each cell's points begin in the cell order (one more entry at the
-/// end), 32-bit where the points allow: the lattice over a surface's
-/// bounding box has several cells a point, most of them empty, and this
-/// index is then as large as the sorted coordinates.
+/// end), 32-bit where the points allow (IndexList): the lattice over a
+/// surface's bounding box has several cells a point, most of them empty,
+/// and this index is then as large as the sorted coordinates.
 class CellStarts
 {
 public:
@@ -113,21 +115,13 @@ public:
   /// No points, in one cell.
   void Clear();
 
-  std::int64_t operator[](std::int64_t cell) const
-  {
-    return this->Wide ? this->Long[cell] : static_cast<std::int64_t>(this->Short[cell]);
-  }
+  std::int64_t operator[](std::int64_t cell) const { return this->Starts[cell]; }
 
   /// Cells, plus one.
-  std::int64_t Size() const
-  {
-    return static_cast<std::int64_t>(this->Wide ? this->Long.size() : this->Short.size());
-  }
+  std::int64_t Size() const { return this->Starts.Size(); }
 
 private:
-  bool Wide = false;
-  std::vector<std::uint32_t> Short;
-  std::vector<std::int64_t> Long;
+  IndexList Starts;
 };
 
 /// The order of two points within a cell: by coordinates (x, then y, then

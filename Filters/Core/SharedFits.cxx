@@ -29,10 +29,9 @@ struct SurfaceJet
   double Height, Fu, Fv, Fuu, Fuv, Fvv;
 };
 
-SurfaceJet JetAt(const std::array<double, OrientedCircleSums::PositionUnknowns>& x,
-  double u,
-  double v)
+SurfaceJet JetAt(const FittedSurface& surface, double u, double v)
 {
+  const auto& x = surface.Coefficients;
   const double c = x[0], a = x[1], b = x[2];
   SurfaceJet jet;
   jet.Height = 0.5 * x[9] + x[3] * u + x[4] * v +
@@ -115,13 +114,13 @@ SurfaceAtPoint EvaluateAt(const AnchorEstimate& anchor,
   const SharingRule& rule)
 {
   SurfaceAtPoint at;
-  const AnchorFit& surface = *anchor.Fit;
+  const FittedSurface& surface = anchor.Fit->Surface;
   const Vector3d d = (x - Vector3d(anchor.Position[0], anchor.Position[1], anchor.Position[2])) *
     surface.InverseScale;
   const double u = d.dot(ToEigen(anchor.Frame.V0));
   const double v = d.dot(ToEigen(anchor.Frame.W0));
   const double h = d.dot(ToEigen(anchor.Frame.Normal));
-  const SurfaceJet jet = JetAt(surface.Coefficients, u, v);
+  const SurfaceJet jet = JetAt(surface, u, v);
   const double allowedHeight = std::max(rule.HeightDeviations * std::sqrt(surface.NoiseVariance),
     0.01 * anchor.Fit->Radius * surface.InverseScale);
   if (!(std::fabs(h - jet.Height) <= allowedHeight))
@@ -196,7 +195,7 @@ SharedEstimate EstimateFromAnchors(const std::vector<AnchorEstimate>& anchors,
       point - Vector3d(anchor.Position[0], anchor.Position[1], anchor.Position[2]);
     const double closeness = 1.0 - offset.squaredNorm() / (reach * reach);
     if (!fit.Valid || !(closeness > 0.0) || !(fit.Radius >= rule.MinimumRadius) ||
-      !(fit.InverseScale > 0.0))
+      !(fit.Surface.InverseScale > 0.0))
     {
       continue;
     }

@@ -57,13 +57,10 @@ struct SharingRule
 
 /// What a point near an anchor uses of the anchor's estimate (kept for
 /// every anchor until the cloud is done; the rest of the estimate is
-/// written out when made). The fitted surface without its frame, which is
-/// MakeTangentFrame of the anchor's normal: made again where used.
+/// written out when made).
 struct AnchorFit
 {
-  std::array<double, OrientedCircleSums::PositionUnknowns> Coefficients{};
-  double InverseScale = 0.0;
-  double NoiseVariance = 0.0;
+  FittedSurface Surface;
   double Radius = 0.0; ///< the neighbourhood's radius it was fitted over
   double Error = 0.0;  ///< its reported standard error
   double SineFitRms = 0.0;
@@ -75,16 +72,9 @@ struct AnchorFit
   static AnchorFit Of(const OrientedCircleResult& estimate, double radius, double error)
   {
     const PointCurvature& k = estimate.Curvature;
-    const FittedSurface& surface = estimate.Surface;
-    return AnchorFit{ surface.Coefficients,
-      surface.InverseScale,
-      surface.NoiseVariance,
-      radius,
-      error,
-      k.SineFitRms,
-      k.NeighborCount,
-      k.ValidDirections,
-      k.Valid };
+    return AnchorFit{
+      estimate.Surface, radius, error, k.SineFitRms, k.NeighborCount, k.ValidDirections, k.Valid
+    };
   }
 };
 
