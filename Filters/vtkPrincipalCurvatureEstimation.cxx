@@ -412,6 +412,7 @@ int vtkPrincipalCurvatureEstimation::RequestData(vtkInformation*,
   this->UpdateProgress(1.0);
   this->NumberOfUnestimatedPoints = summary.NumberOfUnestimatedPoints;
   this->NumberOfSharedFitPoints = summary.NumberOfSharedPoints;
+  this->FourthOrderFits = summary.FourthOrderFits;
   pcurv::CopyGeometry(input, output);
   arrays.AddTo(output->GetPointData(), this->DiagnosticArrays);
   ReportUnestimated(this, summary, processes, output);
@@ -430,13 +431,21 @@ int vtkPrincipalCurvatureEstimation::RequestData(vtkInformation*,
     scale->InsertNextValue(summary.TrustedCurvatureScale);
     output->GetFieldData()->AddArray(scale);
   }
-  if (settings.ShareFits && settings.Mode == pcurv::FitMode::OrientedCircles &&
-    settings.Neighborhood == pcurv::NeighborhoodMode::Automatic)
+  const bool automaticScale = settings.Mode == pcurv::FitMode::OrientedCircles &&
+    settings.Neighborhood == pcurv::NeighborhoodMode::Automatic;
+  if (settings.ShareFits && automaticScale)
   {
     vtkNew<vtkIdTypeArray> shared;
     shared->SetName("Shared_Fit_Points");
     shared->InsertNextValue(summary.NumberOfSharedPoints);
     output->GetFieldData()->AddArray(shared);
+  }
+  if (automaticScale)
+  {
+    vtkNew<vtkIntArray> fourthOrder;
+    fourthOrder->SetName("Fourth_Order_Fits");
+    fourthOrder->InsertNextValue(summary.FourthOrderFits ? 1 : 0);
+    output->GetFieldData()->AddArray(fourthOrder);
   }
   if (estimatedNormals)
   {

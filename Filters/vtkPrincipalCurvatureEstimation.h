@@ -407,6 +407,15 @@ public:
    */
   vtkGetMacro(NumberOfSharedFitPoints, vtkIdType);
 
+  /**
+   * After an update with the automatic neighborhood: whether the cloud's
+   * normals follow the surface as exact normals do (on most points of a
+   * sample), so that the neighborhoods beyond the first also fitted the
+   * surface's fourth order where it shows (docs/method.md, section 10); the
+   * output's field data "Fourth_Order_Fits" holds it too (1 or 0).
+   */
+  vtkGetMacro(FourthOrderFits, bool);
+
 protected:
   vtkPrincipalCurvatureEstimation();
   ~vtkPrincipalCurvatureEstimation() override = default;
@@ -458,6 +467,7 @@ protected:
   double UsedPlaneDistanceThreshold = 0.0;
   vtkIdType NumberOfUnestimatedPoints = 0;
   vtkIdType NumberOfSharedFitPoints = 0;
+  bool FourthOrderFits = false;
 
 private:
   vtkPrincipalCurvatureEstimation(const vtkPrincipalCurvatureEstimation&) = delete;

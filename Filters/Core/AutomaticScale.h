@@ -34,6 +34,7 @@ struct AutomaticScaleRule
   double LargestRadius = 0; // no radius beyond this (a length)
   double TypicalRadius = 0; // the cloud's typical first radius (a length)
   bool ShareFits = false;   // points near an anchor take its fit (SharedFits.h)
+  bool FourthOrder = false; // beyond the first radius, fits of the surface's fourth order too
   SharingRule Sharing;
 };
 
@@ -137,6 +138,7 @@ struct AnchorTable
 struct AutomaticScaleScratch
 {
   OrientedCircleAccumulator Sums;
+  QuarticCircleAccumulator QuarticSums;
   ShellPoints Shell;
   std::vector<double> Distances;
   std::vector<OrientedCircleResult> Scales;
@@ -169,7 +171,18 @@ public:
   /// has begun to show. A radius at which too many neighbours' normals
   /// oppose the point's stops the growth (the neighbourhood would reach
   /// across the surface).
+  /// With FourthOrder, the radii beyond the first fit the surface's
+  /// fourth-order terms too (the first holds too few neighbours for them).
   ScaleEstimate Estimate(std::int64_t point, AutomaticScaleScratch& scratch) const;
+
+  /// Whether the point's normal follows the surface as closely as exact
+  /// normals of a noisy cloud do: at four first radii (about 256
+  /// neighbours), the tilt the fit finds in it is within what the point's
+  /// own displacement along the surface explains (the square of the tilt
+  /// at most NormalTiltAllowance times its expected square). An estimated
+  /// normal is off by its own error, several times more. 1: it follows,
+  /// 0: it does not, -1: no fit there.
+  int NormalFollowsSurface(std::int64_t point, AutomaticScaleScratch& scratch) const;
 
   /// The point's estimate from the anchors around it (in the cells' fixed
   /// order: the same on every process) that the sharing rule lets it blend;

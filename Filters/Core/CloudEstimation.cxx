@@ -307,6 +307,39 @@ bool ChooseAnchors(AnchorTable& anchors,
   return everyProcessGoesOn && ContinueBetweenSteps(run.Monitor, run.NormalsShare, run.Processes);
 }
 
+/// Whether the automatic scale should fit the surface's fourth order beyond
+/// its first radius: where the normals follow the surface as exact normals
+/// of a noisy cloud do (AutomaticScaleEstimator::NormalFollowsSurface) at
+/// most of the points of the cloud's spacing sample (the same points and
+/// counts for any split among processes). Estimated normals share their
+/// errors with their neighbours, and the fourth order's extra unknowns take
+/// those up rather than the surface's shape: there it does worse.
+bool NormalsFollowTheSurface(const CloudPoints& cloud,
+  const PointGrid& grid,
+  const NeighborhoodRule& rule,
+  const FitSettings& fit,
+  const CloudBoxes& boxes,
+  const Collectives& processes)
+{
+  const AutomaticScaleEstimator estimator(cloud, grid, rule.Automatic, fit);
+  AutomaticScaleScratch scratch;
+  const std::int64_t stride = std::max<std::int64_t>(1, boxes.GlobalCount / 512);
+  std::vector<std::int64_t> counts = { 0, 0 }; // following, tested
+  for (std::int64_t i = 0; i < cloud.NumberOfOwnPoints; ++i)
+  {
+    if (InSpacingSample(
+          &cloud.Coordinates[3 * i], boxes.SampleLower.data(), boxes.SampleUpper.data(), stride))
+    {
+      const int follows = estimator.NormalFollowsSurface(i, scratch);
+      counts[0] += follows > 0 ? 1 : 0;
+      counts[1] += follows >= 0 ? 1 : 0;
+    }
+  }
+  processes.Sum(counts);
+  constexpr std::int64_t FewestTested = 16;
+  return counts[1] >= FewestTested && 2 * counts[0] > counts[1];
+}
+
 /// The estimation proper, on the working copy `cloud` (consumed: it, its
 /// grid and the anchors are freed on return, before the passes over the
 /// results, which on large clouds would otherwise add to the peak memory).
@@ -349,6 +382,12 @@ bool EstimateEveryPoint(CloudPoints cloud,
   fit.Mode = settings.Mode;
   fit.MinimumPointsPerDirection = settings.MinimumPointsPerDirection;
   fit.MaximumOpposingFraction = settings.MaximumOpposingFraction;
+  if (rule.AutomaticScale)
+  {
+    rule.Automatic.FourthOrder =
+      NormalsFollowTheSurface(cloud, grid, rule, fit, boxes, run.Processes);
+    summary.FourthOrderFits = rule.Automatic.FourthOrder;
+  }
   // With shared fits the anchors come first, and take most of the time.
   AnchorTable anchors;
   const bool shared = rule.AutomaticScale && rule.Automatic.ShareFits;

@@ -14,14 +14,9 @@ template<int N>
 using Vector = Eigen::Matrix<double, N, 1>;
 template<int N>
 using Matrix = Eigen::Matrix<double, N, N>;
-constexpr int PositionUnknowns = OrientedCircleSums::PositionUnknowns;
-constexpr int NormalUnknowns = OrientedCircleSums::NormalUnknowns;
-using PositionVector = Vector<PositionUnknowns>;
-using PositionMatrix = Matrix<PositionUnknowns>;
-using NormalVector = Vector<NormalUnknowns>;
-using NormalMatrix = Matrix<NormalUnknowns>;
-/// Fewer neighbours than this leave the fit without a residual to weigh it.
-constexpr int MinimumNeighbors = PositionUnknowns + 2;
+/// Fewer neighbours than the unknowns and two leave the fit without a
+/// residual to weigh it.
+constexpr int ResidualNeighbors = 2;
 
 /// A variance below this (in units of the scale) is taken as this: exact
 /// data would otherwise get an infinite weight.
@@ -244,9 +239,8 @@ TangentFrame FittedFrame(const TangentFrame& frame,
 
 /// The standard error of the principal curvatures C +- hypot(A, B) from
 /// the covariance of the unknowns (C, A, B first), to first order.
-double CurvatureStandardError(const Eigen::Matrix<double, PositionUnknowns, 3>& covariance,
-  double c,
-  double s)
+template<int N>
+double CurvatureStandardError(const Eigen::Matrix<double, N, 3>& covariance, double c, double s)
 {
   const double amplitude = std::hypot(c, s);
   const double amplitudeVariance = amplitude > 0.0
@@ -267,7 +261,8 @@ int PopCount(std::uint32_t bits)
 }
 } // namespace
 
-void OrientedCircleAccumulator::Begin(const TangentFrame& frame)
+template<int Order>
+void OrientedCircleAccumulatorOf<Order>::Begin(const TangentFrame& frame)
 {
   for (int k = 0; k < 3; ++k)
   {
@@ -275,11 +270,12 @@ void OrientedCircleAccumulator::Begin(const TangentFrame& frame)
     this->Frame.V[k] = frame.V0[k];
     this->Frame.W[k] = frame.W0[k];
   }
-  this->Banked = oriented::Sums{};
+  this->Banked = oriented::BankedSums<Order>{};
   this->PendingCount = 0;
 }
 
-void OrientedCircleAccumulator::AddPending()
+template<int Order>
+void OrientedCircleAccumulatorOf<Order>::AddPending()
 {
   const oriented::NeighborBatch pending{ this->Pending[0].data(),
     this->Pending[1].data(),
@@ -292,39 +288,40 @@ void OrientedCircleAccumulator::AddPending()
   this->PendingCount = 0;
 }
 
-const OrientedCircleSums& OrientedCircleAccumulator::Sums()
+template<int Order>
+const OrientedCircleSumsOf<Order>& OrientedCircleAccumulatorOf<Order>::Sums()
 {
+  using L = oriented::Layout<Order>;
   this->AddPending();
   // Each sum's eight banks, added in a fixed order.
-  double totals[oriented::NumberOfEntries];
-  for (int e = 0; e < oriented::NumberOfEntries; ++e)
+  double totals[L::NumberOfEntries];
+  for (int e = 0; e < L::NumberOfEntries; ++e)
   {
     const double* b = &this->Banked.Banks[e * oriented::NumberOfBanks];
     totals[e] = ((b[0] + b[1]) + (b[2] + b[3])) + ((b[4] + b[5]) + (b[6] + b[7]));
   }
-  OrientedCircleSums& sums = this->Totals;
-  std::copy_n(
-    totals + oriented::PositionMatrix, sums.PositionMatrix.size(), sums.PositionMatrix.begin());
-  std::copy_n(
-    totals + oriented::PositionRight, sums.PositionRight.size(), sums.PositionRight.begin());
-  std::copy_n(totals + oriented::NormalMatrix, sums.NormalMatrix.size(), sums.NormalMatrix.begin());
-  std::copy_n(totals + oriented::NormalRight, sums.NormalRight.size(), sums.NormalRight.begin());
-  sums.PositionTargets = totals[oriented::PositionTargets];
-  sums.NormalTargets = totals[oriented::NormalTargets];
-  sums.Neighbors = static_cast<int>(totals[oriented::Neighbors]);
-  sums.NeighborsWithNormal = static_cast<int>(totals[oriented::NeighborsWithNormal]);
-  sums.Opposing = static_cast<int>(totals[oriented::Opposing]);
-  sums.OpposingHeights = totals[oriented::OpposingHeights];
-  sums.AgreeingHeights = totals[oriented::AgreeingHeights];
-  sums.OpposingSquaredHeights = totals[oriented::OpposingSquaredHeights];
-  sums.AgreeingSquaredHeights = totals[oriented::AgreeingSquaredHeights];
-  sums.SquaredDistances = totals[oriented::SquaredDistances];
+  OrientedCircleSumsOf<Order>& sums = this->Totals;
+  std::copy_n(totals + L::PositionMatrix, sums.PositionMatrix.size(), sums.PositionMatrix.begin());
+  std::copy_n(totals + L::PositionRight, sums.PositionRight.size(), sums.PositionRight.begin());
+  std::copy_n(totals + L::NormalMatrix, sums.NormalMatrix.size(), sums.NormalMatrix.begin());
+  std::copy_n(totals + L::NormalRight, sums.NormalRight.size(), sums.NormalRight.begin());
+  sums.PositionTargets = totals[L::PositionTargets];
+  sums.NormalTargets = totals[L::NormalTargets];
+  sums.Neighbors = static_cast<int>(totals[L::Neighbors]);
+  sums.NeighborsWithNormal = static_cast<int>(totals[L::NeighborsWithNormal]);
+  sums.Opposing = static_cast<int>(totals[L::Opposing]);
+  sums.OpposingHeights = totals[L::OpposingHeights];
+  sums.AgreeingHeights = totals[L::AgreeingHeights];
+  sums.OpposingSquaredHeights = totals[L::OpposingSquaredHeights];
+  sums.AgreeingSquaredHeights = totals[L::AgreeingSquaredHeights];
+  sums.SquaredDistances = totals[L::SquaredDistances];
   sums.Sectors = this->Banked.Sectors;
   sums.HalfTurnPositions = this->Banked.HalfTurnPositions;
   return sums;
 }
 
-bool OrientedCircleSums::ReachesAcross(double maximumOpposing) const
+template<int Order>
+bool OrientedCircleSumsOf<Order>::ReachesAcross(double maximumOpposing) const
 {
   if (this->Opposing == 0 || !(this->Opposing > maximumOpposing * this->Neighbors))
   {
@@ -348,18 +345,27 @@ bool OrientedCircleSums::ReachesAcross(double maximumOpposing) const
     difference > 0.05 * size;
 }
 
-OrientedCircleResult FitOrientedCircles(const OrientedCircleSums& sums,
+template<int Order>
+OrientedCircleResult FitOrientedCircles(const OrientedCircleSumsOf<Order>& sums,
   const TangentFrame& frame,
   double inverseScale,
   int minimumNeighbors,
-  double maximumOpposing)
+  double maximumOpposing,
+  bool combinedError)
 {
+  constexpr int PositionUnknowns = OrientedCircleSumsOf<Order>::PositionUnknowns;
+  constexpr int NormalUnknowns = OrientedCircleSumsOf<Order>::NormalUnknowns;
+  using PositionVector = Vector<PositionUnknowns>;
+  using PositionMatrix = Matrix<PositionUnknowns>;
+  using NormalVector = Vector<NormalUnknowns>;
+  using NormalMatrix = Matrix<NormalUnknowns>;
   OrientedCircleResult result;
+  result.Order = Order;
   PointCurvature& out = result.Curvature;
   result.StandardError = std::numeric_limits<double>::quiet_NaN();
   out.NeighborCount = sums.Neighbors;
   out.ValidDirections = PopCount(sums.Sectors);
-  if (sums.Neighbors < std::max(minimumNeighbors, MinimumNeighbors))
+  if (sums.Neighbors < std::max(minimumNeighbors, PositionUnknowns + ResidualNeighbors))
   {
     out.Reason = UnestimatedReason::TooFewNeighbors;
     return result;
@@ -386,6 +392,8 @@ OrientedCircleResult FitOrientedCircles(const OrientedCircleSums& sums,
     std::max(ResidualVariance(positions, positionRight, sums.PositionTargets, sums.Neighbors),
       VarianceFloor);
   Solution<PositionUnknowns> combined = positions;
+  Eigen::Matrix<double, PositionUnknowns, 3> combinedCovariance =
+    positions.Inverse * positionVariance;
   if (sums.NeighborsWithNormal > NormalUnknowns)
   {
     const NormalMatrix normalMatrix = Full<NormalUnknowns>(sums.NormalMatrix);
@@ -401,10 +409,12 @@ OrientedCircleResult FitOrientedCircles(const OrientedCircleSums& sums,
       // are zero there.
       PositionMatrix matrix = positionMatrix / positionVariance;
       PositionVector right = positionRight / positionVariance;
-      matrix.topLeftCorner<NormalUnknowns, NormalUnknowns>() += normalMatrix / normalVariance;
-      right.head<NormalUnknowns>() += normalRight / normalVariance;
-      const Solution<PositionUnknowns> both = Solve<PositionUnknowns>(matrix, right, false);
+      matrix.template topLeftCorner<NormalUnknowns, NormalUnknowns>() +=
+        normalMatrix / normalVariance;
+      right.template head<NormalUnknowns>() += normalRight / normalVariance;
+      const Solution<PositionUnknowns> both = Solve<PositionUnknowns>(matrix, right, combinedError);
       combined = both.Valid ? both : combined;
+      combinedCovariance = both.Valid && combinedError ? both.Inverse : combinedCovariance;
     }
   }
 
@@ -413,6 +423,7 @@ OrientedCircleResult FitOrientedCircles(const OrientedCircleSums& sums,
   const double c = combined.X[1], s = combined.X[2];
   const double amplitude = std::hypot(c, s);
   result.StandardError = CurvatureStandardError(covariance, c, s) * inverseScale;
+  result.CombinedStandardError = CurvatureStandardError(combinedCovariance, c, s) * inverseScale;
   result.PositionsDiscrepancy =
     (std::fabs(combined.X[0] - positions.X[0]) +
       std::fabs(amplitude - std::hypot(positions.X[1], positions.X[2]))) *
@@ -436,7 +447,14 @@ OrientedCircleResult FitOrientedCircles(const OrientedCircleSums& sums,
     combined.X[0] - amplitude,
     positionVariance / 4.0);
   PrincipalCurvaturesFromSine(sine, fitted, out);
-  std::copy_n(combined.X.data(), PositionUnknowns, result.Surface.Coefficients.begin());
+  // The surface's coefficients: up to the cubic's, the height, the quartic's
+  // (the fit's unknowns have the height last).
+  std::array<double, 15>& surface = result.Surface.Coefficients;
+  std::copy_n(combined.X.data(), oriented::FirstQuarticColumn, surface.begin());
+  surface[oriented::FirstQuarticColumn] = combined.X[PositionUnknowns - 1];
+  std::copy_n(combined.X.data() + oriented::FirstQuarticColumn,
+    PositionUnknowns - 1 - oriented::FirstQuarticColumn,
+    surface.begin() + FittedSurface::FirstQuarticCoefficient);
   result.Surface.InverseScale = inverseScale;
   result.Surface.NoiseVariance = positionVariance / 4.0;
   out.FittedNormal = out.Valid ? fitted.Normal : Vector3{ { 0.0, 0.0, 0.0 } };
@@ -459,9 +477,15 @@ double ReportedStandardError(const OrientedCircleResult& chosen,
     : 0.0;
   const double floor =
     precision * std::max(std::fabs(k.MinimumCurvature), std::fabs(k.MaximumCurvature));
-  const double parts[] = {
-    chosen.StandardError, chosen.PositionsDiscrepancy, chosen.TiltBias, grown, floor
-  };
+  // Where the normals follow the surface, the combined fit's own error
+  // (inflated) stands for both the positions-only fit's and the normals'.
+  const bool combined = chosen.NormalsFollowSurface;
+  const double parts[] = { combined ? CombinedErrorFactor * chosen.CombinedStandardError
+                                    : chosen.StandardError,
+    combined ? 0.0 : chosen.PositionsDiscrepancy,
+    chosen.TiltBias,
+    grown,
+    floor };
   double sum = 0.0;
   for (const double part : parts)
   {
@@ -485,4 +509,61 @@ void OrientedCircleEstimator::AddNeighbor(const double offset[3], const double n
   this->Sums.Add(d, normal);
 }
 
+OrientedCircleSums ThirdOrderPart(const QuarticCircleSums& sums)
+{
+  constexpr int Third = OrientedCircleSums::PositionUnknowns;
+  constexpr int Fourth = QuarticCircleSums::PositionUnknowns;
+  // Up to the cubic's unknowns the same, then the height (last of both).
+  auto positionOf = [](int i) { return i < Third - 1 ? i : Fourth - 1; };
+  auto upperIndex = [](int a, int b, int n) { return a * n - a * (a - 1) / 2 + (b - a); };
+  OrientedCircleSums part;
+  for (int a = 0, k = 0; a < Third; ++a)
+  {
+    part.PositionRight[a] = sums.PositionRight[positionOf(a)];
+    for (int b = a; b < Third; ++b)
+    {
+      part.PositionMatrix[k++] =
+        sums.PositionMatrix[upperIndex(positionOf(a), positionOf(b), Fourth)];
+    }
+  }
+  constexpr int Normals = OrientedCircleSums::NormalUnknowns;
+  for (int a = 0, k = 0; a < Normals; ++a)
+  {
+    part.NormalRight[a] = sums.NormalRight[a];
+    for (int b = a; b < Normals; ++b)
+    {
+      part.NormalMatrix[k++] = sums.NormalMatrix[upperIndex(a, b, Fourth - 1)];
+    }
+  }
+  part.PositionTargets = sums.PositionTargets;
+  part.NormalTargets = sums.NormalTargets;
+  part.Neighbors = sums.Neighbors;
+  part.NeighborsWithNormal = sums.NeighborsWithNormal;
+  part.Opposing = sums.Opposing;
+  part.OpposingHeights = sums.OpposingHeights;
+  part.AgreeingHeights = sums.AgreeingHeights;
+  part.SquaredDistances = sums.SquaredDistances;
+  part.OpposingSquaredHeights = sums.OpposingSquaredHeights;
+  part.AgreeingSquaredHeights = sums.AgreeingSquaredHeights;
+  part.Sectors = sums.Sectors;
+  part.HalfTurnPositions = sums.HalfTurnPositions;
+  return part;
+}
+
+template struct OrientedCircleSumsOf<3>;
+template struct OrientedCircleSumsOf<4>;
+template class OrientedCircleAccumulatorOf<3>;
+template class OrientedCircleAccumulatorOf<4>;
+template OrientedCircleResult FitOrientedCircles<3>(const OrientedCircleSums&,
+  const TangentFrame&,
+  double,
+  int,
+  double,
+  bool);
+template OrientedCircleResult FitOrientedCircles<4>(const QuarticCircleSums&,
+  const TangentFrame&,
+  double,
+  int,
+  double,
+  bool);
 } // namespace pcurv

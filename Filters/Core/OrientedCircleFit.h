@@ -67,15 +67,23 @@ inline double TiltShare(double tiltSquared, double displacement)
 /// variance has few degrees of freedom at small radii).
 constexpr double ReportedErrorFactor = 1.5;
 
+/// How much the combined fit's error exceeds its covariance's standard
+/// error where the normals follow the surface (exact normals of a noisy
+/// cloud): their rows' residuals are not independent noise alone (the
+/// positions' noise moves both a row's target and its columns), so the
+/// covariance understates the error; calibrated on the shared accuracy
+/// suite.
+constexpr double CombinedErrorFactor = 4.0;
+
 /// The least-squares sums of the neighbours added so far, in the frame of
-/// the query point and in units of a fixed scale.
-struct OrientedCircleSums
+/// the query point and in units of a fixed scale, for a fit of the
+/// surface's terms up to `Order` (3: the cubic, 4: also the quartic; the
+/// unknowns of oriented::Layout).
+template<int Order>
+struct OrientedCircleSumsOf
 {
-  /// The unknowns: C, A, B, the two tilts, the cubic term's coefficients
-  /// of u^3, u^2 v, u v^2, v^3, and (positions only) the query point's
-  /// height.
-  static constexpr int PositionUnknowns = oriented::PositionUnknowns;
-  static constexpr int NormalUnknowns = oriented::NormalUnknowns;
+  static constexpr int PositionUnknowns = oriented::Layout<Order>::PositionUnknowns;
+  static constexpr int NormalUnknowns = oriented::Layout<Order>::NormalUnknowns;
   /// Upper triangles and right-hand sides of the positions' and the
   /// normals' normal equations, and the sums of their squared targets.
   std::array<double, PositionUnknowns*(PositionUnknowns + 1) / 2> PositionMatrix{};
@@ -103,12 +111,15 @@ struct OrientedCircleSums
   /// oriented normals.
   bool ReachesAcross(double maximumOpposing) const;
 };
+using OrientedCircleSums = OrientedCircleSumsOf<3>;
+using QuarticCircleSums = OrientedCircleSumsOf<4>;
 
-/// Adds neighbours to OrientedCircleSums several at a time (eight lanes of
-/// SimdKernels.h's oriented::AddNeighbors): Begin, Add per neighbour, Sums
-/// whenever the sums so far are wanted. The same neighbours in the same
-/// order give the same sums on every instruction set.
-class OrientedCircleAccumulator
+/// Adds neighbours to OrientedCircleSumsOf<Order> several at a time (eight
+/// lanes of SimdKernels.h's oriented::AddNeighbors): Begin, Add per
+/// neighbour, Sums whenever the sums so far are wanted. The same neighbours
+/// in the same order give the same sums on every instruction set.
+template<int Order>
+class OrientedCircleAccumulatorOf
 {
 public:
   /// Starts afresh in the tangent frame of a query point.
@@ -133,30 +144,35 @@ public:
   }
 
   /// The sums of every neighbour added since Begin.
-  const OrientedCircleSums& Sums();
+  const OrientedCircleSumsOf<Order>& Sums();
 
 private:
   void AddPending();
 
   static constexpr int Capacity = 64;
   oriented::Frame Frame{};
-  oriented::Sums Banked{};
+  oriented::BankedSums<Order> Banked{};
   /// Offsets and normals not yet in Banked, one array per coordinate.
   std::array<std::array<double, Capacity>, 6> Pending{};
   int PendingCount = 0;
-  OrientedCircleSums Totals;
+  OrientedCircleSumsOf<Order> Totals;
 };
+using OrientedCircleAccumulator = OrientedCircleAccumulatorOf<3>;
+using QuarticCircleAccumulator = OrientedCircleAccumulatorOf<4>;
 
 /// The surface the combined fit describes, a height over the query
 /// normal's tangent frame (MakeTangentFrame of that normal, not stored) in
 /// units of the scale (u, v along V0, W0):
 /// h = e + tu u + tv v + ((C + A) u^2 + 2 B u v + (C - A) v^2) / 2
-///   + c30 u^3 + c21 u^2 v + c12 u v^2 + c03 v^3,
-/// with Coefficients (C, A, B, tu, tv, c30, c21, c12, c03, 2 e), C, A, B in
-/// the paper's sign.
+///   + c30 u^3 + c21 u^2 v + c12 u v^2 + c03 v^3
+///   + c40 u^4 + c31 u^3 v + c22 u^2 v^2 + c13 u v^3 + c04 v^4,
+/// with Coefficients (C, A, B, tu, tv, c30, c21, c12, c03, 2 e, c40, c31,
+/// c22, c13, c04), C, A, B in the paper's sign; the quartic ones are 0 for
+/// a fit of the third order.
 struct FittedSurface
 {
-  std::array<double, OrientedCircleSums::PositionUnknowns> Coefficients{};
+  static constexpr int FirstQuarticCoefficient = 10;
+  std::array<double, 15> Coefficients{};
   double InverseScale = 0.0;
   /// The positions' noise variance, in units of the scale squared.
   double NoiseVariance = 0.0;
@@ -175,7 +191,16 @@ struct FittedSurface
 struct OrientedCircleResult
 {
   PointCurvature Curvature;
+  /// The order of the surface's terms fitted: 3 or 4.
+  int Order = 3;
+  /// The normals follow the surface (a fit of the automatic scale's ladder
+  /// of both orders): the combined fit's own error stands for the error.
+  bool NormalsFollowSurface = false;
   double StandardError = 0.0;
+  /// The combined fit's own standard error of the curvatures (1/length),
+  /// from its covariance: what telling a fit of the third order from one of
+  /// the fourth compares (AutomaticScale), not what the scale grows by.
+  double CombinedStandardError = 0.0;
   double PositionsDiscrepancy = 0.0;
   double TiltBias = 0.0;
   /// The fitted surface, for evaluating it elsewhere (SharedFits.h).
@@ -193,14 +218,22 @@ double ReportedStandardError(const OrientedCircleResult& chosen,
   const OrientedCircleResult* previous,
   double precision);
 
-/// Fits the sums; invalid with fewer than `minimumNeighbors` (at least 12)
-/// neighbours, angles within a closed half-turn of 2 phi, or a
-/// neighbourhood that reaches across the surface (ReachesAcross).
-OrientedCircleResult FitOrientedCircles(const OrientedCircleSums& sums,
+/// Fits the sums; invalid with fewer than `minimumNeighbors` (at least the
+/// positions' unknowns and two: 12 at order 3, 17 at order 4) neighbours,
+/// angles within a closed half-turn of 2 phi, or a neighbourhood that
+/// reaches across the surface (ReachesAcross). CombinedStandardError only
+/// with `combinedError` (else the positions-only fit's).
+template<int Order>
+OrientedCircleResult FitOrientedCircles(const OrientedCircleSumsOf<Order>& sums,
   const TangentFrame& frame,
   double inverseScale,
   int minimumNeighbors,
-  double maximumOpposing);
+  double maximumOpposing,
+  bool combinedError = false);
+
+/// The sums of the third order's fit within those of the fourth (its
+/// unknowns are a subset of the fourth's).
+OrientedCircleSums ThirdOrderPart(const QuarticCircleSums& sums);
 
 /// One query at one scale: Begin, AddNeighbor per neighbour, Estimate.
 class OrientedCircleEstimator

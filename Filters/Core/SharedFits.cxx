@@ -42,6 +42,18 @@ SurfaceJet JetAt(const FittedSurface& surface, double u, double v)
   jet.Fuu = c + a + 6.0 * x[5] * u + 2.0 * x[6] * v;
   jet.Fuv = b + 2.0 * x[6] * u + 2.0 * x[7] * v;
   jet.Fvv = c - a + 2.0 * x[7] * u + 6.0 * x[8] * v;
+  const double* q = x.data() + FittedSurface::FirstQuarticCoefficient;
+  if (q[0] != 0.0 || q[1] != 0.0 || q[2] != 0.0 || q[3] != 0.0 || q[4] != 0.0)
+  {
+    const double uu = u * u, uv = u * v, vv = v * v;
+    jet.Height +=
+      q[0] * uu * uu + q[1] * uu * uv + q[2] * uu * vv + q[3] * uv * vv + q[4] * vv * vv;
+    jet.Fu += 4.0 * q[0] * uu * u + 3.0 * q[1] * uu * v + 2.0 * q[2] * uv * v + q[3] * vv * v;
+    jet.Fv += q[1] * uu * u + 2.0 * q[2] * uu * v + 3.0 * q[3] * uv * v + 4.0 * q[4] * vv * v;
+    jet.Fuu += 12.0 * q[0] * uu + 6.0 * q[1] * uv + 2.0 * q[2] * vv;
+    jet.Fuv += 3.0 * q[1] * uu + 4.0 * q[2] * uv + 3.0 * q[3] * vv;
+    jet.Fvv += 2.0 * q[2] * uu + 6.0 * q[3] * uv + 12.0 * q[4] * vv;
+  }
   return jet;
 }
 

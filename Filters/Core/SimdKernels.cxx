@@ -38,6 +38,9 @@ using CircleKernel = void (*)(const double*, const double*, std::size_t, const d
 using OrientedKernel = void (*)(const oriented::Frame&,
   const oriented::NeighborBatch&,
   oriented::Sums&);
+using QuarticKernel = void (*)(const oriented::Frame&,
+  const oriented::NeighborBatch&,
+  oriented::QuarticSums&);
 using GatherKernel = std::size_t (*)(const double*,
   const double*,
   const double*,
@@ -343,6 +346,7 @@ struct NamedKernel
   GatherKernel Gather;
   CircleKernel Circles;
   OrientedKernel Oriented;
+  QuarticKernel Quartic;
 };
 
 std::vector<NamedKernel> Kernels()
@@ -351,7 +355,8 @@ std::vector<NamedKernel> Kernels()
     &generic::ClassifyBlock,
     &GatherScalar,
     &generic::CircleDistanceSums,
-    &generic::AddOrientedNeighbors } };
+    &generic::AddOrientedNeighbors<3>,
+    &generic::AddOrientedNeighbors<4> } };
 #ifdef PCURV_MULTIVERSION
   __builtin_cpu_init();
   if (__builtin_cpu_supports("avx2"))
@@ -360,7 +365,8 @@ std::vector<NamedKernel> Kernels()
       &avx2::ClassifyBlock,
       &GatherScalar,
       &avx2::CircleDistanceSums,
-      &avx2::AddOrientedNeighbors });
+      &avx2::AddOrientedNeighbors<3>,
+      &avx2::AddOrientedNeighbors<4> });
   }
   if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") &&
     __builtin_cpu_supports("avx512vl") && __builtin_cpu_supports("avx512bw"))
@@ -369,7 +375,8 @@ std::vector<NamedKernel> Kernels()
       &avx512::ClassifyBlock,
       &avx512::Gather,
       &avx512::CircleDistanceSums,
-      &avx512::AddOrientedNeighbors });
+      &avx512::AddOrientedNeighbors<3>,
+      &avx512::AddOrientedNeighbors<4> });
   }
 #endif
   return kernels;
@@ -514,6 +521,11 @@ void AddNeighbors(const Frame& frame, const NeighborBatch& neighbors, Sums& sums
   Best().Oriented(frame, neighbors, sums);
 }
 
+void AddNeighbors(const Frame& frame, const NeighborBatch& neighbors, QuarticSums& sums)
+{
+  Best().Quartic(frame, neighbors, sums);
+}
+
 bool AddNeighborsWith(const std::string& kernel,
   const Frame& frame,
   const NeighborBatch& neighbors,
@@ -523,6 +535,19 @@ bool AddNeighborsWith(const std::string& kernel,
   if (named)
   {
     named->Oriented(frame, neighbors, sums);
+  }
+  return named != nullptr;
+}
+
+bool AddNeighborsWith(const std::string& kernel,
+  const Frame& frame,
+  const NeighborBatch& neighbors,
+  QuarticSums& sums)
+{
+  const NamedKernel* named = Named(kernel);
+  if (named)
+  {
+    named->Quartic(frame, neighbors, sums);
   }
   return named != nullptr;
 }

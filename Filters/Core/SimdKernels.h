@@ -203,52 +203,60 @@ struct Frame
   double W[3];
 };
 
-/// The unknowns of the positions' rows (C, A, B, two tilts, four cubic
-/// coefficients, the query point's height) and of the normals' rows (the
-/// same without the height).
-constexpr int PositionUnknowns = 10;
-constexpr int NormalUnknowns = 9;
-/// Where the cubic term's four columns begin, in both kinds of rows.
-constexpr int FirstCubicColumn = 5;
-constexpr int PositionMatrixSize = PositionUnknowns * (PositionUnknowns + 1) / 2;
-constexpr int NormalMatrixSize = NormalUnknowns * (NormalUnknowns + 1) / 2;
-
-/// Where each running sum is: upper triangles (row by row) and right-hand
-/// sides of both kinds of normal equations, the sums of their weighted
-/// squared targets, the neighbours' counts and the sums of their heights
-/// (h, h^2: those whose normal opposes the query's, and the others) and of
-/// their squared distances D.
-enum Entry : int
+/// Where each running sum of a fit is, for a fit of the surface's terms up
+/// to order 3 or 4. The unknowns of the positions' rows: C, A, B, the two
+/// tilts, the four cubic coefficients (of u^3, u^2 v, u v^2, v^3), at order
+/// 4 the five quartic ones (u^4, u^3 v, u^2 v^2, u v^3, v^4), and last the
+/// query point's height; those of the normals' rows: the same without the
+/// height. Entries: upper triangles (row by row) and right-hand sides of
+/// both kinds of normal equations, the sums of their weighted squared
+/// targets, the neighbours' counts and the sums of their heights (h, h^2:
+/// those whose normal opposes the query's, and the others) and of their
+/// squared distances D.
+template<int Order>
+struct Layout
 {
-  PositionMatrix = 0,
-  PositionRight = PositionMatrix + PositionMatrixSize,
-  PositionTargets = PositionRight + PositionUnknowns,
-  NormalMatrix = PositionTargets + 1,
-  NormalRight = NormalMatrix + NormalMatrixSize,
-  NormalTargets = NormalRight + NormalUnknowns,
-  Neighbors,
-  NeighborsWithNormal,
-  Opposing,
-  OpposingHeights,
-  AgreeingHeights,
-  OpposingSquaredHeights,
-  AgreeingSquaredHeights,
-  SquaredDistances,
-  NumberOfEntries
+  static_assert(Order == 3 || Order == 4, "fits of the third or the fourth order");
+  static constexpr int PositionUnknowns = Order == 3 ? 10 : 15;
+  static constexpr int NormalUnknowns = PositionUnknowns - 1;
+  static constexpr int PositionMatrixSize = PositionUnknowns * (PositionUnknowns + 1) / 2;
+  static constexpr int NormalMatrixSize = NormalUnknowns * (NormalUnknowns + 1) / 2;
+  static constexpr int PositionMatrix = 0;
+  static constexpr int PositionRight = PositionMatrix + PositionMatrixSize;
+  static constexpr int PositionTargets = PositionRight + PositionUnknowns;
+  static constexpr int NormalMatrix = PositionTargets + 1;
+  static constexpr int NormalRight = NormalMatrix + NormalMatrixSize;
+  static constexpr int NormalTargets = NormalRight + NormalUnknowns;
+  static constexpr int Neighbors = NormalTargets + 1;
+  static constexpr int NeighborsWithNormal = Neighbors + 1;
+  static constexpr int Opposing = Neighbors + 2;
+  static constexpr int OpposingHeights = Neighbors + 3;
+  static constexpr int AgreeingHeights = Neighbors + 4;
+  static constexpr int OpposingSquaredHeights = Neighbors + 5;
+  static constexpr int AgreeingSquaredHeights = Neighbors + 6;
+  static constexpr int SquaredDistances = Neighbors + 7;
+  static constexpr int NumberOfEntries = Neighbors + 8;
 };
+/// Where the cubic and the quartic terms' columns begin, in both kinds of
+/// rows.
+constexpr int FirstCubicColumn = 5;
+constexpr int FirstQuarticColumn = 9;
 
 /// Every sum is kept in eight banks: the j-th neighbour of a call adds to
 /// bank j mod 8, whatever the vector width, so that every instruction set
 /// adds the same numbers in the same order (and consecutive neighbours do
 /// not wait for each other's adds). Entry e of bank b: Banks[e * 8 + b].
 constexpr int NumberOfBanks = 8;
-struct Sums
+template<int Order>
+struct BankedSums
 {
-  double Banks[NumberOfEntries * NumberOfBanks];
+  double Banks[Layout<Order>::NumberOfEntries * NumberOfBanks];
   /// Occupied sixteenths of the turn (phi), and eighths of 2 phi.
   std::uint32_t Sectors;
   std::uint32_t HalfTurnPositions;
 };
+using Sums = BankedSums<3>;
+using QuarticSums = BankedSums<4>;
 
 /// Neighbours of a query: their offsets from the query point in the units
 /// of the fit (Dx, Dy, Dz) and their unit normals (Nx, Ny, Nz; all three 0:
@@ -267,12 +275,17 @@ struct NeighborBatch
 /// Adds neighbours to `sums` (zeroed before the first call). A neighbour at
 /// the query point is ignored. The rows are those of OrientedCircleFit.h.
 void AddNeighbors(const Frame& frame, const NeighborBatch& neighbors, Sums& sums);
+void AddNeighbors(const Frame& frame, const NeighborBatch& neighbors, QuarticSums& sums);
 
 /// AddNeighbors with a named kernel (for tests); false when not available.
 bool AddNeighborsWith(const std::string& kernel,
   const Frame& frame,
   const NeighborBatch& neighbors,
   Sums& sums);
+bool AddNeighborsWith(const std::string& kernel,
+  const Frame& frame,
+  const NeighborBatch& neighbors,
+  QuarticSums& sums);
 } // namespace oriented
 
 /// The instruction sets this build and this processor can use, widest last

@@ -319,13 +319,17 @@ void TestCircleDistanceKernelsAgree(Checks& checks)
 
 /// OrientedCircleFit.h's rows written out one neighbour at a time: the
 /// positions' row (D, D cos 2 phi, D sin 2 phi, 2 u, 2 v, 2 u^3, 2 u^2 v,
-/// 2 u v^2, 2 v^3, 1) with target 2 h; the normals' row (D, D cos 2 phi,
-/// D sin 2 phi, u, v, 3 u^3, 3 u^2 v, 3 u v^2, 3 v^3) with target
-/// -(n_q - n) . d (n_q turned when it opposes n) and weight 1 / D.
-OrientedCircleSums ReferenceOrientedSums(const TangentFrame& frame,
+/// 2 u v^2, 2 v^3, [2 u^4, 2 u^3 v, 2 u^2 v^2, 2 u v^3, 2 v^4,] 1) with target
+/// 2 h; the normals' row (D, D cos 2 phi, D sin 2 phi, u, v, 3 u^3, 3 u^2 v,
+/// 3 u v^2, 3 v^3[, 4 u^4, 4 u^3 v, 4 u^2 v^2, 4 u v^3, 4 v^4]) with target
+/// -(n_q - n) . d (n_q turned when it opposes n) and weight 1 / D; the
+/// bracketed columns at order 4.
+template<int Order>
+OrientedCircleSumsOf<Order> ReferenceOrientedSums(const TangentFrame& frame,
   const std::vector<std::array<double, 6>>& neighbors)
 {
-  OrientedCircleSums sums;
+  constexpr int P = OrientedCircleSumsOf<Order>::PositionUnknowns;
+  OrientedCircleSumsOf<Order> sums;
   auto add = [](const double* row, int n, double y, double w, double* matrix, double* right)
   {
     for (int a = 0, k = 0; a < n; ++a)
@@ -350,7 +354,10 @@ OrientedCircleSums ReferenceOrientedSums(const TangentFrame& frame,
     const double phi = std::atan2(v, u);
     const double c = u * u + v * v > 0.0 ? std::cos(2.0 * phi) : 0.0;
     const double s = u * u + v * v > 0.0 ? std::sin(2.0 * phi) : 0.0;
-    const double positions[10] = { squared,
+    const double quartic[5] = {
+      u * u * u * u, u * u * u * v, u * u * v * v, u * v * v * v, v * v * v * v
+    };
+    double positions[P] = { squared,
       squared * c,
       squared * s,
       2 * u,
@@ -358,9 +365,13 @@ OrientedCircleSums ReferenceOrientedSums(const TangentFrame& frame,
       2 * u * u * u,
       2 * u * u * v,
       2 * u * v * v,
-      2 * v * v * v,
-      1.0 };
-    add(positions, 10, 2.0 * h, 1.0, sums.PositionMatrix.data(), sums.PositionRight.data());
+      2 * v * v * v };
+    for (int k = 9; k < P - 1; ++k)
+    {
+      positions[k] = 2 * quartic[k - 9];
+    }
+    positions[P - 1] = 1.0;
+    add(positions, P, 2.0 * h, 1.0, sums.PositionMatrix.data(), sums.PositionRight.data());
     sums.PositionTargets += 4.0 * h * h;
     ++sums.Neighbors;
     sums.SquaredDistances += squared;
@@ -379,7 +390,7 @@ OrientedCircleSums ReferenceOrientedSums(const TangentFrame& frame,
     {
       t -= (side * normal[k] - frame.Normal[k]) * q[k];
     }
-    const double normals[9] = { squared,
+    double normals[P - 1] = { squared,
       squared * c,
       squared * s,
       u,
@@ -388,7 +399,11 @@ OrientedCircleSums ReferenceOrientedSums(const TangentFrame& frame,
       3 * u * u * v,
       3 * u * v * v,
       3 * v * v * v };
-    add(normals, 9, t, 1.0 / squared, sums.NormalMatrix.data(), sums.NormalRight.data());
+    for (int k = 9; k < P - 1; ++k)
+    {
+      normals[k] = 4 * quartic[k - 9];
+    }
+    add(normals, P - 1, t, 1.0 / squared, sums.NormalMatrix.data(), sums.NormalRight.data());
     sums.NormalTargets += t * t / squared;
     ++sums.NeighborsWithNormal;
     sums.Opposing += opposing;
@@ -396,14 +411,63 @@ OrientedCircleSums ReferenceOrientedSums(const TangentFrame& frame,
   return sums;
 }
 
-/// OrientedCircleAccumulator's sums (eight lanes of oriented::AddNeighbors)
-/// are the rows' sums, and bit for bit the same on every instruction set:
-/// neighbours with and without normals, opposing ones, some at the query
-/// point or on the normal line, in batches of every length.
+/// How far an accumulator's sums are from the rows' sums one by one
+/// (relative to the largest), into `largestRelative`; counts that differ
+/// into `countsWrong`.
+template<int Order>
+void CompareWithReference(const OrientedCircleSumsOf<Order>& sums,
+  const OrientedCircleSumsOf<Order>& plain,
+  double& largestRelative,
+  long& countsWrong)
+{
+  const double size = std::max(1.0, plain.PositionMatrix[0]);
+  auto compare = [&](const double* value, const double* expected, std::size_t count)
+  {
+    for (std::size_t k = 0; k < count; ++k)
+    {
+      largestRelative = std::max(largestRelative, std::fabs(value[k] - expected[k]) / size);
+    }
+  };
+  compare(sums.PositionMatrix.data(), plain.PositionMatrix.data(), plain.PositionMatrix.size());
+  compare(sums.NormalMatrix.data(), plain.NormalMatrix.data(), plain.NormalMatrix.size());
+  compare(sums.PositionRight.data(), plain.PositionRight.data(), plain.PositionRight.size());
+  compare(sums.NormalRight.data(), plain.NormalRight.data(), plain.NormalRight.size());
+  compare(&sums.PositionTargets, &plain.PositionTargets, 1);
+  compare(&sums.NormalTargets, &plain.NormalTargets, 1);
+  compare(&sums.OpposingHeights, &plain.OpposingHeights, 1);
+  compare(&sums.AgreeingSquaredHeights, &plain.AgreeingSquaredHeights, 1);
+  compare(&sums.SquaredDistances, &plain.SquaredDistances, 1);
+  countsWrong += sums.Neighbors != plain.Neighbors ||
+    sums.NeighborsWithNormal != plain.NeighborsWithNormal || sums.Opposing != plain.Opposing;
+}
+
+/// The same sums, bit for bit (every entry and count).
+bool SameSums(const OrientedCircleSums& a, const OrientedCircleSums& b)
+{
+  auto same = [](const auto& x, const auto& y)
+  { return std::memcmp(x.data(), y.data(), x.size() * sizeof(x[0])) == 0; };
+  return same(a.PositionMatrix, b.PositionMatrix) && same(a.PositionRight, b.PositionRight) &&
+    same(a.NormalMatrix, b.NormalMatrix) && same(a.NormalRight, b.NormalRight) &&
+    std::memcmp(&a.PositionTargets, &b.PositionTargets, sizeof(double)) == 0 &&
+    std::memcmp(&a.NormalTargets, &b.NormalTargets, sizeof(double)) == 0 &&
+    a.Neighbors == b.Neighbors && a.NeighborsWithNormal == b.NeighborsWithNormal &&
+    a.Opposing == b.Opposing && a.Sectors == b.Sectors &&
+    a.HalfTurnPositions == b.HalfTurnPositions &&
+    std::memcmp(&a.SquaredDistances, &b.SquaredDistances, sizeof(double)) == 0 &&
+    std::memcmp(&a.OpposingHeights, &b.OpposingHeights, sizeof(double)) == 0 &&
+    std::memcmp(&a.AgreeingSquaredHeights, &b.AgreeingSquaredHeights, sizeof(double)) == 0;
+}
+
+/// OrientedCircleAccumulator's sums (eight lanes of oriented::AddNeighbors),
+/// of the third and of the fourth order, are the rows' sums, and bit for
+/// bit the same on every instruction set: neighbours with and without
+/// normals, opposing ones, some at the query point or on the normal line,
+/// in batches of every length. The third order's part of the fourth's sums
+/// is the third order's sums, bit for bit.
 void TestOrientedSumKernelsAgree(Checks& checks)
 {
   Random random(41);
-  long differences = 0, countsWrong = 0;
+  long differences = 0, countsWrong = 0, partsDiffer = 0;
   double largestRelative = 0.0;
   for (int trial = 0; trial < 400; ++trial)
   {
@@ -440,54 +504,38 @@ void TestOrientedSumKernelsAgree(Checks& checks)
       columns[4].data(),
       columns[5].data(),
       count };
-    auto add = [&](const std::string& kernel, oriented::Sums& sums)
-    { return oriented::AddNeighborsWith(kernel, f, batch, sums); };
-    oriented::Sums reference{};
-    add("generic", reference);
-    for (const std::string& kernel : AvailableKernels())
+    auto agree = [&](auto reference)
     {
-      oriented::Sums sums{};
-      checks.True("oriented kernel runs", add(kernel, sums));
-      differences += std::memcmp(&sums, &reference, sizeof sums) == 0 ? 0 : 1;
-    }
-    OrientedCircleAccumulator accumulator;
-    accumulator.Begin(frame);
+      oriented::AddNeighborsWith("generic", f, batch, reference);
+      for (const std::string& kernel : AvailableKernels())
+      {
+        decltype(reference) sums{};
+        checks.True("oriented kernel runs", oriented::AddNeighborsWith(kernel, f, batch, sums));
+        differences += std::memcmp(&sums, &reference, sizeof sums) == 0 ? 0 : 1;
+      }
+    };
+    agree(oriented::Sums{});
+    agree(oriented::QuarticSums{});
+    OrientedCircleAccumulator third;
+    QuarticCircleAccumulator fourth;
+    third.Begin(frame);
+    fourth.Begin(frame);
     for (const std::array<double, 6>& q : neighbors)
     {
-      accumulator.Add(q.data(), q[2] == 0.0 && trial % 2 ? nullptr : q.data() + 3);
+      const double* normal = q[2] == 0.0 && trial % 2 ? nullptr : q.data() + 3;
+      third.Add(q.data(), normal);
+      fourth.Add(q.data(), normal);
     }
-    const OrientedCircleSums& sums = accumulator.Sums();
-    const OrientedCircleSums plain = ReferenceOrientedSums(frame, neighbors);
-    auto compare = [&](double value, double expected, double size)
-    { largestRelative = std::max(largestRelative, std::fabs(value - expected) / size); };
-    const double size = std::max(1.0, plain.PositionMatrix[0]);
-    for (std::size_t k = 0; k < plain.PositionMatrix.size(); ++k)
-    {
-      compare(sums.PositionMatrix[k], plain.PositionMatrix[k], size);
-    }
-    for (std::size_t k = 0; k < plain.NormalMatrix.size(); ++k)
-    {
-      compare(sums.NormalMatrix[k], plain.NormalMatrix[k], size);
-    }
-    for (std::size_t k = 0; k < plain.PositionRight.size(); ++k)
-    {
-      compare(sums.PositionRight[k], plain.PositionRight[k], size);
-    }
-    for (std::size_t k = 0; k < plain.NormalRight.size(); ++k)
-    {
-      compare(sums.NormalRight[k], plain.NormalRight[k], size);
-    }
-    compare(sums.PositionTargets, plain.PositionTargets, size);
-    compare(sums.NormalTargets, plain.NormalTargets, size);
-    compare(sums.OpposingHeights, plain.OpposingHeights, size);
-    compare(sums.AgreeingSquaredHeights, plain.AgreeingSquaredHeights, size);
-    compare(sums.SquaredDistances, plain.SquaredDistances, size);
-    countsWrong += sums.Neighbors != plain.Neighbors ||
-      sums.NeighborsWithNormal != plain.NeighborsWithNormal || sums.Opposing != plain.Opposing;
+    CompareWithReference(
+      third.Sums(), ReferenceOrientedSums<3>(frame, neighbors), largestRelative, countsWrong);
+    CompareWithReference(
+      fourth.Sums(), ReferenceOrientedSums<4>(frame, neighbors), largestRelative, countsWrong);
+    partsDiffer += SameSums(ThirdOrderPart(fourth.Sums()), third.Sums()) ? 0 : 1;
   }
   checks.Equal("oriented sums where a kernel differs from the generic one", differences, 0L);
   checks.Equal("oriented sums' neighbour counts wrong", countsWrong, 0L);
   checks.Near("oriented sums against the rows one by one (relative)", largestRelative, 0.0, 1e-12);
+  checks.Equal("third order's part of the fourth's sums differs from its own", partsDiffer, 0L);
 }
 
 /// Neighbours given as coordinates or as offsets: the same estimate.

@@ -12,7 +12,8 @@ RedistributeDataSet, which cuts the cloud into spatial pieces, one per rank,
 so the cuts go through the surface. Fixed thresholds and the dynamic
 adjustment are both checked: max |k - k_serial| / max |k| below 1e-12, and
 the same points unestimated. The cloud is noisy, so that the default's
-shared fits (anchors from other ranks' parts among them) are checked too.
+shared fits (anchors from other ranks' parts among them) and, its normals
+being exact, its fits of the fourth order are checked too.
 """
 
 import sys
@@ -98,13 +99,13 @@ def compare(reference, result, label):
     return failures
 
 
-def read_shared_count(path):
-    """The field data Shared_Fit_Points of a written output (every piece
-    holds the count over all processes)."""
+def read_field_value(path, name):
+    """A field data value of a written output (every piece holds the value
+    over all processes); 0 when absent."""
     reader = vtkXMLPPolyDataReader()
     reader.SetFileName(path)
     reader.Update()
-    array = reader.GetOutput().GetFieldData().GetArray("Shared_Fit_Points")
+    array = reader.GetOutput().GetFieldData().GetArray(name)
     return int(array.GetValue(0)) if array else 0
 
 
@@ -172,10 +173,14 @@ def main(plugin, cloud, action, prefix):
             if variant == "fixed":
                 # The default shares fits on this noisy cloud: the anchors a
                 # rank needs may lie in another rank's part (the halo).
-                shared = read_shared_count(output)
+                shared = read_field_value(output, "Shared_Fit_Points")
                 print("%-32s Shared_Fit_Points  %d" % (label, shared))
                 if not shared > 0.5 * len(result["ids"]):
                     failures.append("%s: only %d points shared fits" % (label, shared))
+                # Exact normals of a noisy cloud: the fourth order's fits too,
+                # decided on a sample drawn from every rank's part.
+                if read_field_value(output, "Fourth_Order_Fits") != 1:
+                    failures.append("%s: no fourth-order fits with exact normals" % label)
     for failure in failures:
         print("FAILED " + failure)
     print("%d failed" % len(failures))
