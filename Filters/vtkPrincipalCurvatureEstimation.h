@@ -410,7 +410,7 @@ public:
   /**
    * After an update with the automatic neighborhood: whether the cloud's
    * normals follow the surface as exact normals do (on most points of a
-   * sample), so that the neighborhoods beyond the first also fitted the
+   * sample), so that the neighborhoods of 256 neighbors and more also fitted the
    * surface's fourth order where it shows (docs/method.md, section 10); the
    * output's field data "Fourth_Order_Fits" holds it too (1 or 0).
    */

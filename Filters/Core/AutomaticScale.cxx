@@ -15,6 +15,11 @@ namespace
 constexpr double NormalTiltAllowance = 2.4;
 /// NormalFollowsSurface's radius, in first radii.
 constexpr double NormalTestRadius = 4.0;
+/// The first radius of the ladder fitted at the fourth order too: four
+/// first radii, about 256 neighbours (the test's radius). Fewer determine
+/// its 15 unknowns poorly where the sampling is uneven (scan lines), and
+/// only noisy clouds grow this far.
+constexpr int FourthOrderFirstLevel = 4;
 /// Simplest's tolerance: two standard errors of the two fits' difference,
 /// each the combined fit's covariance's inflated as the reported error's.
 constexpr double OrderTolerance = 2.0 * CombinedErrorFactor;
@@ -93,7 +98,6 @@ bool FitEitherOrder(QuarticCircleAccumulator& accumulator,
     settings.MaximumOpposingFraction,
     true);
   result = Simplest(third, fourth);
-  result.NormalsFollowSurface = true;
   return true;
 }
 } // namespace
@@ -118,7 +122,7 @@ ScaleEstimate AutomaticScaleEstimator::Estimate(std::int64_t point,
   accepted.clear();
   UnestimatedReason reason = UnestimatedReason::TooFewNeighbors;
   double inner = 0.0;
-  // The fourth order's sums, once a radius beyond the first is reached.
+  // The fourth order's sums, from FourthOrderFirstLevel on.
   QuarticCircleAccumulator& quartic = scratch.QuarticSums;
   bool fourthOrder = false;
   auto addShell = [&](const ShellPoints& shell)
@@ -142,7 +146,7 @@ ScaleEstimate AutomaticScaleEstimator::Estimate(std::int64_t point,
   for (int level = 0; level < rule.Levels; ++level)
   {
     const double r = std::min(unit * std::pow(2.0, 0.5 * level), rule.LargestRadius);
-    if (rule.FourthOrder && level > 0 && !fourthOrder)
+    if (rule.FourthOrder && level >= FourthOrderFirstLevel && !fourthOrder)
     {
       // The inner radii's neighbours again, into the fourth order's sums.
       fourthOrder = true;

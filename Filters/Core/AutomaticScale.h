@@ -34,7 +34,7 @@ struct AutomaticScaleRule
   double LargestRadius = 0; // no radius beyond this (a length)
   double TypicalRadius = 0; // the cloud's typical first radius (a length)
   bool ShareFits = false;   // points near an anchor take its fit (SharedFits.h)
-  bool FourthOrder = false; // beyond the first radius, fits of the surface's fourth order too
+  bool FourthOrder = false; // wide radii fit the surface's fourth order too
   SharingRule Sharing;
 };
 
@@ -171,8 +171,8 @@ public:
   /// has begun to show. A radius at which too many neighbours' normals
   /// oppose the point's stops the growth (the neighbourhood would reach
   /// across the surface).
-  /// With FourthOrder, the radii beyond the first fit the surface's
-  /// fourth-order terms too (the first holds too few neighbours for them).
+  /// With FourthOrder, the radii from four first radii on fit the
+  /// surface's fourth-order terms too.
   ScaleEstimate Estimate(std::int64_t point, AutomaticScaleScratch& scratch) const;
 
   /// Whether the point's normal follows the surface as closely as exact

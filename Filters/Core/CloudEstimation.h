@@ -180,8 +180,8 @@ struct EstimationSummary
   /// NeighborhoodMode::Automatic with shared fits: the points estimated
   /// from anchors' fits rather than their own (EstimationSettings::ShareFits).
   std::int64_t NumberOfSharedPoints = 0;
-  /// Whether the automatic scale fitted the surface's fourth order beyond
-  /// its first radius (the normals follow the surface closely).
+  /// Whether the automatic scale also fitted the surface's fourth order at
+  /// its wide radii (the normals follow the surface closely).
   bool FourthOrderFits = false;
   /// The caller asked to stop: the buffers are incomplete.
   bool Aborted = false;

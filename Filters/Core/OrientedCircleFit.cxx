@@ -477,9 +477,11 @@ double ReportedStandardError(const OrientedCircleResult& chosen,
     : 0.0;
   const double floor =
     precision * std::max(std::fabs(k.MinimumCurvature), std::fabs(k.MaximumCurvature));
-  // Where the normals follow the surface, the combined fit's own error
-  // (inflated) stands for both the positions-only fit's and the normals'.
-  const bool combined = chosen.NormalsFollowSurface;
+  // A fit of the fourth order (made only where the normals follow the
+  // surface): the combined fit's own error, inflated, stands for both the
+  // positions-only fit's and the normals' pull (the positions-only fit of
+  // 15 unknowns is far less precise than the combined one).
+  const bool combined = chosen.Order == 4;
   const double parts[] = { combined ? CombinedErrorFactor * chosen.CombinedStandardError
                                     : chosen.StandardError,
     combined ? 0.0 : chosen.PositionsDiscrepancy,

@@ -72,7 +72,7 @@ constexpr double ReportedErrorFactor = 1.5;
 /// cloud): their rows' residuals are not independent noise alone (the
 /// positions' noise moves both a row's target and its columns), so the
 /// covariance understates the error; calibrated on the shared accuracy
-/// suite.
+/// suite. The reported error of a fourth-order fit (ReportedStandardError).
 constexpr double CombinedErrorFactor = 4.0;
 
 /// The least-squares sums of the neighbours added so far, in the frame of
@@ -193,9 +193,6 @@ struct OrientedCircleResult
   PointCurvature Curvature;
   /// The order of the surface's terms fitted: 3 or 4.
   int Order = 3;
-  /// The normals follow the surface (a fit of the automatic scale's ladder
-  /// of both orders): the combined fit's own error stands for the error.
-  bool NormalsFollowSurface = false;
   double StandardError = 0.0;
   /// The combined fit's own standard error of the curvatures (1/length),
   /// from its covariance: what telling a fit of the third order from one of
