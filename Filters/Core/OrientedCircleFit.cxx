@@ -320,8 +320,7 @@ const OrientedCircleSumsOf<Order>& OrientedCircleAccumulatorOf<Order>::Sums()
   return sums;
 }
 
-template<int Order>
-bool OrientedCircleSumsOf<Order>::ReachesAcross(double maximumOpposing) const
+bool OrientedCircleTallies::ReachesAcross(double maximumOpposing) const
 {
   if (this->Opposing == 0 || !(this->Opposing > maximumOpposing * this->Neighbors))
   {
@@ -537,23 +536,10 @@ OrientedCircleSums ThirdOrderPart(const QuarticCircleSums& sums)
       part.NormalMatrix[k++] = sums.NormalMatrix[upperIndex(a, b, Fourth - 1)];
     }
   }
-  part.PositionTargets = sums.PositionTargets;
-  part.NormalTargets = sums.NormalTargets;
-  part.Neighbors = sums.Neighbors;
-  part.NeighborsWithNormal = sums.NeighborsWithNormal;
-  part.Opposing = sums.Opposing;
-  part.OpposingHeights = sums.OpposingHeights;
-  part.AgreeingHeights = sums.AgreeingHeights;
-  part.SquaredDistances = sums.SquaredDistances;
-  part.OpposingSquaredHeights = sums.OpposingSquaredHeights;
-  part.AgreeingSquaredHeights = sums.AgreeingSquaredHeights;
-  part.Sectors = sums.Sectors;
-  part.HalfTurnPositions = sums.HalfTurnPositions;
+  static_cast<OrientedCircleTallies&>(part) = sums;
   return part;
 }
 
-template struct OrientedCircleSumsOf<3>;
-template struct OrientedCircleSumsOf<4>;
 template class OrientedCircleAccumulatorOf<3>;
 template class OrientedCircleAccumulatorOf<4>;
 template OrientedCircleResult FitOrientedCircles<3>(const OrientedCircleSums&,

@@ -75,21 +75,11 @@ constexpr double ReportedErrorFactor = 1.5;
 /// suite. The reported error of a fourth-order fit (ReportedStandardError).
 constexpr double CombinedErrorFactor = 4.0;
 
-/// The least-squares sums of the neighbours added so far, in the frame of
-/// the query point and in units of a fixed scale, for a fit of the
-/// surface's terms up to `Order` (3: the cubic, 4: also the quartic; the
-/// unknowns of oriented::Layout).
-template<int Order>
-struct OrientedCircleSumsOf
+/// What the sums of a neighbourhood hold besides the normal equations'
+/// matrices and right-hand sides: the same for a fit of either order.
+struct OrientedCircleTallies
 {
-  static constexpr int PositionUnknowns = oriented::Layout<Order>::PositionUnknowns;
-  static constexpr int NormalUnknowns = oriented::Layout<Order>::NormalUnknowns;
-  /// Upper triangles and right-hand sides of the positions' and the
-  /// normals' normal equations, and the sums of their squared targets.
-  std::array<double, PositionUnknowns*(PositionUnknowns + 1) / 2> PositionMatrix{};
-  std::array<double, PositionUnknowns> PositionRight{};
-  std::array<double, NormalUnknowns*(NormalUnknowns + 1) / 2> NormalMatrix{};
-  std::array<double, NormalUnknowns> NormalRight{};
+  /// The sums of the positions' and the normals' squared targets.
   double PositionTargets = 0.0, NormalTargets = 0.0;
   int Neighbors = 0;
   int NeighborsWithNormal = 0;
@@ -110,6 +100,23 @@ struct OrientedCircleSumsOf
   /// Opposing normals on the query's own sheet are only inconsistently
   /// oriented normals.
   bool ReachesAcross(double maximumOpposing) const;
+};
+
+/// The least-squares sums of the neighbours added so far, in the frame of
+/// the query point and in units of a fixed scale, for a fit of the
+/// surface's terms up to `Order` (3: the cubic, 4: also the quartic; the
+/// unknowns of oriented::Layout).
+template<int Order>
+struct OrientedCircleSumsOf : OrientedCircleTallies
+{
+  static constexpr int PositionUnknowns = oriented::Layout<Order>::PositionUnknowns;
+  static constexpr int NormalUnknowns = oriented::Layout<Order>::NormalUnknowns;
+  /// Upper triangles and right-hand sides of the positions' and the
+  /// normals' normal equations.
+  std::array<double, PositionUnknowns*(PositionUnknowns + 1) / 2> PositionMatrix{};
+  std::array<double, PositionUnknowns> PositionRight{};
+  std::array<double, NormalUnknowns*(NormalUnknowns + 1) / 2> NormalMatrix{};
+  std::array<double, NormalUnknowns> NormalRight{};
 };
 using OrientedCircleSums = OrientedCircleSumsOf<3>;
 using QuarticCircleSums = OrientedCircleSumsOf<4>;
