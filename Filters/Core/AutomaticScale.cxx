@@ -24,6 +24,17 @@ constexpr int FourthOrderFirstLevel = 4;
 /// each the combined fit's covariance's inflated as the reported error's.
 constexpr double OrderTolerance = 2.0 * CombinedErrorFactor;
 
+/// A fourth-order fit whose neighbourhood the surface turns through more
+/// than a radian across (radius times the largest |curvature|): a height
+/// over the tangent plane, even of the fourth order, no longer follows it
+/// there (an ellipsoid's tips), and its covariance does not show it.
+bool TurnsTooFar(const OrientedCircleResult& fit, double radius)
+{
+  const PointCurvature& k = fit.Curvature;
+  return fit.Order == 4 &&
+    radius * std::max(std::fabs(k.MinimumCurvature), std::fabs(k.MaximumCurvature)) > 1.0;
+}
+
 /// The fit of the sums so far into `result`; false (no fit) where the
 /// neighbourhood reaches across the surface.
 template<int Order>
@@ -173,7 +184,7 @@ ScaleEstimate AutomaticScaleEstimator::Estimate(std::int64_t point,
       : UnestimatedReasonOf(result.Curvature, this->Settings.MinimumPointsPerDirection);
     if (result.Curvature.Valid && neighbors >= rule.MinimumCount)
     {
-      if (!AgreesWithSmaller(result, accepted, rule.Tolerance))
+      if (!AgreesWithSmaller(result, accepted, rule.Tolerance) || TurnsTooFar(result, r))
       {
         break;
       }

@@ -542,12 +542,14 @@ void TestFourthOrder(Checks& checks)
   const double ellipsoidArea = 4.0 * 3.141592653589793 *
     std::pow((std::pow(6.0, p) + std::pow(4.5, p) + std::pow(3.0, p)) / 3.0, 1.0 / p);
   std::vector<Case> cases = {
-    // Bounds between the two: the third order alone gave 0.0126 and 0.0096.
+    // The third order alone gave 0.0126 and 0.0096; on the ellipsoid the
+    // fourth without the stop where the surface turns through more than a
+    // radian (at its tips) gave 0.0051, with it 0.0036.
     { "ellipsoid",
       testing::Sample(testing::Ellipsoid(3.0, 2.0, 1.5), 20000, 63),
       ellipsoidArea,
       3.0 / (1.5 * 1.5),
-      0.008 },
+      0.0044 },
     { "saddle", testing::Sample(testing::Saddle(1.0, 1.0), 20000, 65), 4.0, 1.0, 0.004 },
   };
   for (Case& c : cases)
@@ -565,30 +567,34 @@ void TestFourthOrder(Checks& checks)
     own.EstimateNormals = true;
     Results estimated(c.Samples.size(), false);
     const EstimationSummary ownSummary = Estimate(c.Samples, own, estimated, serial);
-    int valid = 0, covered = 0;
+    int valid = 0, covered = 0, far = 0;
     for (std::size_t i = 0; i < c.Samples.size(); ++i)
     {
       if (given.Valid[i])
       {
-        ++valid;
-        covered +=
+        const double pointError =
           std::max(std::fabs(given.Minimum[i] - c.Samples[i].MinimumCurvature),
-            std::fabs(given.Maximum[i] - c.Samples[i].MaximumCurvature)) <= 2.0 * standardError[i];
+            std::fabs(given.Maximum[i] - c.Samples[i].MaximumCurvature));
+        ++valid;
+        covered += pointError <= 2.0 * standardError[i];
+        far += pointError > 0.2 * c.Largest;
       }
     }
     const double error = MeanError(c.Samples, given) / c.Largest;
     std::printf("fourth order: noisy %s, exact normals: on %d, mean |k - exact| / largest k %.5f, "
-                "within 2 SE %.3f; estimated normals: on %d, %.5f\n",
+                "within 2 SE %.3f, off by > 20 %% %d; estimated normals: on %d, %.5f\n",
       c.Name,
       summary.FourthOrderFits ? 1 : 0,
       error,
       valid ? static_cast<double>(covered) / valid : 0.0,
+      far,
       ownSummary.FourthOrderFits ? 1 : 0,
       MeanError(c.Samples, estimated) / c.Largest);
     const std::string what = std::string("fourth order, noisy ") + c.Name + ": ";
     checks.True((what + "on with exact normals").c_str(), summary.FourthOrderFits);
     checks.True((what + "off with estimated normals").c_str(), !ownSummary.FourthOrderFits);
-    checks.True((what + "error below the third order's").c_str(), error < c.Bound);
+    checks.True((what + "error below its bound").c_str(), error < c.Bound);
+    checks.True((what + "no valid point off by 20 % of max |k|").c_str(), far == 0);
     checks.True((what + "at least 85 % within 2 standard errors").c_str(),
       covered >= 0.85 * valid && valid > 0);
     checks.True((what + "3 threads bit-identical to 1").c_str(), given.BitIdentical(threaded));
