@@ -119,10 +119,8 @@ ScaleEstimate AutomaticScaleEstimator::Estimate(std::int64_t point,
   const double* x = &this->Cloud.Coordinates[3 * point];
   const double* n = &this->Cloud.Normals[3 * point];
   const AutomaticScaleRule& rule = this->Rule;
-  // k + 1: the point itself is found too.
-  const double base =
-    std::sqrt(this->Grid.SquaredDistanceToKth(x, rule.BaseCount + 1, scratch.Distances));
-  const double unit = std::nextafter(std::min(base, rule.LargestRadius), HUGE_VAL);
+  const double unit =
+    std::nextafter(std::min(this->FirstRadius(x, scratch), rule.LargestRadius), HUGE_VAL);
   const double inverseUnit = 1.0 / unit;
   const TangentFrame frame = MakeTangentFrame({ { n[0], n[1], n[2] } });
   OrientedCircleAccumulator& accumulator = scratch.Sums;
@@ -133,27 +131,10 @@ ScaleEstimate AutomaticScaleEstimator::Estimate(std::int64_t point,
   accepted.clear();
   UnestimatedReason reason = UnestimatedReason::TooFewNeighbors;
   double inner = 0.0;
-  // The fourth order's sums, from FourthOrderFirstLevel on.
+  // The fourth order's sums, from FourthOrderFirstLevel on (instead of
+  // the third's).
   QuarticCircleAccumulator& quartic = scratch.QuarticSums;
   bool fourthOrder = false;
-  auto addShell = [&](const ShellPoints& shell)
-  {
-    for (std::size_t i = 0; i < shell.Count; ++i)
-    {
-      const double d[3] = {
-        shell.Dx[i] * inverseUnit, shell.Dy[i] * inverseUnit, shell.Dz[i] * inverseUnit
-      };
-      const double* normal = &this->Cloud.Normals[3 * shell.Ids[i]];
-      if (fourthOrder)
-      {
-        quartic.Add(d, normal);
-      }
-      else
-      {
-        accumulator.Add(d, normal);
-      }
-    }
-  };
   for (int level = 0; level < rule.Levels; ++level)
   {
     const double r = std::min(unit * std::pow(2.0, 0.5 * level), rule.LargestRadius);
@@ -163,11 +144,18 @@ ScaleEstimate AutomaticScaleEstimator::Estimate(std::int64_t point,
       fourthOrder = true;
       quartic.Begin(frame);
       this->Grid.GatherShell(x, 0.0, inner, scratch.Shell);
-      addShell(scratch.Shell);
+      this->AddShell(scratch.Shell, inverseUnit, quartic);
     }
     // The inner radii's neighbours are in the sums already.
     this->Grid.GatherShell(x, inner, r, scratch.Shell);
-    addShell(scratch.Shell);
+    if (fourthOrder)
+    {
+      this->AddShell(scratch.Shell, inverseUnit, quartic);
+    }
+    else
+    {
+      this->AddShell(scratch.Shell, inverseUnit, accumulator);
+    }
     inner = r;
     OrientedCircleResult result;
     const bool fitted = fourthOrder
@@ -218,6 +206,12 @@ ScaleEstimate AutomaticScaleEstimator::Estimate(std::int64_t point,
   };
 }
 
+double AutomaticScaleEstimator::FirstRadius(const double* x, AutomaticScaleScratch& scratch) const
+{
+  // k + 1: the point itself is found too.
+  return std::sqrt(this->Grid.SquaredDistanceToKth(x, this->Rule.BaseCount + 1, scratch.Distances));
+}
+
 int AutomaticScaleEstimator::NormalFollowsSurface(std::int64_t point,
   AutomaticScaleScratch& scratch) const
 {
@@ -227,10 +221,8 @@ int AutomaticScaleEstimator::NormalFollowsSurface(std::int64_t point,
   {
     return -1;
   }
-  const double base =
-    std::sqrt(this->Grid.SquaredDistanceToKth(x, this->Rule.BaseCount + 1, scratch.Distances));
-  const double r =
-    std::nextafter(std::min(NormalTestRadius * base, this->Rule.LargestRadius), HUGE_VAL);
+  const double r = std::nextafter(
+    std::min(NormalTestRadius * this->FirstRadius(x, scratch), this->Rule.LargestRadius), HUGE_VAL);
   if (!(r > 0.0) || !std::isfinite(r))
   {
     return -1;
@@ -239,15 +231,8 @@ int AutomaticScaleEstimator::NormalFollowsSurface(std::int64_t point,
   const TangentFrame frame = MakeTangentFrame({ { n[0], n[1], n[2] } });
   OrientedCircleAccumulator& accumulator = scratch.Sums;
   accumulator.Begin(frame);
-  const ShellPoints& shell = scratch.Shell;
   this->Grid.GatherShell(x, 0.0, r, scratch.Shell);
-  for (std::size_t i = 0; i < shell.Count; ++i)
-  {
-    const double d[3] = {
-      shell.Dx[i] * inverseRadius, shell.Dy[i] * inverseRadius, shell.Dz[i] * inverseRadius
-    };
-    accumulator.Add(d, &this->Cloud.Normals[3 * shell.Ids[i]]);
-  }
+  this->AddShell(scratch.Shell, inverseRadius, accumulator);
   OrientedCircleResult result;
   if (!FitSums(accumulator, frame, inverseRadius, this->Settings, result) ||
     !result.Curvature.Valid)

@@ -192,6 +192,26 @@ public:
     AutomaticScaleScratch& scratch) const;
 
 private:
+  /// The distance from `x` to its BaseCount-th nearest neighbour: the
+  /// first radius of its ladder.
+  double FirstRadius(const double* x, AutomaticScaleScratch& scratch) const;
+
+  /// Adds the points of `shell` (offsets divided by the radius unit) with
+  /// their normals to `sums`.
+  template<int Order>
+  void AddShell(const ShellPoints& shell,
+    double inverseUnit,
+    OrientedCircleAccumulatorOf<Order>& sums) const
+  {
+    for (std::size_t i = 0; i < shell.Count; ++i)
+    {
+      const double d[3] = {
+        shell.Dx[i] * inverseUnit, shell.Dy[i] * inverseUnit, shell.Dz[i] * inverseUnit
+      };
+      sums.Add(d, &this->Cloud.Normals[3 * shell.Ids[i]]);
+    }
+  }
+
   /// Lepski's test: the principal curvatures agree with each smaller
   /// radius's within `tolerance` times the sum of their standard errors.
   static bool AgreesWithSmaller(const OrientedCircleResult& candidate,

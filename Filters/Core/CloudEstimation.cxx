@@ -307,8 +307,8 @@ bool ChooseAnchors(AnchorTable& anchors,
   return everyProcessGoesOn && ContinueBetweenSteps(run.Monitor, run.NormalsShare, run.Processes);
 }
 
-/// Whether the automatic scale should fit the surface's fourth order beyond
-/// its first radius: where the normals follow the surface as exact normals
+/// Whether the automatic scale should fit the surface's fourth order at its
+/// wide radii too: where the normals follow the surface as exact normals
 /// of a noisy cloud do (AutomaticScaleEstimator::NormalFollowsSurface) at
 /// most of the points of the cloud's spacing sample (the same points and
 /// counts for any split among processes). Estimated normals share their

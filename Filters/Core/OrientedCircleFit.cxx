@@ -391,8 +391,9 @@ OrientedCircleResult FitOrientedCircles(const OrientedCircleSumsOf<Order>& sums,
     std::max(ResidualVariance(positions, positionRight, sums.PositionTargets, sums.Neighbors),
       VarianceFloor);
   Solution<PositionUnknowns> combined = positions;
-  Eigen::Matrix<double, PositionUnknowns, 3> combinedCovariance =
-    positions.Inverse * positionVariance;
+  // With `combinedError`: combined.Inverse is the combined fit's covariance
+  // (its rows are weighted by the inverse of their variances).
+  bool hasCombinedCovariance = false;
   if (sums.NeighborsWithNormal > NormalUnknowns)
   {
     const NormalMatrix normalMatrix = Full<NormalUnknowns>(sums.NormalMatrix);
@@ -413,7 +414,7 @@ OrientedCircleResult FitOrientedCircles(const OrientedCircleSumsOf<Order>& sums,
       right.template head<NormalUnknowns>() += normalRight / normalVariance;
       const Solution<PositionUnknowns> both = Solve<PositionUnknowns>(matrix, right, combinedError);
       combined = both.Valid ? both : combined;
-      combinedCovariance = both.Valid && combinedError ? both.Inverse : combinedCovariance;
+      hasCombinedCovariance = both.Valid && combinedError;
     }
   }
 
@@ -422,7 +423,9 @@ OrientedCircleResult FitOrientedCircles(const OrientedCircleSumsOf<Order>& sums,
   const double c = combined.X[1], s = combined.X[2];
   const double amplitude = std::hypot(c, s);
   result.StandardError = CurvatureStandardError(covariance, c, s) * inverseScale;
-  result.CombinedStandardError = CurvatureStandardError(combinedCovariance, c, s) * inverseScale;
+  result.CombinedStandardError = hasCombinedCovariance
+    ? CurvatureStandardError(combined.Inverse, c, s) * inverseScale
+    : result.StandardError;
   result.PositionsDiscrepancy =
     (std::fabs(combined.X[0] - positions.X[0]) +
       std::fabs(amplitude - std::hypot(positions.X[1], positions.X[2]))) *

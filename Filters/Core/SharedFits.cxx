@@ -42,6 +42,8 @@ SurfaceJet JetAt(const FittedSurface& surface, double u, double v)
   jet.Fuu = c + a + 6.0 * x[5] * u + 2.0 * x[6] * v;
   jet.Fuv = b + 2.0 * x[6] * u + 2.0 * x[7] * v;
   jet.Fvv = c - a + 2.0 * x[7] * u + 6.0 * x[8] * v;
+  // A third-order surface skips these: adding zeros could still turn a
+  // -0 into +0, and its numbers stay as they were.
   const double* q = x.data() + FittedSurface::FirstQuarticCoefficient;
   if (q[0] != 0.0 || q[1] != 0.0 || q[2] != 0.0 || q[3] != 0.0 || q[4] != 0.0)
   {
