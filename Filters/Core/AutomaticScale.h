@@ -142,6 +142,9 @@ struct AutomaticScaleScratch
   ShellPoints Shell;
   std::vector<double> Distances;
   std::vector<OrientedCircleResult> Scales;
+  std::vector<std::size_t> JetOrder;
+  std::vector<double> JetDistances;
+  std::vector<double> JetDx, JetDy, JetDz;
   AnchorCells::Around Anchors;
   std::vector<AnchorEstimate> NearbyAnchors;
 };
@@ -172,7 +175,10 @@ public:
   /// oppose the point's stops the growth (the neighbourhood would reach
   /// across the surface).
   /// With FourthOrder, the radii from four first radii on fit the
-  /// surface's fourth-order terms too.
+  /// surface's fourth-order terms too. Where the growth stopped within the
+  /// first radii (positions with little or no noise), a height jet of the
+  /// nearest neighbours (HeightJet.h) replaces the estimate where its error
+  /// is the smaller (PreferJet).
   ScaleEstimate Estimate(std::int64_t point, AutomaticScaleScratch& scratch) const;
 
   /// Whether the point's normal follows the surface as closely as exact
@@ -192,6 +198,17 @@ public:
     AutomaticScaleScratch& scratch) const;
 
 private:
+  /// Replaces `estimate` by the height jet of the JetCount nearest
+  /// neighbours where the jet's error (its standard error, inflated for
+  /// the bias its residual does not show) is below `ladderError` (the
+  /// ladder's reported error without the precision floor).
+  void PreferJet(const double* x,
+    const TangentFrame& frame,
+    double firstRadius,
+    double ladderError,
+    AutomaticScaleScratch& scratch,
+    ScaleEstimate& estimate) const;
+
   /// The distance from `x` to its BaseCount-th nearest neighbour: the
   /// first radius of its ladder.
   double FirstRadius(const double* x, AutomaticScaleScratch& scratch) const;

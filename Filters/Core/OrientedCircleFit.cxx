@@ -1,5 +1,7 @@
 #include "OrientedCircleFit.h"
 
+#include "SmallLeastSquares.h"
+
 #include <Eigen/Dense>
 
 #include <algorithm>
@@ -11,9 +13,11 @@ namespace pcurv
 namespace
 {
 template<int N>
-using Vector = Eigen::Matrix<double, N, 1>;
+using Vector = small::Vector<N>;
 template<int N>
-using Matrix = Eigen::Matrix<double, N, N>;
+using Matrix = small::Matrix<N>;
+using small::Solution;
+using small::Solve;
 /// Fewer neighbours than the unknowns and two leave the fit without a
 /// residual to weigh it.
 constexpr int ResidualNeighbors = 2;
@@ -41,124 +45,6 @@ template<int N>
 Vector<N> Full(const std::array<double, N>& right)
 {
   return Eigen::Map<const Vector<N>>(right.data());
-}
-
-/// The unknowns (C, A, B, tilt u, tilt v, the cubic's four coefficients[,
-/// height]) and, where asked for (the covariance of C, A, B), the first
-/// three columns of the inverse of the normal matrix; invalid when it is
-/// singular to working precision.
-template<int N>
-struct Solution
-{
-  bool Valid = false;
-  Vector<N> X = Vector<N>::Zero();
-  Eigen::Matrix<double, N, 3> Inverse = Eigen::Matrix<double, N, 3>::Zero();
-};
-
-/// LDL^T of a small symmetric positive definite matrix, without pivoting:
-/// on a unit diagonal no reordering is needed for stability, and the
-/// fixed size lets the compiler unroll it (Eigen's pivoting LDLT cost most
-/// of a fit on small neighbourhoods). Fails when a pivot is not above
-/// `smallest`: an unknown is then determined by the earlier ones to
-/// working precision.
-template<int N>
-class SmallLdlt
-{
-public:
-  bool Factor(const Matrix<N>& a, double smallest)
-  {
-    for (int j = 0; j < N; ++j)
-    {
-      double d = a(j, j);
-      for (int k = 0; k < j; ++k)
-      {
-        d -= this->L[j][k] * this->L[j][k] * this->D[k];
-      }
-      if (!(d > smallest))
-      {
-        return false;
-      }
-      this->D[j] = d;
-      for (int i = j + 1; i < N; ++i)
-      {
-        double v = a(i, j);
-        for (int k = 0; k < j; ++k)
-        {
-          v -= this->L[i][k] * this->L[j][k] * this->D[k];
-        }
-        this->L[i][j] = v / d;
-      }
-    }
-    return true;
-  }
-
-  Vector<N> Solve(Vector<N> x) const
-  {
-    for (int i = 0; i < N; ++i)
-    {
-      for (int k = 0; k < i; ++k)
-      {
-        x[i] -= this->L[i][k] * x[k];
-      }
-    }
-    for (int i = 0; i < N; ++i)
-    {
-      x[i] /= this->D[i];
-    }
-    for (int i = N - 1; i >= 0; --i)
-    {
-      for (int k = i + 1; k < N; ++k)
-      {
-        x[i] -= this->L[k][i] * x[k];
-      }
-    }
-    return x;
-  }
-
-private:
-  // Factor writes every entry it and Solve read (L below the diagonal).
-  double L[N][N];
-  double D[N];
-};
-
-/// Solves the normal equations, scaled to a unit diagonal first: the
-/// unknowns differ in scale by orders of magnitude (curvatures, cubic
-/// coefficients, the height), and so do the two kinds of rows once weighted
-/// (exact normals fit with no residual, and their weight dwarfs the
-/// positions'). A singularity test against the largest diagonal entry
-/// would then reject a well-posed system (the height, seen by the positions
-/// only, looks negligible beside the normals' unknowns), and the fit would
-/// fall back to the positions alone; on the unit diagonal the test asks
-/// only whether some unknowns are determined by the others.
-template<int N>
-Solution<N> Solve(const Matrix<N>& normal, const Vector<N>& right, bool withInverse)
-{
-  Solution<N> solution;
-  const Vector<N> diagonal = normal.diagonal();
-  if (!(diagonal.minCoeff() > 0.0) || !diagonal.allFinite())
-  {
-    return solution;
-  }
-  const Vector<N> unscale = diagonal.cwiseSqrt().cwiseInverse();
-  const Matrix<N> scaled = unscale.asDiagonal() * normal * unscale.asDiagonal();
-  SmallLdlt<N> ldlt;
-  if (!ldlt.Factor(scaled, 1e-12))
-  {
-    return solution;
-  }
-  solution.X = unscale.cwiseProduct(ldlt.Solve(unscale.cwiseProduct(right)));
-  if (withInverse)
-  {
-    // Only C, A and B's covariance is wanted: three columns, not N.
-    for (int c = 0; c < 3; ++c)
-    {
-      Vector<N> unit = Vector<N>::Zero();
-      unit[c] = unscale[c];
-      solution.Inverse.col(c) = unscale.cwiseProduct(ldlt.Solve(unit));
-    }
-  }
-  solution.Valid = solution.X.allFinite() && solution.Inverse.allFinite();
-  return solution;
 }
 
 /// The mean squared residual of a least-squares solution from the sums:
