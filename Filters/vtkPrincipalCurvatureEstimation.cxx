@@ -412,6 +412,7 @@ int vtkPrincipalCurvatureEstimation::RequestData(vtkInformation*,
   this->UpdateProgress(1.0);
   this->NumberOfUnestimatedPoints = summary.NumberOfUnestimatedPoints;
   this->NumberOfSharedFitPoints = summary.NumberOfSharedPoints;
+  this->NumberOfJetFitPoints = summary.NumberOfJetPoints;
   this->FourthOrderFits = summary.FourthOrderFits;
   pcurv::CopyGeometry(input, output);
   arrays.AddTo(output->GetPointData(), this->DiagnosticArrays);
@@ -446,6 +447,10 @@ int vtkPrincipalCurvatureEstimation::RequestData(vtkInformation*,
     fourthOrder->SetName("Fourth_Order_Fits");
     fourthOrder->InsertNextValue(summary.FourthOrderFits ? 1 : 0);
     output->GetFieldData()->AddArray(fourthOrder);
+    vtkNew<vtkIdTypeArray> jets;
+    jets->SetName("Jet_Fit_Points");
+    jets->InsertNextValue(summary.NumberOfJetPoints);
+    output->GetFieldData()->AddArray(jets);
   }
   if (estimatedNormals)
   {

@@ -416,6 +416,15 @@ public:
    */
   vtkGetMacro(FourthOrderFits, bool);
 
+  /**
+   * After an update with the automatic neighborhood: the points (of every
+   * process) whose estimate is a fourth-order height jet of their 20
+   * nearest neighbors, where the positions have little or no noise
+   * (docs/method.md, section 10); the output's field data "Jet_Fit_Points"
+   * holds it too.
+   */
+  vtkGetMacro(NumberOfJetFitPoints, vtkIdType);
+
 protected:
   vtkPrincipalCurvatureEstimation();
   ~vtkPrincipalCurvatureEstimation() override = default;
@@ -467,6 +476,7 @@ protected:
   double UsedPlaneDistanceThreshold = 0.0;
   vtkIdType NumberOfUnestimatedPoints = 0;
   vtkIdType NumberOfSharedFitPoints = 0;
+  vtkIdType NumberOfJetFitPoints = 0;
   bool FourthOrderFits = false;
 
 private:

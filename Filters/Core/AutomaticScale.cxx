@@ -317,6 +317,7 @@ void AutomaticScaleEstimator::PreferJet(const double* x,
     order.begin(), order.begin() + count, [&](std::size_t i) { return squared[i] > 0.0; }));
   estimate.Radius = std::nextafter(radius, HUGE_VAL);
   estimate.Error = error;
+  estimate.Jet = true;
 }
 
 double AutomaticScaleEstimator::FirstRadius(const double* x, AutomaticScaleScratch& scratch) const

@@ -45,6 +45,8 @@ struct ScaleEstimate
   OrientedCircleResult Fit;
   double Radius = std::numeric_limits<double>::quiet_NaN();
   double Error = std::numeric_limits<double>::quiet_NaN();
+  /// The estimate is a height jet's (AutomaticScaleEstimator::PreferJet).
+  bool Jet = false;
 };
 
 /// The anchors of a run with shared fits (SharedFits.h): which points they

@@ -399,6 +399,8 @@ bool EstimateEveryPoint(CloudPoints cloud,
   StageProgress anchorProgress(
     run.Monitor, run.NormalsShare, anchorShare, static_cast<std::int64_t>(anchors.Points.size()));
   PointEstimator points(cloud, grid, rule, fit, writer);
+  std::vector<unsigned char> jetMarks(rule.AutomaticScale ? cloud.GetNumberOfPoints() : 0, 0);
+  points.MarkJetsIn(rule.AutomaticScale ? jetMarks.data() : nullptr);
   ItemEstimator anchorEstimator(order, points, anchorProgress);
   run.Runner.For(static_cast<std::int64_t>(anchors.Points.size()),
     64,
@@ -426,6 +428,8 @@ bool EstimateEveryPoint(CloudPoints cloud,
   }
   summary.NumberOfSharedPoints = run.Processes.Sum(static_cast<std::int64_t>(
     std::count(sharedMarks.begin(), sharedMarks.end(), static_cast<unsigned char>(1))));
+  summary.NumberOfJetPoints = run.Processes.Sum(static_cast<std::int64_t>(
+    std::count(jetMarks.begin(), jetMarks.end(), static_cast<unsigned char>(1))));
   return true;
 }
 } // namespace

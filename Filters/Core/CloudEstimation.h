@@ -180,6 +180,9 @@ struct EstimationSummary
   /// NeighborhoodMode::Automatic with shared fits: the points estimated
   /// from anchors' fits rather than their own (EstimationSettings::ShareFits).
   std::int64_t NumberOfSharedPoints = 0;
+  /// NeighborhoodMode::Automatic: the points whose estimate is a height
+  /// jet's (positions with little or no noise; HeightJet.h).
+  std::int64_t NumberOfJetPoints = 0;
   /// Whether the automatic scale also fitted the surface's fourth order at
   /// its wide radii (the normals follow the surface closely).
   bool FourthOrderFits = false;

@@ -213,6 +213,10 @@ ScaleEstimate PointEstimator::EstimateAnchor(std::int64_t point, EstimationScrat
 
 void PointEstimator::StoreScaleEstimate(std::int64_t point, const ScaleEstimate& estimate) const
 {
+  if (estimate.Jet && this->JetMarks)
+  {
+    this->JetMarks[point] = 1;
+  }
   this->Out.Store(
     this->Cloud.InputId(point), estimate.Fit.Curvature, estimate.Radius, 0.0, 0, estimate.Error);
 }

@@ -140,6 +140,9 @@ public:
     double p,
     EstimationScratch& scratch,
     int target = 0);
+  /// Marks (1) the points whose automatic-scale estimate is a height jet's
+  /// in `marks` (one per cloud point), or nowhere (null).
+  void MarkJetsIn(unsigned char* marks) { this->JetMarks = marks; }
   /// An anchor of the shared fits (its own point's results output).
   ScaleEstimate EstimateAnchor(std::int64_t point, EstimationScratch& scratch);
 
@@ -157,6 +160,7 @@ private:
   const AnchorTable* Anchors = nullptr; // the anchors, estimated already
   bool Shareable = false;               // some anchor's fit may be shared
   unsigned char* SharedMarks = nullptr;
+  unsigned char* JetMarks = nullptr;
 };
 
 /// Estimates ranges of work items (points, or the adjustment's blocks) in

@@ -11,9 +11,10 @@ the file (one piece: all points on rank 0, the others empty) and after
 RedistributeDataSet, which cuts the cloud into spatial pieces, one per rank,
 so the cuts go through the surface. Fixed thresholds and the dynamic
 adjustment are both checked: max |k - k_serial| / max |k| below 1e-12, and
-the same points unestimated. The cloud is noisy, so that the default's
-shared fits (anchors from other ranks' parts among them) and, its normals
-being exact, its fits of the fourth order are checked too.
+the same points unestimated. A noisy cloud checks the default's shared fits
+(anchors from other ranks' parts among them) and, its normals being exact,
+its fits of the fourth order; a clean one (last argument --clean) its
+height jets (neighbours from other ranks' parts among them).
 """
 
 import sys
@@ -147,7 +148,7 @@ def write_pieces(cloud_file, prefix, pieces=4):
         handle.write("  </PPolyData>\n</VTKFile>\n")
 
 
-def main(plugin, cloud, action, prefix):
+def main(plugin, cloud, action, prefix, kind="--noisy"):
     simple.LoadPlugin(plugin, remote=False, ns=globals())
     reader = simple.XMLPolyDataReader(FileName=[cloud])
     reader.UpdatePipeline()
@@ -170,7 +171,12 @@ def main(plugin, cloud, action, prefix):
             if ("Target_Neighbor_Count" in result) != bool(properties.get("DynamicAdjustment")):
                 failures.append("%s: Target_Neighbor_Count present exactly with the adjustment" % label)
             failures += compare(as_arrays(read("%s_%s.vtp" % (prefix, variant))), result, label)
-            if variant == "fixed":
+            if variant == "fixed" and kind == "--clean":
+                jets = read_field_value(output, "Jet_Fit_Points")
+                print("%-32s Jet_Fit_Points  %d" % (label, jets))
+                if not jets > 0.5 * len(result["ids"]):
+                    failures.append("%s: only %d points took height jets" % (label, jets))
+            elif variant == "fixed":
                 # The default shares fits on this noisy cloud: the anchors a
                 # rank needs may lie in another rank's part (the halo).
                 shared = read_field_value(output, "Shared_Fit_Points")
@@ -188,7 +194,7 @@ def main(plugin, cloud, action, prefix):
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 5:
+    if len(sys.argv) not in (5, 6):
         print(__doc__)
         sys.exit(2)
     status = main(*sys.argv[1:])
