@@ -256,36 +256,34 @@ void AutomaticScaleEstimator::PreferJet(const double* x,
     }
     reach = std::min(JetReach * reach, this->Rule.LargestRadius);
   }
-  // The nearest (in the shell's order where equally near: the same on
-  // every process), with all as near as the JetCount-th (a regular grid
-  // has many such ties).
-  std::vector<std::size_t>& order = scratch.JetOrder;
+  // The JetCount nearest and all as near as the last of them (a regular
+  // grid has many such ties), in the shell's order (the same on every
+  // process).
   std::vector<double>& squared = scratch.JetDistances;
-  order.resize(shell.Count);
   squared.resize(shell.Count);
   for (std::size_t i = 0; i < shell.Count; ++i)
   {
-    order[i] = i;
     squared[i] = shell.Dx[i] * shell.Dx[i] + shell.Dy[i] * shell.Dy[i] + shell.Dz[i] * shell.Dz[i];
   }
-  std::stable_sort(order.begin(),
-    order.end(),
-    [&](std::size_t a, std::size_t b) { return squared[a] < squared[b]; });
-  const double limit = squared[order[JetCount - 1]];
-  std::size_t count = JetCount;
-  while (count < order.size() && squared[order[count]] <= limit)
+  std::vector<double>& nearest = scratch.JetNearest;
+  nearest.assign(squared.begin(), squared.end());
+  std::nth_element(nearest.begin(), nearest.begin() + (JetCount - 1), nearest.end());
+  const double limit = nearest[JetCount - 1];
+  scratch.JetDx.clear();
+  scratch.JetDy.clear();
+  scratch.JetDz.clear();
+  int others = 0;
+  for (std::size_t i = 0; i < shell.Count; ++i)
   {
-    ++count;
+    if (squared[i] <= limit)
+    {
+      scratch.JetDx.push_back(shell.Dx[i]);
+      scratch.JetDy.push_back(shell.Dy[i]);
+      scratch.JetDz.push_back(shell.Dz[i]);
+      others += squared[i] > 0.0;
+    }
   }
-  scratch.JetDx.resize(count);
-  scratch.JetDy.resize(count);
-  scratch.JetDz.resize(count);
-  for (std::size_t i = 0; i < count; ++i)
-  {
-    scratch.JetDx[i] = shell.Dx[order[i]];
-    scratch.JetDy[i] = shell.Dy[order[i]];
-    scratch.JetDz[i] = shell.Dz[order[i]];
-  }
+  const std::size_t count = scratch.JetDx.size();
   const double radius = std::sqrt(limit);
   const HeightJetFit jet = FitHeightJet(
     scratch.JetDx.data(), scratch.JetDy.data(), scratch.JetDz.data(), count, frame, radius);
@@ -313,8 +311,7 @@ void AutomaticScaleEstimator::PreferJet(const double* x,
   out.FittedNormal = near.FittedNormal;
   // The neighbours, as the ladder counts them: the other points, those
   // strictly within the radius.
-  out.NeighborCount = static_cast<int>(std::count_if(
-    order.begin(), order.begin() + count, [&](std::size_t i) { return squared[i] > 0.0; }));
+  out.NeighborCount = others;
   estimate.Radius = std::nextafter(radius, HUGE_VAL);
   estimate.Error = error;
   estimate.Jet = true;

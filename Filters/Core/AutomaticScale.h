@@ -144,8 +144,7 @@ struct AutomaticScaleScratch
   ShellPoints Shell;
   std::vector<double> Distances;
   std::vector<OrientedCircleResult> Scales;
-  std::vector<std::size_t> JetOrder;
-  std::vector<double> JetDistances;
+  std::vector<double> JetDistances, JetNearest;
   std::vector<double> JetDx, JetDy, JetDz;
   AnchorCells::Around Anchors;
   std::vector<AnchorEstimate> NearbyAnchors;

@@ -15,16 +15,48 @@ using JetMatrix = small::Matrix<HeightJetUnknowns>;
 /// the fit by.
 constexpr std::size_t ResidualNeighbors = 2;
 
-/// The jet's row at (u, v). The second derivatives come first (their
-/// monomials u^2/2, uv, v^2/2 have them as coefficients), so that the
-/// solver's covariance columns are theirs; then the height, the slopes and
-/// the monomials of the third and fourth degree.
+/// The jet's unknowns as monomials c u^a v^b: the height, the slopes, the
+/// four cubic and five quartic monomials, and last the second derivatives
+/// (their monomials u^2/2, uv, v^2/2 have them as coefficients), whose
+/// covariance is then the inverse's trailing block.
+struct Monomial
+{
+  double Coefficient;
+  int U, V;
+};
+constexpr Monomial Monomials[HeightJetUnknowns] = { { 1.0, 0, 0 },
+  { 1.0, 1, 0 },
+  { 1.0, 0, 1 },
+  { 1.0, 3, 0 },
+  { 1.0, 2, 1 },
+  { 1.0, 1, 2 },
+  { 1.0, 0, 3 },
+  { 1.0, 4, 0 },
+  { 1.0, 3, 1 },
+  { 1.0, 2, 2 },
+  { 1.0, 1, 3 },
+  { 1.0, 0, 4 },
+  { 0.5, 2, 0 },
+  { 1.0, 1, 1 },
+  { 0.5, 0, 2 } };
+constexpr int SecondDerivatives = HeightJetUnknowns - 3;
+constexpr int Slopes = 1;
+
+/// The jet's row at (u, v).
 JetVector Row(double u, double v)
 {
+  double pu[5], pv[5];
+  pu[0] = pv[0] = 1.0;
+  for (int k = 1; k < 5; ++k)
+  {
+    pu[k] = pu[k - 1] * u;
+    pv[k] = pv[k - 1] * v;
+  }
   JetVector row;
-  const double uu = u * u, uv = u * v, vv = v * v;
-  row << 0.5 * uu, uv, 0.5 * vv, 1.0, u, v, uu * u, uu * v, u * vv, vv * v, uu * uu, uu * uv,
-    uu * vv, uv * vv, vv * vv;
+  for (int j = 0; j < HeightJetUnknowns; ++j)
+  {
+    row[j] = Monomials[j].Coefficient * pu[Monomials[j].U] * pv[Monomials[j].V];
+  }
   return row;
 }
 
@@ -40,17 +72,62 @@ Local InFrame(double dx, double dy, double dz, const TangentFrame& frame, double
   return Local{ dot(frame.V0), dot(frame.W0), dot(frame.Normal) };
 }
 
-/// The normal equations of the rows so far.
-struct JetSums
+/// The normal equations' sums as moments: every entry of the matrix is a
+/// sum of u^a v^b with a + b <= 8 (45 of them, against the matrix's 120),
+/// every entry of the right side one of h u^a v^b with a + b <= 4.
+struct JetMoments
 {
-  JetMatrix Normal = JetMatrix::Zero();
-  JetVector Right = JetVector::Zero();
+  static constexpr int Degree = 8;
+  double Powers[Degree + 1][Degree + 1] = {};
+  double Heights[5][5] = {};
 
-  void Add(const JetVector& row, double height)
+  void Add(double u, double v, double h)
   {
-    // The whole outer product: it vectorises, the triangle does not.
-    this->Normal.noalias() += row * row.transpose();
-    this->Right += height * row;
+    double pu[Degree + 1], pv[Degree + 1];
+    pu[0] = pv[0] = 1.0;
+    for (int k = 1; k <= Degree; ++k)
+    {
+      pu[k] = pu[k - 1] * u;
+      pv[k] = pv[k - 1] * v;
+    }
+    for (int a = 0; a <= Degree; ++a)
+    {
+      for (int b = 0; a + b <= Degree; ++b)
+      {
+        this->Powers[a][b] += pu[a] * pv[b];
+      }
+    }
+    for (int a = 0; a <= 4; ++a)
+    {
+      for (int b = 0; a + b <= 4; ++b)
+      {
+        this->Heights[a][b] += h * pu[a] * pv[b];
+      }
+    }
+  }
+
+  JetMatrix Normal() const
+  {
+    JetMatrix normal;
+    for (int i = 0; i < HeightJetUnknowns; ++i)
+    {
+      for (int j = 0; j < HeightJetUnknowns; ++j)
+      {
+        const Monomial &p = Monomials[i], &q = Monomials[j];
+        normal(i, j) = p.Coefficient * q.Coefficient * this->Powers[p.U + q.U][p.V + q.V];
+      }
+    }
+    return normal;
+  }
+
+  JetVector Right() const
+  {
+    JetVector right;
+    for (int i = 0; i < HeightJetUnknowns; ++i)
+    {
+      right[i] = Monomials[i].Coefficient * this->Heights[Monomials[i].U][Monomials[i].V];
+    }
+    return right;
   }
 };
 
@@ -137,24 +214,40 @@ HeightJetFit FitHeightJet(const double* dx,
     return fit;
   }
   const double inverseScale = 1.0 / scale;
-  JetSums sums;
+  JetMoments moments;
   for (std::size_t i = 0; i < count; ++i)
   {
     const Local p = InFrame(dx[i], dy[i], dz[i], frame, inverseScale);
-    sums.Add(Row(p.U, p.V), p.H);
+    moments.Add(p.U, p.V, p.H);
   }
-  const small::Solution<HeightJetUnknowns> solution = small::Solve(sums.Normal, sums.Right, true);
-  if (!solution.Valid)
+  // Solved on a unit diagonal (SmallLeastSquares.h): the monomials' scales
+  // (up to the fourth power of the offsets) neither hide a singular
+  // system nor fake one.
+  const JetMatrix normal = moments.Normal();
+  const JetVector diagonal = normal.diagonal();
+  if (!(diagonal.minCoeff() > 0.0) || !diagonal.allFinite())
   {
     return fit;
   }
-  const JetVector& x = solution.X;
+  const JetVector unscale = diagonal.cwiseSqrt().cwiseInverse();
+  small::SmallLdlt<HeightJetUnknowns> factor;
+  if (!factor.Factor(unscale.asDiagonal() * normal * unscale.asDiagonal(), 1e-12))
+  {
+    return fit;
+  }
+  const JetVector x = unscale.cwiseProduct(factor.Solve(unscale.cwiseProduct(moments.Right())));
+  if (!x.allFinite())
+  {
+    return fit;
+  }
+  const double huu = x[SecondDerivatives], huv = x[SecondDerivatives + 1],
+               hvv = x[SecondDerivatives + 2];
   CurvaturesOfGraph(frame,
-    x[4],
-    x[5],
-    x[0] * inverseScale,
-    x[1] * inverseScale,
-    x[2] * inverseScale,
+    x[Slopes],
+    x[Slopes + 1],
+    huu * inverseScale,
+    huv * inverseScale,
+    hvv * inverseScale,
     fit.Curvature);
   if (!fit.Curvature.Valid)
   {
@@ -170,8 +263,10 @@ HeightJetFit FitHeightJet(const double* dx,
     residual += r * r;
   }
   const double variance = residual / static_cast<double>(count - HeightJetUnknowns);
-  const Eigen::Matrix3d covariance = solution.Inverse.topRows<3>() * variance;
-  fit.StandardError = SecondOrderStandardError(covariance, x[0], x[1], x[2]) * inverseScale;
+  const Eigen::Vector3d last = unscale.tail<3>();
+  const Eigen::Matrix3d covariance =
+    last.asDiagonal() * factor.TrailingInverse<3>() * last.asDiagonal() * variance;
+  fit.StandardError = SecondOrderStandardError(covariance, huu, huv, hvv) * inverseScale;
   return fit;
 }
 

@@ -66,6 +66,36 @@ public:
     return true;
   }
 
+  /// The trailing K x K block of the inverse of the factored matrix: of
+  /// L^-T D^-1 L^-1, only the trailing block of L (lower triangular, so
+  /// its inverse's trailing block is that block's inverse) reaches it. The
+  /// covariance of the last K unknowns, without solving for N columns.
+  template<int K>
+  Eigen::Matrix<double, K, K> TrailingInverse() const
+  {
+    static_assert(K <= N, "a block of the matrix");
+    // Columns of the inverse of the unit lower triangular trailing block.
+    Eigen::Matrix<double, K, K> inverse = Eigen::Matrix<double, K, K>::Identity();
+    for (int c = 0; c < K; ++c)
+    {
+      for (int i = c + 1; i < K; ++i)
+      {
+        double v = 0.0;
+        for (int k = c; k < i; ++k)
+        {
+          v -= this->L[N - K + i][N - K + k] * inverse(k, c);
+        }
+        inverse(i, c) = v;
+      }
+    }
+    Eigen::Matrix<double, K, 1> reciprocal;
+    for (int i = 0; i < K; ++i)
+    {
+      reciprocal[i] = 1.0 / this->D[N - K + i];
+    }
+    return inverse.transpose() * reciprocal.asDiagonal() * inverse;
+  }
+
   Vector<N> Solve(Vector<N> x) const
   {
     for (int i = 0; i < N; ++i)
