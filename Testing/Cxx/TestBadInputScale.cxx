@@ -260,7 +260,11 @@ void TestNumericalHardening(Checks& checks)
     // A georeferenced scan: the same cloud at UTM-like coordinates. In
     // double, the same curvatures to a millionth of the largest and no
     // warning; in float, the coordinates are rounded to a fraction of a
-    // metre, and a warning says by how much.
+    // metre, and a warning says by how much. At 5e6 the doubles are
+    // themselves rounded to 1e-9, a noise that a noise-free cloud's height
+    // jets (of 20 neighbours) see: a point whose choice between the jet and
+    // the ladder's estimate lies at the threshold may flip (one of the 8000
+    // here), and then its two values differ within their reported errors.
     const std::string row = "georeferenced: translated by (600000, 5000000, 100)";
     Row(row);
     auto reference = Run(Torus(8000));
@@ -273,17 +277,34 @@ void TestNumericalHardening(Checks& checks)
       p->SetPoint(i, x[0] + 600000.0, x[1] + 5000000.0, x[2] + 100.0);
     }
     const Outcome o = Run(moved);
-    double worst = 0.0, largest = 0.0;
+    double largest = 0.0;
     for (vtkIdType i = 0; i < p->GetNumberOfPoints(); ++i)
     {
+      largest = std::max({ largest,
+        std::fabs(reference.Value("Minimum_Curvature", i)),
+        std::fabs(reference.Value("Maximum_Curvature", i)) });
+    }
+    int beyond = 0, outsideErrors = 0;
+    for (vtkIdType i = 0; i < p->GetNumberOfPoints(); ++i)
+    {
+      double moved = 0.0;
       for (const char* name : { "Minimum_Curvature", "Maximum_Curvature" })
       {
-        worst = std::max(worst, std::fabs(o.Value(name, i) - reference.Value(name, i)));
-        largest = std::max(largest, std::fabs(reference.Value(name, i)));
+        moved = std::max(moved, std::fabs(o.Value(name, i) - reference.Value(name, i)));
       }
+      const double error = std::max(
+        o.Value("Curvature_Standard_Error", i), reference.Value("Curvature_Standard_Error", i));
+      beyond += moved > 1e-6 * largest;
+      outsideErrors += !(moved <= error);
     }
     checks.Below(
-      Label(row, "double: curvatures within 1e-6 of the largest").c_str(), worst / largest, 1e-6);
+      Label(row, "double: curvatures within 1e-6 of the largest but at 0.1 % of the points")
+        .c_str(),
+      beyond,
+      0.001 * p->GetNumberOfPoints());
+    checks.Equal(Label(row, "double: every point's curvatures within its reported error").c_str(),
+      outsideErrors,
+      0);
     checks.Equal(Label(row, "double: all estimated").c_str(), o.Unestimated, 0);
     checks.Equal(Label(row, "double: no warning").c_str(), o.Warnings, 0);
     vtkNew<vtkPoints> rounded;
