@@ -520,6 +520,47 @@ void TestCubicTerms(Checks& checks)
     "cubic terms: clean ellipsoid within 0.05 % (estimated normals)", estimatedError < 0.0005);
 }
 
+/// How the reported standard errors cover the errors max(|dk_min|, |dk_max|)
+/// of the valid points: how many are valid, within twice their error and
+/// off by more than a fifth of `largest`, and the median error / error.
+struct ErrorCover
+{
+  int Valid = 0, Covered = 0, Far = 0;
+  double MedianRatio = 0.0;
+
+  double Share() const
+  {
+    return this->Valid ? static_cast<double>(this->Covered) / this->Valid : 0.0;
+  }
+};
+
+ErrorCover CoverOf(const std::vector<testing::SurfaceSample>& samples,
+  const Results& r,
+  const std::vector<double>& standardError,
+  double largest)
+{
+  ErrorCover cover;
+  std::vector<double> ratios;
+  for (std::size_t i = 0; i < samples.size(); ++i)
+  {
+    if (r.Valid[i])
+    {
+      const double pointError = std::max(std::fabs(r.Minimum[i] - samples[i].MinimumCurvature),
+        std::fabs(r.Maximum[i] - samples[i].MaximumCurvature));
+      ++cover.Valid;
+      cover.Covered += pointError <= 2.0 * standardError[i];
+      cover.Far += pointError > 0.2 * largest;
+      ratios.push_back(pointError / standardError[i]);
+    }
+  }
+  if (!ratios.empty())
+  {
+    std::nth_element(ratios.begin(), ratios.begin() + ratios.size() / 2, ratios.end());
+    cover.MedianRatio = ratios[ratios.size() / 2];
+  }
+  return cover;
+}
+
 /// The fourth order beyond the first radius (AutomaticScaleRule::
 /// FourthOrder): on noisy clouds with exact normals the gate turns it on and
 /// the error falls well below the third order's alone (an ellipsoid and a
@@ -567,36 +608,24 @@ void TestFourthOrder(Checks& checks)
     own.EstimateNormals = true;
     Results estimated(c.Samples.size(), false);
     const EstimationSummary ownSummary = Estimate(c.Samples, own, estimated, serial);
-    int valid = 0, covered = 0, far = 0;
-    for (std::size_t i = 0; i < c.Samples.size(); ++i)
-    {
-      if (given.Valid[i])
-      {
-        const double pointError =
-          std::max(std::fabs(given.Minimum[i] - c.Samples[i].MinimumCurvature),
-            std::fabs(given.Maximum[i] - c.Samples[i].MaximumCurvature));
-        ++valid;
-        covered += pointError <= 2.0 * standardError[i];
-        far += pointError > 0.2 * c.Largest;
-      }
-    }
+    const ErrorCover cover = CoverOf(c.Samples, given, standardError, c.Largest);
     const double error = MeanError(c.Samples, given) / c.Largest;
     std::printf("fourth order: noisy %s, exact normals: on %d, mean |k - exact| / largest k %.5f, "
                 "within 2 SE %.3f, off by > 20 %% %d; estimated normals: on %d, %.5f\n",
       c.Name,
       summary.FourthOrderFits ? 1 : 0,
       error,
-      valid ? static_cast<double>(covered) / valid : 0.0,
-      far,
+      cover.Share(),
+      cover.Far,
       ownSummary.FourthOrderFits ? 1 : 0,
       MeanError(c.Samples, estimated) / c.Largest);
     const std::string what = std::string("fourth order, noisy ") + c.Name + ": ";
     checks.True((what + "on with exact normals").c_str(), summary.FourthOrderFits);
     checks.True((what + "off with estimated normals").c_str(), !ownSummary.FourthOrderFits);
     checks.True((what + "error below its bound").c_str(), error < c.Bound);
-    checks.True((what + "no valid point off by 20 % of max |k|").c_str(), far == 0);
+    checks.True((what + "no valid point off by 20 % of max |k|").c_str(), cover.Far == 0);
     checks.True((what + "at least 85 % within 2 standard errors").c_str(),
-      covered >= 0.85 * valid && valid > 0);
+      cover.Share() >= 0.85 && cover.Valid > 0);
     checks.True((what + "3 threads bit-identical to 1").c_str(), given.BitIdentical(threaded));
   }
 }
@@ -663,26 +692,10 @@ void TestHeightJets(Checks& checks)
       const EstimationSummary summary =
         EstimateCloud(MakeCloud(c.Samples), settings, Collectives{}, serial, nullptr, buffers);
       Estimate(c.Samples, settings, threaded, threads);
-      int valid = 0, covered = 0;
-      std::vector<double> ratios;
-      for (std::size_t i = 0; i < c.Samples.size(); ++i)
-      {
-        if (r.Valid[i])
-        {
-          const double pointError =
-            std::max(std::fabs(r.Minimum[i] - c.Samples[i].MinimumCurvature),
-              std::fabs(r.Maximum[i] - c.Samples[i].MaximumCurvature));
-          ++valid;
-          covered += pointError <= 2.0 * standardError[i];
-          ratios.push_back(pointError / standardError[i]);
-        }
-      }
-      std::nth_element(ratios.begin(), ratios.begin() + ratios.size() / 2, ratios.end());
-      const double ratio = ratios.empty() ? 0.0 : ratios[ratios.size() / 2];
+      const ErrorCover cover = CoverOf(c.Samples, r, standardError, c.Largest);
       const double share = static_cast<double>(summary.NumberOfJetPoints) / c.Samples.size();
       const double error = MeanError(c.Samples, r) / c.Largest;
       const double angle = MedianDirectionAngle(c.Samples, r);
-      const double coverage = valid ? static_cast<double>(covered) / valid : 0.0;
       std::printf("height jets: clean %s, %s normals: jets at %.3f of the points, mean |k - "
                   "exact| / largest k %.7f, median direction angle %.4f deg, within 2 SE %.3f, "
                   "median error / SE %.2f\n",
@@ -691,16 +704,17 @@ void TestHeightJets(Checks& checks)
         share,
         error,
         angle,
-        coverage,
-        ratio);
+        cover.Share(),
+        cover.MedianRatio);
       const std::string what = std::string("height jets, clean ") + c.Name +
         (estimateNormals ? ", estimated normals: " : ", exact normals: ");
       checks.True((what + "jets at 80 % of the points").c_str(), share >= 0.8);
       checks.True((what + "error below its bound").c_str(), error < c.Bound);
       checks.True((what + "directions within 0.05 degrees").c_str(), angle < 0.05);
       checks.True((what + "at least 85 % within 2 standard errors").c_str(),
-        coverage >= 0.85 && valid == static_cast<int>(c.Samples.size()));
-      checks.True((what + "median error / standard error at least 0.3").c_str(), ratio >= 0.3);
+        cover.Share() >= 0.85 && cover.Valid == static_cast<int>(c.Samples.size()));
+      checks.True(
+        (what + "median error / standard error at least 0.3").c_str(), cover.MedianRatio >= 0.3);
       checks.True((what + "3 threads bit-identical to 1").c_str(), r.BitIdentical(threaded));
     }
     // A fifth of the points: what the growth costs with noise is not what
