@@ -41,6 +41,9 @@ constexpr int JetCount = 20;
 /// suite's noise-free clouds (a bias estimated from a second, wider jet
 /// covered as well and cost twice the time).
 constexpr double JetBiasFactor = 3.0;
+/// The jet's agreement with the ladder: within this many times the
+/// ladder's own tolerance (PreferJet).
+constexpr double JetAgreement = 2.0;
 /// The radius, in first radii, first searched for the jet's neighbours:
 /// about 1.4 times their count on an even sampling (the first radius holds
 /// 17 points), and the factor it grows by where that holds too few.
@@ -292,12 +295,15 @@ void AutomaticScaleEstimator::PreferJet(const double* x,
   {
     return;
   }
-  // Lepski's test against the ladder's estimate: a residual of a few
-  // degrees of freedom can be small by chance where the positions have
-  // noise, and the jet's error with it.
+  // Lepski's test against the ladder's estimate, at twice its tolerance:
+  // a residual of a few degrees of freedom can be small by chance where
+  // the positions do have noise, and such a jet is off by many times both
+  // errors; at its first radius the ladder's own error misses the bias
+  // where the curvature varies fast (an ellipsoid's tips), where the jet
+  // is right.
   const PointCurvature& near = jet.Curvature;
   const PointCurvature& ladder = estimate.Fit.Curvature;
-  const double allowed = this->Rule.Tolerance * (error + estimate.Error);
+  const double allowed = JetAgreement * this->Rule.Tolerance * (error + estimate.Error);
   if (std::fabs(near.MinimumCurvature - ladder.MinimumCurvature) > allowed ||
     std::fabs(near.MaximumCurvature - ladder.MaximumCurvature) > allowed)
   {

@@ -671,7 +671,7 @@ void TestHeightJets(Checks& checks)
     double Largest, Bound;
   };
   // Without the jets: 0.00026 and 0.000063 (either normals); with them
-  // 0.000048 and 0.0000007.
+  // 0.000034 and 0.0000007.
   std::vector<Case> cases = {
     { "ellipsoid",
       testing::Sample(testing::Ellipsoid(3.0, 2.0, 1.5), 20000, 67),
