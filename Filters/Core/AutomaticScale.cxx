@@ -136,6 +136,33 @@ bool FitEitherOrder(QuarticCircleAccumulator& accumulator,
   result = Simplest(third, fourth);
   return true;
 }
+/// The k-th smallest of `values` (k from 1), searched for on one side of
+/// `pivot` only: a jet's candidates lie mostly within the ladder's first
+/// radius, which holds a few fewer than the jet's count, and only the few
+/// beyond it need ordering.
+double KthSmallest(const std::vector<double>& values,
+  std::size_t k,
+  double pivot,
+  std::vector<double>& side)
+{
+  std::size_t within = 0;
+  for (const double value : values)
+  {
+    within += value <= pivot;
+  }
+  const bool below = within >= k;
+  side.clear();
+  for (const double value : values)
+  {
+    if ((value <= pivot) == below)
+    {
+      side.push_back(value);
+    }
+  }
+  const std::size_t rank = below ? k - 1 : k - 1 - within;
+  std::nth_element(side.begin(), side.begin() + rank, side.end());
+  return side[rank];
+}
 } // namespace
 
 ScaleEstimate AutomaticScaleEstimator::Estimate(std::int64_t point,
@@ -268,25 +295,24 @@ void AutomaticScaleEstimator::PreferJet(const double* x,
   {
     squared[i] = shell.Dx[i] * shell.Dx[i] + shell.Dy[i] * shell.Dy[i] + shell.Dz[i] * shell.Dz[i];
   }
-  std::vector<double>& nearest = scratch.JetNearest;
-  nearest.assign(squared.begin(), squared.end());
-  std::nth_element(nearest.begin(), nearest.begin() + (JetCount - 1), nearest.end());
-  const double limit = nearest[JetCount - 1];
-  scratch.JetDx.clear();
-  scratch.JetDy.clear();
-  scratch.JetDz.clear();
+  const double limit =
+    KthSmallest(squared, JetCount, firstRadius * firstRadius, scratch.JetNearest);
+  scratch.JetDx.resize(shell.Count);
+  scratch.JetDy.resize(shell.Count);
+  scratch.JetDz.resize(shell.Count);
+  std::size_t count = 0;
   int others = 0;
   for (std::size_t i = 0; i < shell.Count; ++i)
   {
     if (squared[i] <= limit)
     {
-      scratch.JetDx.push_back(shell.Dx[i]);
-      scratch.JetDy.push_back(shell.Dy[i]);
-      scratch.JetDz.push_back(shell.Dz[i]);
+      scratch.JetDx[count] = shell.Dx[i];
+      scratch.JetDy[count] = shell.Dy[i];
+      scratch.JetDz[count] = shell.Dz[i];
+      ++count;
       others += squared[i] > 0.0;
     }
   }
-  const std::size_t count = scratch.JetDx.size();
   const double radius = std::sqrt(limit);
   const HeightJetFit jet = FitHeightJet(
     scratch.JetDx.data(), scratch.JetDy.data(), scratch.JetDz.data(), count, frame, radius);

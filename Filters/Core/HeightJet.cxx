@@ -42,22 +42,33 @@ constexpr Monomial Monomials[HeightJetUnknowns] = { { 1.0, 0, 0 },
 constexpr int SecondDerivatives = HeightJetUnknowns - 3;
 constexpr int Slopes = 1;
 
-/// The jet's row at (u, v).
-JetVector Row(double u, double v)
+/// Powers 0..Degree of a value.
+template<int Degree>
+struct Powers
 {
-  double pu[5], pv[5];
-  pu[0] = pv[0] = 1.0;
-  for (int k = 1; k < 5; ++k)
+  double Of[Degree + 1];
+  explicit Powers(double x)
   {
-    pu[k] = pu[k - 1] * u;
-    pv[k] = pv[k - 1] * v;
+    this->Of[0] = 1.0;
+#pragma GCC unroll 8
+    for (int k = 1; k <= Degree; ++k)
+    {
+      this->Of[k] = this->Of[k - 1] * x;
+    }
   }
-  JetVector row;
+};
+
+/// The jet's height at (u, v) for unknowns x.
+double JetHeight(const JetVector& x, double u, double v)
+{
+  const Powers<4> pu(u), pv(v);
+  double height = 0.0;
+#pragma GCC unroll 15
   for (int j = 0; j < HeightJetUnknowns; ++j)
   {
-    row[j] = Monomials[j].Coefficient * pu[Monomials[j].U] * pv[Monomials[j].V];
+    height += x[j] * (Monomials[j].Coefficient * pu.Of[Monomials[j].U] * pv.Of[Monomials[j].V]);
   }
-  return row;
+  return height;
 }
 
 struct Local
@@ -72,49 +83,65 @@ Local InFrame(double dx, double dy, double dz, const TangentFrame& frame, double
   return Local{ dot(frame.V0), dot(frame.W0), dot(frame.Normal) };
 }
 
+/// The index of u^a v^b among the monomials of degree at most `degree`,
+/// by increasing a, then b.
+constexpr int TriangularIndex(int degree, int a, int b)
+{
+  return a * (2 * degree + 3 - a) / 2 + b;
+}
+
 /// The normal equations' sums as moments: every entry of the matrix is a
 /// sum of u^a v^b with a + b <= 8 (45 of them, against the matrix's 120),
-/// every entry of the right side one of h u^a v^b with a + b <= 4.
+/// every entry of the right side one of h u^a v^b with a + b <= 4. Kept
+/// flat and added in fully unrolled loops: the sums of one neighbour are
+/// independent of each other.
 struct JetMoments
 {
   static constexpr int Degree = 8;
-  double Powers[Degree + 1][Degree + 1] = {};
-  double Heights[5][5] = {};
+  static constexpr int HeightDegree = 4;
+  double Powers[TriangularIndex(Degree, Degree, 0) + 1] = {};
+  double Heights[TriangularIndex(HeightDegree, HeightDegree, 0) + 1] = {};
 
   void Add(double u, double v, double h)
   {
-    double pu[Degree + 1], pv[Degree + 1];
-    pu[0] = pv[0] = 1.0;
-    for (int k = 1; k <= Degree; ++k)
-    {
-      pu[k] = pu[k - 1] * u;
-      pv[k] = pv[k - 1] * v;
-    }
+    const pcurv::Powers<Degree> pu(u), pv(v);
+#pragma GCC unroll 9
     for (int a = 0; a <= Degree; ++a)
     {
-      for (int b = 0; a + b <= Degree; ++b)
+#pragma GCC unroll 9
+      for (int b = 0; b <= Degree - a; ++b)
       {
-        this->Powers[a][b] += pu[a] * pv[b];
+        this->Powers[TriangularIndex(Degree, a, b)] += pu.Of[a] * pv.Of[b];
       }
     }
-    for (int a = 0; a <= 4; ++a)
+#pragma GCC unroll 5
+    for (int a = 0; a <= HeightDegree; ++a)
     {
-      for (int b = 0; a + b <= 4; ++b)
+      const double hu = h * pu.Of[a];
+#pragma GCC unroll 5
+      for (int b = 0; b <= HeightDegree - a; ++b)
       {
-        this->Heights[a][b] += h * pu[a] * pv[b];
+        this->Heights[TriangularIndex(HeightDegree, a, b)] += hu * pv.Of[b];
       }
     }
+  }
+
+  double Power(int a, int b) const
+  {
+    return this->Powers[TriangularIndex(Degree, a, b)];
   }
 
   JetMatrix Normal() const
   {
     JetMatrix normal;
+#pragma GCC unroll 15
     for (int i = 0; i < HeightJetUnknowns; ++i)
     {
+#pragma GCC unroll 15
       for (int j = 0; j < HeightJetUnknowns; ++j)
       {
         const Monomial &p = Monomials[i], &q = Monomials[j];
-        normal(i, j) = p.Coefficient * q.Coefficient * this->Powers[p.U + q.U][p.V + q.V];
+        normal(i, j) = p.Coefficient * q.Coefficient * this->Power(p.U + q.U, p.V + q.V);
       }
     }
     return normal;
@@ -123,13 +150,31 @@ struct JetMoments
   JetVector Right() const
   {
     JetVector right;
+#pragma GCC unroll 15
     for (int i = 0; i < HeightJetUnknowns; ++i)
     {
-      right[i] = Monomials[i].Coefficient * this->Heights[Monomials[i].U][Monomials[i].V];
+      right[i] = Monomials[i].Coefficient *
+        this->Heights[TriangularIndex(HeightDegree, Monomials[i].U, Monomials[i].V)];
     }
     return right;
   }
 };
+
+/// The moments of the offsets in the frame, divided by the scale.
+void AddMoments(const double* dx,
+  const double* dy,
+  const double* dz,
+  std::size_t count,
+  const TangentFrame& frame,
+  double inverseScale,
+  JetMoments& moments)
+{
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    const Local p = InFrame(dx[i], dy[i], dz[i], frame, inverseScale);
+    moments.Add(p.U, p.V, p.H);
+  }
+}
 
 /// The standard error of the principal curvatures mean +/- amplitude (in
 /// units of the scale) from the covariance of the second derivatives
@@ -155,8 +200,13 @@ double SecondOrderStandardError(const Eigen::Matrix3d& covariance,
 
 /// Principal curvatures (output sign) and directions of the graph of h over
 /// the frame's plane at the origin, from its slopes and second derivatives
-/// (1/length): the eigenproblem of the second fundamental form against the
-/// first, exact for any slope.
+/// (1/length): the eigenproblem of the second fundamental form II against
+/// the first, I, exact for any slope. With I = L L^T (Cholesky) it is that
+/// of the symmetric C = L^-1 II L^-T, whose eigenvalues are its mean
+/// diagonal plus or minus the hypotenuse of its half difference and
+/// off-diagonal entry (no square root of a difference, so umbilics keep
+/// their precision), and whose eigenvectors y give the problem's as
+/// L^-T y.
 void CurvaturesOfGraph(const TangentFrame& frame,
   double hu,
   double hv,
@@ -165,37 +215,55 @@ void CurvaturesOfGraph(const TangentFrame& frame,
   double hvv,
   PointCurvature& out)
 {
-  Eigen::Matrix2d first;
-  first << 1.0 + hu * hu, hu * hv, hu * hv, 1.0 + hv * hv;
   const double w = std::sqrt(1.0 + hu * hu + hv * hv);
-  Eigen::Matrix2d second;
-  second << huu / w, huv / w, huv / w, hvv / w;
-  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::Matrix2d> solver(second, first);
-  if (solver.info() != Eigen::Success)
+  const double s11 = huu / w, s12 = huv / w, s22 = hvv / w;
+  // L^-1 = [m11 0; m21 m22].
+  const double l11 = std::sqrt(1.0 + hu * hu);
+  const double l21 = hu * hv / l11;
+  const double l22 = std::sqrt(1.0 + hv * hv - l21 * l21);
+  const double m11 = 1.0 / l11, m22 = 1.0 / l22, m21 = -l21 * m11 * m22;
+  const double c11 = m11 * m11 * s11;
+  const double c12 = m11 * (m21 * s11 + m22 * s12);
+  const double c22 = m21 * m21 * s11 + 2.0 * m21 * m22 * s12 + m22 * m22 * s22;
+  const double mean = 0.5 * (c11 + c22), half = 0.5 * (c11 - c22);
+  const double amplitude = std::hypot(half, c12);
+  // The eigenvector of the larger eigenvalue, in the form that does not
+  // cancel; any vector at an umbilic.
+  double y0 = 1.0, y1 = 0.0;
+  if (amplitude > 0.0)
   {
-    out.Valid = false;
-    return;
+    if (half >= 0.0)
+    {
+      y0 = half + amplitude;
+      y1 = c12;
+    }
+    else
+    {
+      y0 = c12;
+      y1 = amplitude - half;
+    }
   }
   const Eigen::Vector3d n(frame.Normal.data()), v0(frame.V0.data()), w0(frame.W0.data());
   const Eigen::Vector3d alongU = v0 + hu * n, alongV = w0 + hv * n;
-  const auto direction = [&](int which)
+  // The tangent direction of C's eigenvector (a, b): L^-T (a, b) along the
+  // graph's coordinate tangents.
+  const auto direction = [&](double a, double b)
   {
-    const Eigen::Vector3d t =
-      (solver.eigenvectors()(0, which) * alongU + solver.eigenvectors()(1, which) * alongV)
-        .normalized();
+    const Eigen::Vector3d t = ((m11 * a + m21 * b) * alongU + (m22 * b) * alongV).normalized();
     return Vector3{ { t[0], t[1], t[2] } };
   };
   // Output sign: a surface bending away from its normal (a sphere with
   // outward normals) has positive curvature, and the height's second
-  // derivative is then negative. Eigenvalues come in increasing order.
-  out.MaximumCurvature = -solver.eigenvalues()[0];
-  out.MinimumCurvature = -solver.eigenvalues()[1];
-  out.MaximumDirection = direction(0);
-  out.MinimumDirection = direction(1);
+  // derivative is then negative.
+  out.MaximumCurvature = -(mean - amplitude);
+  out.MinimumCurvature = -(mean + amplitude);
+  out.MinimumDirection = direction(y0, y1);
+  out.MaximumDirection = direction(-y1, y0);
   const Eigen::Vector3d fitted = (n - hu * v0 - hv * w0).normalized();
   out.FittedNormal = Vector3{ { fitted[0], fitted[1], fitted[2] } };
   out.Valid = std::isfinite(out.MaximumCurvature) && std::isfinite(out.MinimumCurvature) &&
-    fitted.allFinite();
+    fitted.allFinite() && std::isfinite(out.MinimumDirection[0]) &&
+    std::isfinite(out.MaximumDirection[0]);
 }
 
 } // namespace
@@ -215,11 +283,7 @@ HeightJetFit FitHeightJet(const double* dx,
   }
   const double inverseScale = 1.0 / scale;
   JetMoments moments;
-  for (std::size_t i = 0; i < count; ++i)
-  {
-    const Local p = InFrame(dx[i], dy[i], dz[i], frame, inverseScale);
-    moments.Add(p.U, p.V, p.H);
-  }
+  AddMoments(dx, dy, dz, count, frame, inverseScale, moments);
   // Solved on a unit diagonal (SmallLeastSquares.h): the monomials' scales
   // (up to the fourth power of the offsets) neither hide a singular
   // system nor fake one.
@@ -259,7 +323,7 @@ HeightJetFit FitHeightJet(const double* dx,
   for (std::size_t i = 0; i < count; ++i)
   {
     const Local p = InFrame(dx[i], dy[i], dz[i], frame, inverseScale);
-    const double r = p.H - Row(p.U, p.V).dot(x);
+    const double r = p.H - JetHeight(x, p.U, p.V);
     residual += r * r;
   }
   const double variance = residual / static_cast<double>(count - HeightJetUnknowns);
