@@ -151,14 +151,16 @@ double KthSmallest(const std::vector<double>& values,
     within += value <= pivot;
   }
   const bool below = within >= k;
-  side.clear();
+  // Branch-free (which side a distance falls on is not predictable): a
+  // value on the other side is overwritten by the next.
+  side.resize(values.size());
+  std::size_t kept = 0;
   for (const double value : values)
   {
-    if ((value <= pivot) == below)
-    {
-      side.push_back(value);
-    }
+    side[kept] = value;
+    kept += (value <= pivot) == below;
   }
+  side.resize(kept);
   const std::size_t rank = below ? k - 1 : k - 1 - within;
   std::nth_element(side.begin(), side.begin() + rank, side.end());
   return side[rank];
@@ -304,14 +306,13 @@ void AutomaticScaleEstimator::PreferJet(const double* x,
   int others = 0;
   for (std::size_t i = 0; i < shell.Count; ++i)
   {
-    if (squared[i] <= limit)
-    {
-      scratch.JetDx[count] = shell.Dx[i];
-      scratch.JetDy[count] = shell.Dy[i];
-      scratch.JetDz[count] = shell.Dz[i];
-      ++count;
-      others += squared[i] > 0.0;
-    }
+    // Branch-free, as in KthSmallest.
+    scratch.JetDx[count] = shell.Dx[i];
+    scratch.JetDy[count] = shell.Dy[i];
+    scratch.JetDz[count] = shell.Dz[i];
+    const bool kept = squared[i] <= limit;
+    count += kept;
+    others += kept && squared[i] > 0.0;
   }
   const double radius = std::sqrt(limit);
   const HeightJetFit jet = FitHeightJet(
