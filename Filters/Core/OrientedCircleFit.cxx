@@ -125,7 +125,8 @@ TangentFrame FittedFrame(const TangentFrame& frame,
 
 /// The standard error of the principal curvatures C +- hypot(A, B) from
 /// the covariance of the unknowns (C, A, B first), to first order.
-double CurvatureStandardError(const Eigen::Matrix3d& covariance, double c, double s)
+template<int N>
+double CurvatureStandardError(const Eigen::Matrix<double, N, 3>& covariance, double c, double s)
 {
   const double amplitude = std::hypot(c, s);
   const double amplitudeVariance = amplitude > 0.0
@@ -303,7 +304,8 @@ OrientedCircleResult FitOrientedCircles(const OrientedCircleSumsOf<Order>& sums,
     }
   }
 
-  const Eigen::Matrix3d covariance = positions.Inverse * positionVariance;
+  const Eigen::Matrix<double, PositionUnknowns, 3> covariance =
+    positions.Inverse * positionVariance;
   const double c = combined.X[1], s = combined.X[2];
   const double amplitude = std::hypot(c, s);
   result.StandardError = CurvatureStandardError(covariance, c, s) * inverseScale;

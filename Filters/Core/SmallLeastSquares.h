@@ -17,16 +17,16 @@ using Vector = Eigen::Matrix<double, N, 1>;
 template<int N>
 using Matrix = Eigen::Matrix<double, N, N>;
 
-/// The unknowns and, where asked for, the inverse of the normal matrix's
-/// block of the first three (their covariance up to the residual's
-/// variance: callers order their unknowns so that these are the
-/// curvatures'); invalid when the matrix is singular to working precision.
+/// The unknowns and, where asked for (the covariance of the first three:
+/// callers order their unknowns so that these are the curvatures'), the
+/// first three columns of the inverse of the normal matrix; invalid when it
+/// is singular to working precision.
 template<int N>
 struct Solution
 {
   bool Valid = false;
   Vector<N> X = Vector<N>::Zero();
-  Eigen::Matrix3d Inverse = Eigen::Matrix3d::Zero();
+  Eigen::Matrix<double, N, 3> Inverse = Eigen::Matrix<double, N, 3>::Zero();
 };
 
 /// LDL^T of a small symmetric positive definite matrix, without pivoting:
@@ -137,7 +137,6 @@ private:
 template<int N>
 Solution<N> Solve(const Matrix<N>& normal, const Vector<N>& right, bool withInverse)
 {
-  static_assert(N > 3, "the first three unknowns and some others");
   Solution<N> solution;
   const Vector<N> diagonal = normal.diagonal();
   if (!(diagonal.minCoeff() > 0.0) || !diagonal.allFinite())
@@ -145,36 +144,22 @@ Solution<N> Solve(const Matrix<N>& normal, const Vector<N>& right, bool withInve
     return solution;
   }
   const Vector<N> unscale = diagonal.cwiseSqrt().cwiseInverse();
-  // Unknown i is eliminated in place (i + N - 3) mod N: the first three
-  // last, so that their block of the inverse is the factor's trailing one
-  // (SmallLdlt::TrailingInverse) instead of three more solves.
-  const auto original = [](int place) { return (place + 3) % N; };
-  Matrix<N> scaled;
-  Vector<N> scaledRight;
-  for (int i = 0; i < N; ++i)
-  {
-    const int row = original(i);
-    for (int j = 0; j < N; ++j)
-    {
-      const int column = original(j);
-      scaled(i, j) = unscale[row] * normal(row, column) * unscale[column];
-    }
-    scaledRight[i] = unscale[row] * right[row];
-  }
+  const Matrix<N> scaled = unscale.asDiagonal() * normal * unscale.asDiagonal();
   SmallLdlt<N> ldlt;
   if (!ldlt.Factor(scaled, 1e-12))
   {
     return solution;
   }
-  const Vector<N> y = ldlt.Solve(scaledRight);
-  for (int i = 0; i < N; ++i)
-  {
-    solution.X[original(i)] = unscale[original(i)] * y[i];
-  }
+  solution.X = unscale.cwiseProduct(ldlt.Solve(unscale.cwiseProduct(right)));
   if (withInverse)
   {
-    const Eigen::Vector3d first = unscale.template head<3>();
-    solution.Inverse = first.asDiagonal() * ldlt.template TrailingInverse<3>() * first.asDiagonal();
+    // Only C, A and B's covariance is wanted: three columns, not N.
+    for (int c = 0; c < 3; ++c)
+    {
+      Vector<N> unit = Vector<N>::Zero();
+      unit[c] = unscale[c];
+      solution.Inverse.col(c) = unscale.cwiseProduct(ldlt.Solve(unit));
+    }
   }
   solution.Valid = solution.X.allFinite() && solution.Inverse.allFinite();
   return solution;
