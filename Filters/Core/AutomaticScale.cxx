@@ -303,7 +303,7 @@ void AutomaticScaleEstimator::PreferJet(const double* x,
     squared[i] = shell.Dx[i] * shell.Dx[i] + shell.Dy[i] * shell.Dy[i] + shell.Dz[i] * shell.Dz[i];
   }
   const double limit =
-    KthSmallest(squared, JetCount, firstRadius * firstRadius, scratch.JetNearest);
+    KthSmallest(squared, JetCount, firstRadius * firstRadius, scratch.JetSelection);
   scratch.JetDx.resize(shell.Count);
   scratch.JetDy.resize(shell.Count);
   scratch.JetDz.resize(shell.Count);

@@ -144,7 +144,7 @@ struct AutomaticScaleScratch
   ShellPoints Shell;
   std::vector<double> Distances;
   std::vector<OrientedCircleResult> Scales;
-  std::vector<double> JetDistances, JetNearest;
+  std::vector<double> JetDistances, JetSelection;
   std::vector<double> JetDx, JetDy, JetDz;
   AnchorCells::Around Anchors;
   std::vector<AnchorEstimate> NearbyAnchors;

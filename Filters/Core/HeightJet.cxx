@@ -178,24 +178,16 @@ void AddMoments(const double* dx,
 
 /// The standard error of the principal curvatures mean +/- amplitude (in
 /// units of the scale) from the covariance of the second derivatives
-/// (h_uu, h_uv, h_vv).
+/// (h_uu, h_uv, h_vv): that of the mean, the half difference and h_uv.
 double SecondOrderStandardError(const Eigen::Matrix3d& covariance,
   double huu,
   double huv,
   double hvv)
 {
-  const double half = 0.5 * (huu - hvv);
-  const double amplitude = std::hypot(half, huv);
-  const Eigen::Vector3d mean(0.5, 0.0, 0.5);
-  const double meanVariance = mean.dot(covariance * mean);
-  double amplitudeVariance = std::max(0.25 * covariance(0, 0), covariance(1, 1));
-  if (amplitude > 0.0)
-  {
-    const Eigen::Vector3d gradient(
-      0.5 * half / amplitude, huv / amplitude, -0.5 * half / amplitude);
-    amplitudeVariance = gradient.dot(covariance * gradient);
-  }
-  return std::sqrt(std::max(0.0, meanVariance) + std::max(0.0, amplitudeVariance));
+  Eigen::Matrix3d toMeanAndHalf;
+  toMeanAndHalf << 0.5, 0.0, 0.5, 0.5, 0.0, -0.5, 0.0, 1.0, 0.0;
+  return CurvatureStandardError(
+    toMeanAndHalf * covariance * toMeanAndHalf.transpose(), 0.5 * (huu - hvv), huv);
 }
 
 /// Principal curvatures (output sign) and directions of the graph of h over

@@ -123,19 +123,6 @@ TangentFrame FittedFrame(const TangentFrame& frame,
   return turned;
 }
 
-/// The standard error of the principal curvatures C +- hypot(A, B) from
-/// the covariance of the unknowns (C, A, B first), to first order.
-template<int N>
-double CurvatureStandardError(const Eigen::Matrix<double, N, 3>& covariance, double c, double s)
-{
-  const double amplitude = std::hypot(c, s);
-  const double amplitudeVariance = amplitude > 0.0
-    ? (c * c * covariance(1, 1) + 2.0 * c * s * covariance(1, 2) + s * s * covariance(2, 2)) /
-      (amplitude * amplitude)
-    : std::max(covariance(1, 1), covariance(2, 2));
-  return std::sqrt(std::max(0.0, covariance(0, 0)) + std::max(0.0, amplitudeVariance));
-}
-
 int PopCount(std::uint32_t bits)
 {
   int count = 0;
@@ -308,9 +295,10 @@ OrientedCircleResult FitOrientedCircles(const OrientedCircleSumsOf<Order>& sums,
     positions.Inverse * positionVariance;
   const double c = combined.X[1], s = combined.X[2];
   const double amplitude = std::hypot(c, s);
-  result.StandardError = CurvatureStandardError(covariance, c, s) * inverseScale;
+  result.StandardError =
+    CurvatureStandardError(covariance.template topRows<3>(), c, s) * inverseScale;
   result.CombinedStandardError = hasCombinedCovariance
-    ? CurvatureStandardError(combined.Inverse, c, s) * inverseScale
+    ? CurvatureStandardError(combined.Inverse.template topRows<3>(), c, s) * inverseScale
     : result.StandardError;
   result.PositionsDiscrepancy =
     (std::fabs(combined.X[0] - positions.X[0]) +

@@ -8,6 +8,9 @@
 
 #include <Eigen/Dense>
 
+#include <algorithm>
+#include <cmath>
+
 namespace pcurv
 {
 namespace small
@@ -166,6 +169,19 @@ Solution<N> Solve(const Matrix<N>& normal, const Vector<N>& right, bool withInve
 }
 
 } // namespace small
+
+/// The standard error of principal curvatures C +- hypot(A, B) from the
+/// covariance of (C, A, B), to first order (the oriented circles' offset
+/// and sine amplitudes, a jet's mean and half-difference curvatures).
+inline double CurvatureStandardError(const Eigen::Matrix3d& covariance, double c, double s)
+{
+  const double amplitude = std::hypot(c, s);
+  const double amplitudeVariance = amplitude > 0.0
+    ? (c * c * covariance(1, 1) + 2.0 * c * s * covariance(1, 2) + s * s * covariance(2, 2)) /
+      (amplitude * amplitude)
+    : std::max(covariance(1, 1), covariance(2, 2));
+  return std::sqrt(std::max(0.0, covariance(0, 0)) + std::max(0.0, amplitudeVariance));
+}
 } // namespace pcurv
 
 #endif
