@@ -54,15 +54,31 @@ constexpr double LadderBiasAllowance = 3.0;
 /// 17 points), and the factor it grows by where that holds too few.
 constexpr double JetReach = 1.3;
 
-/// A fourth-order fit whose neighbourhood the surface turns through more
-/// than a radian across (radius times the largest |curvature|): a height
-/// over the tangent plane, even of the fourth order, no longer follows it
-/// there (an ellipsoid's tips), and its covariance does not show it.
+/// A fit beside the fourth order's (either order, where the normals follow
+/// the surface) whose neighbourhood the surface turns through more than a
+/// radian across (radius times the largest |curvature|): a height over the
+/// tangent plane, even of the fourth order, no longer follows it there (an
+/// ellipsoid's tips, a thin torus's tube), and its covariance does not show
+/// it. The precise combined fit would show that bias against smaller radii,
+/// but the ladder compares radii by the positions-only error, within which
+/// it hides.
 bool TurnsTooFar(const OrientedCircleResult& fit, double radius)
 {
   const PointCurvature& k = fit.Curvature;
-  return fit.Order == 4 &&
+  return (fit.Order == 4 || fit.CombinedCovariance) &&
     radius * std::max(std::fabs(k.MinimumCurvature), std::fabs(k.MaximumCurvature)) > 1.0;
+}
+
+/// The variance (length squared) along `normal` that rounding the
+/// coordinates to their lattice adds: uniform over a step per axis.
+double RoundingVariance(const std::array<double, 3>& step, const Vector3& normal)
+{
+  double variance = 0.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    variance += normal[k] * normal[k] * step[k] * step[k] / 12.0;
+  }
+  return variance;
 }
 
 /// The fit of the sums so far into `result`; false (no fit) where the
@@ -71,6 +87,7 @@ template<int Order>
 bool FitSums(OrientedCircleAccumulatorOf<Order>& accumulator,
   const TangentFrame& frame,
   double inverseUnit,
+  double roundingVariance,
   const FitSettings& settings,
   OrientedCircleResult& result)
 {
@@ -79,8 +96,12 @@ bool FitSums(OrientedCircleAccumulatorOf<Order>& accumulator,
   {
     return false;
   }
-  result = FitOrientedCircles(
-    sums, frame, inverseUnit, settings.MinimumPointsPerDirection, settings.MaximumOpposingFraction);
+  result = FitOrientedCircles(sums,
+    frame,
+    inverseUnit,
+    roundingVariance,
+    settings.MinimumPointsPerDirection,
+    settings.MaximumOpposingFraction);
   return true;
 }
 
@@ -118,6 +139,7 @@ const OrientedCircleResult& Simplest(const OrientedCircleResult& third,
 bool FitEitherOrder(QuarticCircleAccumulator& accumulator,
   const TangentFrame& frame,
   double inverseUnit,
+  double roundingVariance,
   const FitSettings& settings,
   OrientedCircleResult& result)
 {
@@ -129,12 +151,14 @@ bool FitEitherOrder(QuarticCircleAccumulator& accumulator,
   const OrientedCircleResult fourth = FitOrientedCircles(sums,
     frame,
     inverseUnit,
+    roundingVariance,
     settings.MinimumPointsPerDirection,
     settings.MaximumOpposingFraction,
     true);
   const OrientedCircleResult third = FitOrientedCircles(ThirdOrderPart(sums),
     frame,
     inverseUnit,
+    roundingVariance,
     settings.MinimumPointsPerDirection,
     settings.MaximumOpposingFraction,
     true);
@@ -182,6 +206,7 @@ ScaleEstimate AutomaticScaleEstimator::Estimate(std::int64_t point,
     std::nextafter(std::min(this->FirstRadius(x, scratch), rule.LargestRadius), HUGE_VAL);
   const double inverseUnit = 1.0 / unit;
   const TangentFrame frame = MakeTangentFrame({ { n[0], n[1], n[2] } });
+  const double roundingVariance = RoundingVariance(rule.CoordinateStep, frame.Normal);
   OrientedCircleAccumulator& accumulator = scratch.Sums;
   accumulator.Begin(frame);
   OrientedCircleResult chosen;
@@ -220,8 +245,8 @@ ScaleEstimate AutomaticScaleEstimator::Estimate(std::int64_t point,
     inner = r;
     OrientedCircleResult result;
     const bool fitted = fourthOrder
-      ? FitEitherOrder(quartic, frame, inverseUnit, this->Settings, result)
-      : FitSums(accumulator, frame, inverseUnit, this->Settings, result);
+      ? FitEitherOrder(quartic, frame, inverseUnit, roundingVariance, this->Settings, result)
+      : FitSums(accumulator, frame, inverseUnit, roundingVariance, this->Settings, result);
     if (!fitted)
     {
       reason = UnestimatedReason::ReachesAcross;
@@ -320,8 +345,13 @@ void AutomaticScaleEstimator::PreferJet(const double* x,
     others += kept && squared[i] > 0.0;
   }
   const double radius = std::sqrt(limit);
-  const HeightJetFit jet = FitHeightJet(
-    scratch.JetDx.data(), scratch.JetDy.data(), scratch.JetDz.data(), count, frame, radius);
+  const HeightJetFit jet = FitHeightJet(scratch.JetDx.data(),
+    scratch.JetDy.data(),
+    scratch.JetDz.data(),
+    count,
+    frame,
+    radius,
+    RoundingVariance(this->Rule.CoordinateStep, frame.Normal));
   if (!jet.Curvature.Valid)
   {
     return;
@@ -404,12 +434,13 @@ int AutomaticScaleEstimator::NormalFollowsSurface(std::int64_t point,
   }
   const double inverseRadius = 1.0 / r;
   const TangentFrame frame = MakeTangentFrame({ { n[0], n[1], n[2] } });
+  const double roundingVariance = RoundingVariance(this->Rule.CoordinateStep, frame.Normal);
   OrientedCircleAccumulator& accumulator = scratch.Sums;
   accumulator.Begin(frame);
   this->Grid.GatherShell(x, 0.0, r, scratch.Shell);
   this->AddShell(scratch.Shell, inverseRadius, accumulator);
   OrientedCircleResult result;
-  if (!FitSums(accumulator, frame, inverseRadius, this->Settings, result) ||
+  if (!FitSums(accumulator, frame, inverseRadius, roundingVariance, this->Settings, result) ||
     !result.Curvature.Valid)
   {
     return -1;

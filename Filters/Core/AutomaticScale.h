@@ -14,6 +14,7 @@
 #include "SharedFits.h"
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <limits>
@@ -35,6 +36,10 @@ struct AutomaticScaleRule
   double TypicalRadius = 0; // the cloud's typical first radius (a length)
   bool ShareFits = false;   // points near an anchor take its fit (SharedFits.h)
   bool FourthOrder = false; // wide radii fit the surface's fourth order too
+  /// The coordinates' lattice step per axis (CoordinateSteps; 0: none):
+  /// rounding to it is noise the positions' residual need not show (where
+  /// a few neighbours round to one plane), so it floors their variance.
+  std::array<double, 3> CoordinateStep{};
   SharingRule Sharing;
 };
 

@@ -387,6 +387,7 @@ bool EstimateEveryPoint(CloudPoints cloud,
     rule.Automatic.FourthOrder =
       NormalsFollowTheSurface(cloud, grid, rule, fit, boxes, run.Processes);
     summary.FourthOrderFits = rule.Automatic.FourthOrder;
+    rule.Automatic.CoordinateStep = CoordinateSteps(cloud, grid, run.Processes);
   }
   // With shared fits the anchors come first, and take most of the time.
   AnchorTable anchors;

@@ -357,6 +357,135 @@ void CloudPoints::OwnBounds(double lower[3], double upper[3]) const
   }
 }
 
+namespace
+{
+/// How far from a whole multiple of a step, in steps, a coordinate's
+/// offset may lie and still be on the step's lattice: rounding leaves far
+/// less, a value off the lattice is this close by chance once in 500.
+constexpr double LatticeSlack = 1e-3;
+
+/// The greatest common step of two lengths a >= b >= 0 (of a and 0: a): the
+/// first divisor that leaves a remainder within LatticeSlack of itself
+/// (symmetric remainders: each at most half its divisor); at most
+/// `smallest` where the divisors fall that far first (no common step).
+double CommonStep(double a, double b, double smallest)
+{
+  if (b == 0.0)
+  {
+    return a;
+  }
+  while (b > smallest)
+  {
+    const double remainder = std::fabs(a - std::nearbyint(a / b) * b);
+    if (remainder <= LatticeSlack * b)
+    {
+      return b;
+    }
+    a = b;
+    b = remainder;
+  }
+  return b;
+}
+
+/// The lattice step of the own coordinates along `axis`: the common step of
+/// the offsets between points next to each other in the grid's cell order
+/// (no farther apart than `reach`, few steps); 0 where there is none to
+/// take, at most `smallest` where there is no lattice. Each division
+/// multiplies the offsets' rounding by its quotient: the step found is
+/// made again from the largest offset known to be a multiple of it (its
+/// error then that offset's rounding over the multiple).
+double LocalStep(const CloudPoints& cloud,
+  const PointGrid& grid,
+  int axis,
+  double reach,
+  double smallest)
+{
+  double step = 0.0, largest = 0.0;
+  const double* previous = nullptr;
+  for (std::int64_t j = 0; j < grid.GetNumberOfPoints(); ++j)
+  {
+    const std::int64_t id = grid.GetSortedId(j);
+    if (!cloud.IsOwn(id))
+    {
+      continue;
+    }
+    const double* x = &cloud.Coordinates[3 * id];
+    const double d = previous ? std::fabs(x[axis] - previous[axis]) : 0.0;
+    previous = x;
+    if (!(d > 0.0 && d <= reach))
+    {
+      continue;
+    }
+    const double multiple = step > 0.0 ? std::nearbyint(d / step) : 0.0;
+    if (multiple > 0.0 && std::fabs(d / step - multiple) <= LatticeSlack)
+    {
+      if (d > largest)
+      {
+        largest = d;
+        step = d / multiple;
+      }
+      continue;
+    }
+    step = CommonStep(std::max(step, d), std::min(step, d), smallest);
+    if (step <= smallest)
+    {
+      return step;
+    }
+    largest = d;
+    step = d / std::nearbyint(d / step);
+  }
+  return step;
+}
+} // namespace
+
+std::array<double, 3> CoordinateSteps(const CloudPoints& cloud,
+  const PointGrid& grid,
+  const Collectives& processes)
+{
+  double lower[3], upper[3];
+  cloud.OwnBounds(lower, upper);
+  processes.Bounds(lower, upper);
+  double smallest[3];
+  std::vector<double> local(3, 0.0);
+  for (int k = 0; k < 3; ++k)
+  {
+    if (!(lower[k] < upper[k]))
+    {
+      return {};
+    }
+    // An offset is exact to a few units of the last place of the largest
+    // coordinate: a finer lattice could not be told from rounding.
+    smallest[k] = 1e4 * std::numeric_limits<double>::epsilon() *
+      std::max(std::fabs(lower[k]), std::fabs(upper[k]));
+    local[k] = LocalStep(cloud, grid, k, 4.0 * grid.GetCellSize(), smallest[k]);
+  }
+  const std::vector<double> all = processes.Gather(local);
+  std::array<double, 3> steps{};
+  for (int k = 0; k < 3; ++k)
+  {
+    double step = 0.0;
+    for (std::size_t p = k; p < all.size(); p += 3)
+    {
+      if (all[p] > 0.0 && all[p] <= smallest[k])
+      {
+        return {};
+      }
+      step = CommonStep(std::max(step, all[p]), std::min(step, all[p]), smallest[k]);
+    }
+    // The range is a whole multiple of the step: dividing it by that
+    // multiple gives the same bits however the points are ordered or
+    // split among processes.
+    const double range = upper[k] - lower[k];
+    const double multiple = step > smallest[k] ? std::nearbyint(range / step) : 0.0;
+    if (!(multiple >= 1.0))
+    {
+      return {};
+    }
+    steps[k] = range / multiple;
+  }
+  return steps;
+}
+
 void CloudPoints::ScaleCoordinates(double factor)
 {
   for (double& coordinate : this->Coordinates)

@@ -124,6 +124,17 @@ public:
     std::vector<std::int64_t>* lengths = nullptr) const;
 };
 
+/// The step of the lattice the coordinates lie on, per axis: every
+/// coordinate along the axis is a whole multiple of it from the cloud's
+/// lowest (positions rounded to a grid, LAS's scaled integers, values stored
+/// in single precision), within rounding. All zero unless all three axes
+/// have one: a surface sampled on a regular grid of two axes has exact
+/// positions, and only rounding puts the third on a lattice too. The same
+/// on every process, whatever the order of the points or their split.
+std::array<double, 3> CoordinateSteps(const CloudPoints& cloud,
+  const PointGrid& grid,
+  const Collectives& processes);
+
 /// Replaces the halo of `cloud` by the points of other processes within
 /// `reach` of this process's own bounding box (drops it when not
 /// distributed).

@@ -265,7 +265,8 @@ HeightJetFit FitHeightJet(const double* dx,
   const double* dz,
   std::size_t count,
   const TangentFrame& frame,
-  double scale)
+  double scale,
+  double heightVarianceFloor)
 {
   HeightJetFit fit;
   fit.Curvature.NeighborCount = static_cast<int>(count);
@@ -318,7 +319,8 @@ HeightJetFit FitHeightJet(const double* dx,
     const double r = p.H - JetHeight(x, p.U, p.V);
     residual += r * r;
   }
-  const double variance = residual / static_cast<double>(count - HeightJetUnknowns);
+  const double variance = std::max(residual / static_cast<double>(count - HeightJetUnknowns),
+    heightVarianceFloor * inverseScale * inverseScale);
   const Eigen::Vector3d last = unscale.tail<3>();
   const Eigen::Matrix3d covariance =
     last.asDiagonal() * factor.TrailingInverse<3>() * last.asDiagonal() * variance;

@@ -38,13 +38,16 @@ constexpr int HeightJetUnknowns = 15;
 /// `scale` is the neighbourhood's radius: the offsets are divided by it, so
 /// that the normal equations are well scaled. Invalid with fewer than
 /// HeightJetUnknowns + 2 neighbours or where they do not determine the jet
-/// (on a line, in a few rows of a scan).
+/// (on a line, in a few rows of a scan). The standard error takes the
+/// positions' variance along the normal as at least `heightVarianceFloor`
+/// (length squared: what rounding the coordinates adds).
 HeightJetFit FitHeightJet(const double* dx,
   const double* dy,
   const double* dz,
   std::size_t count,
   const TangentFrame& frame,
-  double scale);
+  double scale,
+  double heightVarianceFloor = 0.0);
 
 } // namespace pcurv
 

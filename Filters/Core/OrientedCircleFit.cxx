@@ -221,6 +221,7 @@ template<int Order>
 OrientedCircleResult FitOrientedCircles(const OrientedCircleSumsOf<Order>& sums,
   const TangentFrame& frame,
   double inverseScale,
+  double heightVarianceFloor,
   int minimumNeighbors,
   double maximumOpposing,
   bool combinedError)
@@ -260,9 +261,11 @@ OrientedCircleResult FitOrientedCircles(const OrientedCircleSumsOf<Order>& sums,
   {
     return result;
   }
+  // The positions' rows fit twice the height (in units of the scale).
   const double positionVariance =
-    std::max(ResidualVariance(positions, positionRight, sums.PositionTargets, sums.Neighbors),
-      VarianceFloor);
+    std::max({ ResidualVariance(positions, positionRight, sums.PositionTargets, sums.Neighbors),
+      4.0 * heightVarianceFloor * inverseScale * inverseScale,
+      VarianceFloor });
   Solution<PositionUnknowns> combined = positions;
   // With `combinedError`: combined.Inverse is the combined fit's covariance
   // (its rows are weighted by the inverse of their variances).
@@ -297,6 +300,7 @@ OrientedCircleResult FitOrientedCircles(const OrientedCircleSumsOf<Order>& sums,
   const double amplitude = std::hypot(c, s);
   result.StandardError =
     CurvatureStandardError(covariance.template topRows<3>(), c, s) * inverseScale;
+  result.CombinedCovariance = hasCombinedCovariance;
   result.CombinedStandardError = hasCombinedCovariance
     ? CurvatureStandardError(combined.Inverse.template topRows<3>(), c, s) * inverseScale
     : result.StandardError;
@@ -353,11 +357,13 @@ double ReportedStandardError(const OrientedCircleResult& chosen,
     : 0.0;
   const double floor =
     precision * std::max(std::fabs(k.MinimumCurvature), std::fabs(k.MaximumCurvature));
-  // A fit of the fourth order (made only where the normals follow the
-  // surface): the combined fit's own error, inflated, stands for both the
-  // positions-only fit's and the normals' pull (the positions-only fit of
-  // 15 unknowns is far less precise than the combined one).
-  const bool combined = chosen.Order == 4;
+  // Where the normals follow the surface (a fit of the fourth order, or of
+  // the third beside it: both have the combined covariance) the combined
+  // fit's own error, inflated, stands for both the positions-only fit's and
+  // the normals' pull: with exact normals the combined fit is far more
+  // precise than the positions alone (of 15 unknowns, or of 10 at the wide
+  // radii noise calls for).
+  const bool combined = chosen.Order == 4 || chosen.CombinedCovariance;
   const double parts[] = { combined ? CombinedErrorFactor * chosen.CombinedStandardError
                                     : chosen.StandardError,
     combined ? 0.0 : chosen.PositionsDiscrepancy,
@@ -422,11 +428,13 @@ template class OrientedCircleAccumulatorOf<4>;
 template OrientedCircleResult FitOrientedCircles<3>(const OrientedCircleSums&,
   const TangentFrame&,
   double,
+  double,
   int,
   double,
   bool);
 template OrientedCircleResult FitOrientedCircles<4>(const QuarticCircleSums&,
   const TangentFrame&,
+  double,
   double,
   int,
   double,

@@ -205,6 +205,9 @@ struct OrientedCircleResult
   /// from its covariance: what telling a fit of the third order from one of
   /// the fourth compares (AutomaticScale), not what the scale grows by.
   double CombinedStandardError = 0.0;
+  /// Whether CombinedStandardError is the combined fit's own (a fit with
+  /// `combinedError`, made where the normals follow the surface).
+  bool CombinedCovariance = false;
   double PositionsDiscrepancy = 0.0;
   double TiltBias = 0.0;
   /// The fitted surface, for evaluating it elsewhere (SharedFits.h).
@@ -226,11 +229,14 @@ double ReportedStandardError(const OrientedCircleResult& chosen,
 /// positions' unknowns and two: 12 at order 3, 17 at order 4) neighbours,
 /// angles within a closed half-turn of 2 phi, or a neighbourhood that
 /// reaches across the surface (ReachesAcross). CombinedStandardError only
-/// with `combinedError` (else the positions-only fit's).
+/// with `combinedError` (else the positions-only fit's). The positions'
+/// variance along the normal is taken as at least `heightVarianceFloor`
+/// (length squared: what rounding the coordinates adds).
 template<int Order>
 OrientedCircleResult FitOrientedCircles(const OrientedCircleSumsOf<Order>& sums,
   const TangentFrame& frame,
   double inverseScale,
+  double heightVarianceFloor,
   int minimumNeighbors,
   double maximumOpposing,
   bool combinedError = false);
@@ -254,7 +260,7 @@ public:
   OrientedCircleResult Estimate(int minimumNeighbors, double maximumOpposing)
   {
     return FitOrientedCircles(
-      this->Sums.Sums(), this->Frame, this->InverseScale, minimumNeighbors, maximumOpposing);
+      this->Sums.Sums(), this->Frame, this->InverseScale, 0.0, minimumNeighbors, maximumOpposing);
   }
 
 private:

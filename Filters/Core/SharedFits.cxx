@@ -29,6 +29,48 @@ struct SurfaceJet
   double Height, Fu, Fv, Fuu, Fuv, Fvv;
 };
 
+/// The fit's surface is not the polynomial `jet` (P) but the one whose
+/// circles it fits: the positions' rows fit 2 h = kappa(phi) |d|^2 + ...,
+/// |d| the distance in space, which a circle tangent to the frame's plane
+/// meets exactly (a polynomial of the same coefficients leaves a sphere's
+/// fourth order out, and off the anchor its curvature falls short). With
+/// the circles through the fitted point (height e): h = P + kappa(phi) w^2
+/// / 2, w = h - e, kappa(phi) = C + (A (u^2 - v^2) + 2 B u v) / rho^2. Its
+/// height and derivatives at (u, v) by implicit differentiation of h = R(u,
+/// v, h); (u, v) != (0, 0).
+void CompleteCircles(const std::array<double, 15>& x, double u, double v, SurfaceJet& jet)
+{
+  const double a = x[1], b = x[2];
+  const double rho2 = u * u + v * v;
+  // g = T / rho^2 and its derivatives, T = A (u^2 - v^2) + 2 B u v.
+  const double t = a * (u * u - v * v) + 2.0 * b * u * v;
+  const double tu = 2.0 * (a * u + b * v), tv = 2.0 * (b * u - a * v);
+  const double g = t / rho2;
+  const double gu = (tu - g * 2.0 * u) / rho2, gv = (tv - g * 2.0 * v) / rho2;
+  const double guu = (2.0 * a - 4.0 * gu * u - 2.0 * g) / rho2;
+  const double gvv = (-2.0 * a - 4.0 * gv * v - 2.0 * g) / rho2;
+  const double guv = (2.0 * b - 2.0 * gu * v - 2.0 * gv * u) / rho2;
+  const double k = x[0] + g; // kappa(phi)
+  const double e = 0.5 * x[9];
+  double h = jet.Height;
+  for (int i = 0; i < 4; ++i)
+  {
+    h = jet.Height + 0.5 * k * (h - e) * (h - e);
+  }
+  const double w = h - e, w2 = w * w;
+  const double denominator = 1.0 - k * w; // 1 - R_h
+  const double hu = (jet.Fu + 0.5 * gu * w2) / denominator;
+  const double hv = (jet.Fv + 0.5 * gv * w2) / denominator;
+  // R_uh = S_u w, R_hh = S.
+  const double ruh = gu * w, rvh = gv * w;
+  jet.Height = h;
+  jet.Fu = hu;
+  jet.Fv = hv;
+  jet.Fuu = (jet.Fuu + 0.5 * guu * w2 + 2.0 * ruh * hu + k * hu * hu) / denominator;
+  jet.Fvv = (jet.Fvv + 0.5 * gvv * w2 + 2.0 * rvh * hv + k * hv * hv) / denominator;
+  jet.Fuv = (jet.Fuv + 0.5 * guv * w2 + ruh * hv + rvh * hu + k * hu * hv) / denominator;
+}
+
 SurfaceJet JetAt(const FittedSurface& surface, double u, double v)
 {
   const auto& x = surface.Coefficients;
@@ -55,6 +97,10 @@ SurfaceJet JetAt(const FittedSurface& surface, double u, double v)
     jet.Fuu += 12.0 * q[0] * uu + 6.0 * q[1] * uv + 2.0 * q[2] * vv;
     jet.Fuv += 3.0 * q[1] * uu + 4.0 * q[2] * uv + 3.0 * q[3] * vv;
     jet.Fvv += 2.0 * q[2] * uu + 6.0 * q[3] * uv + 12.0 * q[4] * vv;
+  }
+  if (u != 0.0 || v != 0.0)
+  {
+    CompleteCircles(x, u, v, jet);
   }
   return jet;
 }
