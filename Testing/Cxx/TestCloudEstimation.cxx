@@ -561,6 +561,29 @@ ErrorCover CoverOf(const std::vector<testing::SurfaceSample>& samples,
   return cover;
 }
 
+/// A cloud estimated with its given normals and the default settings:
+/// serially (with the reported standard errors) and on 3 threads.
+struct GivenNormalsRun
+{
+  explicit GivenNormalsRun(const std::vector<testing::SurfaceSample>& samples)
+    : Serial(samples.size(), false)
+    , Threaded(samples.size(), false)
+    , StandardError(samples.size())
+  {
+    SerialRunner serial;
+    ThreadRunner threads(3);
+    CurvatureBuffers buffers = this->Serial.Buffers();
+    buffers.StandardError = this->StandardError.data();
+    this->Summary = EstimateCloud(
+      MakeCloud(samples), EstimationSettings{}, Collectives{}, serial, nullptr, buffers);
+    Estimate(samples, EstimationSettings{}, this->Threaded, threads);
+  }
+
+  Results Serial, Threaded;
+  std::vector<double> StandardError;
+  EstimationSummary Summary;
+};
+
 /// The fourth order beyond the first radius (AutomaticScaleRule::
 /// FourthOrder): on noisy clouds with exact normals the gate turns it on and
 /// the error falls well below the third order's alone (an ellipsoid and a
@@ -571,7 +594,6 @@ ErrorCover CoverOf(const std::vector<testing::SurfaceSample>& samples,
 void TestFourthOrder(Checks& checks)
 {
   SerialRunner serial;
-  ThreadRunner threads(3);
   struct Case
   {
     const char* Name;
@@ -597,36 +619,31 @@ void TestFourthOrder(Checks& checks)
   {
     const double spacing = std::sqrt(c.Area / c.Samples.size());
     testing::AddPositionNoise(c.Samples, 0.1 * spacing, 66);
-    Results given(c.Samples.size(), false), threaded(c.Samples.size(), false);
-    std::vector<double> standardError(c.Samples.size());
-    CurvatureBuffers buffers = given.Buffers();
-    buffers.StandardError = standardError.data();
-    const EstimationSummary summary = EstimateCloud(
-      MakeCloud(c.Samples), EstimationSettings{}, Collectives{}, serial, nullptr, buffers);
-    Estimate(c.Samples, EstimationSettings{}, threaded, threads);
+    const GivenNormalsRun given(c.Samples);
     EstimationSettings own;
     own.EstimateNormals = true;
     Results estimated(c.Samples.size(), false);
     const EstimationSummary ownSummary = Estimate(c.Samples, own, estimated, serial);
-    const ErrorCover cover = CoverOf(c.Samples, given, standardError, c.Largest);
-    const double error = MeanError(c.Samples, given) / c.Largest;
+    const ErrorCover cover = CoverOf(c.Samples, given.Serial, given.StandardError, c.Largest);
+    const double error = MeanError(c.Samples, given.Serial) / c.Largest;
     std::printf("fourth order: noisy %s, exact normals: on %d, mean |k - exact| / largest k %.5f, "
                 "within 2 SE %.3f, off by > 20 %% %d; estimated normals: on %d, %.5f\n",
       c.Name,
-      summary.FourthOrderFits ? 1 : 0,
+      given.Summary.FourthOrderFits ? 1 : 0,
       error,
       cover.Share(),
       cover.Far,
       ownSummary.FourthOrderFits ? 1 : 0,
       MeanError(c.Samples, estimated) / c.Largest);
     const std::string what = std::string("fourth order, noisy ") + c.Name + ": ";
-    checks.True((what + "on with exact normals").c_str(), summary.FourthOrderFits);
+    checks.True((what + "on with exact normals").c_str(), given.Summary.FourthOrderFits);
     checks.True((what + "off with estimated normals").c_str(), !ownSummary.FourthOrderFits);
     checks.True((what + "error below its bound").c_str(), error < c.Bound);
     checks.True((what + "no valid point off by 20 % of max |k|").c_str(), cover.Far == 0);
     checks.True((what + "at least 85 % within 2 standard errors").c_str(),
       cover.Share() >= 0.85 && cover.Valid > 0);
-    checks.True((what + "3 threads bit-identical to 1").c_str(), given.BitIdentical(threaded));
+    checks.True(
+      (what + "3 threads bit-identical to 1").c_str(), given.Serial.BitIdentical(given.Threaded));
   }
 }
 
@@ -640,8 +657,6 @@ void TestFourthOrder(Checks& checks)
 /// radii went unseen by the ladder's comparisons).
 void TestGatedThirdOrder(Checks& checks)
 {
-  SerialRunner serial;
-  ThreadRunner threads(3);
   struct Case
   {
     const char* Name;
@@ -670,34 +685,29 @@ void TestGatedThirdOrder(Checks& checks)
   {
     const double spacing = std::sqrt(c.Area / c.Samples.size());
     testing::AddPositionNoise(c.Samples, c.Noise * spacing, 92);
-    Results given(c.Samples.size(), false), threaded(c.Samples.size(), false);
-    std::vector<double> standardError(c.Samples.size());
-    CurvatureBuffers buffers = given.Buffers();
-    buffers.StandardError = standardError.data();
-    const EstimationSummary summary = EstimateCloud(
-      MakeCloud(c.Samples), EstimationSettings{}, Collectives{}, serial, nullptr, buffers);
-    Estimate(c.Samples, EstimationSettings{}, threaded, threads);
-    const ErrorCover cover = CoverOf(c.Samples, given, standardError, c.Largest);
-    const double error = MeanError(c.Samples, given) / c.Largest;
+    const GivenNormalsRun given(c.Samples);
+    const ErrorCover cover = CoverOf(c.Samples, given.Serial, given.StandardError, c.Largest);
+    const double error = MeanError(c.Samples, given.Serial) / c.Largest;
     std::printf("gated third order: %s at %.1f h, exact normals: fourth order on %d, mean |k - "
                 "exact| / largest k %.5f, within 2 SE %.3f, median error / SE %.3f, off by > 20 %% "
                 "%d\n",
       c.Name,
       c.Noise,
-      summary.FourthOrderFits ? 1 : 0,
+      given.Summary.FourthOrderFits ? 1 : 0,
       error,
       cover.Share(),
       cover.MedianRatio,
       cover.Far);
     const std::string what = std::string("gated third order, noisy ") + c.Name + ": ";
-    checks.True((what + "the fourth order on").c_str(), summary.FourthOrderFits);
+    checks.True((what + "the fourth order on").c_str(), given.Summary.FourthOrderFits);
     checks.True((what + "error below its bound").c_str(), error < c.Bound);
     checks.True((what + "no valid point off by 20 % of max |k|").c_str(), cover.Far == 0);
     checks.True((what + "at least 85 % within 2 standard errors").c_str(),
       cover.Share() >= 0.85 && cover.Valid > 0);
     checks.True(
       (what + "median error / standard error at least 0.3").c_str(), cover.MedianRatio >= 0.3);
-    checks.True((what + "3 threads bit-identical to 1").c_str(), given.BitIdentical(threaded));
+    checks.True(
+      (what + "3 threads bit-identical to 1").c_str(), given.Serial.BitIdentical(given.Threaded));
   }
 }
 
