@@ -320,12 +320,19 @@ void OrderedCloud::GatherFine(const double x[3],
   out.InOrder = false;
 }
 
+/// Below this share of the largest variance, the middle one leaves the
+/// neighbours on a line: any plane through it fits them (a scan line's
+/// points, 12 times denser along the lines than across them, often are
+/// all one line's), and the PCA normal is a random turn about the line.
+constexpr double LinearShare = 0.05;
+
 /// The normal of the plane through the neighbours (offsets from the point,
 /// in units of the radius) by PCA: the eigenvector of the smallest
 /// eigenvalue of their covariance; signed so that its largest component is
 /// positive (any fixed rule: the orientation decides the sign later). The
 /// sums run in the neighbours' order, one accumulator a matrix entry.
-void FitPlane(const NeighborOffsets& offsets, double inverseRadius, double* normal)
+/// Returns whether the neighbours span a plane (LinearShare).
+bool FitPlane(const NeighborOffsets& offsets, double inverseRadius, double* normal)
 {
   const std::size_t count = offsets.Count;
   const double* dx = offsets.Dx.data();
@@ -374,6 +381,8 @@ void FitPlane(const NeighborOffsets& offsets, double inverseRadius, double* norm
   {
     normal[k] = std::isfinite(n[k]) ? n[k] : 0.0;
   }
+  const Eigen::Vector3d variances = solver.eigenvalues(); // ascending
+  return variances[1] >= LinearShare * variances[2];
 }
 
 /// One thread's buffers of the k-nearest search, and its guess of the
@@ -584,6 +593,32 @@ void WriteNearestOthers(std::int64_t position,
   }
 }
 
+/// Where the k nearest lie on a line: the plane through the neighbours of
+/// a radius grown until they span one (twice as many each time, on a
+/// surface), up to 8 times as many; `normal` unchanged where none does (a
+/// point on a line has no plane).
+void FitBeyondLine(const OrderedCloud& ordered,
+  const double x[3],
+  double radius,
+  std::size_t wanted,
+  NearestSearch& search,
+  double* normal)
+{
+  constexpr int Doublings = 3;
+  for (int doubling = 1; doubling <= Doublings; ++doubling)
+  {
+    const double grown = radius * std::sqrt(static_cast<double>(1 << doubling));
+    Gather(ordered, x, grown, wanted << doubling, search);
+    KeepWithinRadius(ordered, x, grown, search);
+    double candidate[3];
+    if (search.Offsets.Count >= 3 && FitPlane(search.Offsets, 1.0 / grown, candidate))
+    {
+      std::copy_n(candidate, 3, normal);
+      return;
+    }
+  }
+}
+
 /// One point's plane and graph neighbours: the k nearest found with one
 /// radius query (usually), kept in position order for the fit, the nearest
 /// others for the graph.
@@ -621,8 +656,12 @@ void FitPoint(const OrderedCloud& ordered,
     normal[0] = normal[1] = normal[2] = 0.0;
     return;
   }
-  FitPlane(search.Offsets, 1.0 / radius, normal);
+  const bool planar = FitPlane(search.Offsets, 1.0 / radius, normal);
   WriteNearestOthers(position, radius, search, fits.GraphNeighbors, fits.Neighbors);
+  if (!planar)
+  {
+    FitBeyondLine(ordered, x, radius, wanted, search, normal);
+  }
 }
 
 /// Points of the tree's frontier with the sign they would get, by their
