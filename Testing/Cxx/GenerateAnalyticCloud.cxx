@@ -6,10 +6,14 @@
 
 #include "vtkXMLPolyDataWriter.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <set>
 #include <string>
+#include <vector>
 
 namespace
 {
@@ -45,21 +49,25 @@ int main(int argc, char* argv[])
   {
     std::fprintf(stderr,
       "usage: %s <torus|sphere|cylinder|saddle|ellipsoid|plane|paraboloid|wave> <points> "
-      "<output.vtp|output.xyz> [seed] [noise in spacings] [--points-only]\n"
-      "  (--points-only: a .xyz of x y z alone, as most scans come)\n",
+      "<output.vtp|output.xyz> [seed] [noise in spacings] [--points-only] [--rounded]\n"
+      "  (--points-only: a .xyz of x y z alone, as most scans come; --rounded: the\n"
+      "  positions rounded to a grid of that many spacings instead of the noise)\n",
       argv[0]);
     return EXIT_FAILURE;
   }
-  bool pointsOnly = false;
+  bool pointsOnly = false, rounded = false;
+  int numbers = argc; // the optional numbers come before the flags
   for (int a = 4; a < argc; ++a)
   {
-    if (std::string(argv[a]) == "--points-only")
+    const std::string flag = argv[a];
+    pointsOnly = pointsOnly || flag == "--points-only";
+    rounded = rounded || flag == "--rounded";
+    if (flag.rfind("--", 0) == 0)
     {
-      pointsOnly = true;
-      argc = a; // the optional numbers come before it
-      break;
+      numbers = std::min(numbers, a);
     }
   }
+  argc = numbers;
   const int count = std::atoi(argv[2]);
   const unsigned long long seed = argc > 4 ? std::strtoull(argv[4], nullptr, 10) : 1;
   const double noise = argc > 5 ? std::atof(argv[5]) : 0.0;
@@ -79,7 +87,30 @@ int main(int argc, char* argv[])
       area += std::sqrt(pcurv::testing::Dot(c, c));
     }
     area *= (surface.U1 - surface.U0) * (surface.V1 - surface.V0) / trials;
-    pcurv::testing::AddPositionNoise(samples, noise * std::sqrt(area / count), seed + 2);
+    const double spacing = std::sqrt(area / count);
+    if (rounded)
+    {
+      // Rounding makes some points coincide: the first of each position
+      // is kept (a cloud's points are told apart by their coordinates).
+      std::set<std::array<double, 3>> seen;
+      std::vector<pcurv::testing::SurfaceSample> kept;
+      for (auto& s : samples)
+      {
+        for (double& x : s.Point)
+        {
+          x = std::nearbyint(x / (noise * spacing)) * (noise * spacing);
+        }
+        if (seen.insert(s.Point).second)
+        {
+          kept.push_back(s);
+        }
+      }
+      samples.swap(kept);
+    }
+    else
+    {
+      pcurv::testing::AddPositionNoise(samples, noise * spacing, seed + 2);
+    }
   }
   const std::string output = argv[3];
   if (output.size() > 4 && output.substr(output.size() - 4) == ".xyz")
@@ -108,7 +139,7 @@ int main(int argc, char* argv[])
         s.Normal[2]);
     }
     std::fclose(file);
-    std::printf("wrote %d points on a %s to %s\n", count, argv[1], argv[3]);
+    std::printf("wrote %zu points on a %s to %s\n", samples.size(), argv[1], argv[3]);
     return EXIT_SUCCESS;
   }
   vtkNew<vtkXMLPolyDataWriter> writer;
@@ -122,6 +153,6 @@ int main(int argc, char* argv[])
     std::fprintf(stderr, "could not write %s\n", argv[3]);
     return EXIT_FAILURE;
   }
-  std::printf("wrote %d points on a %s to %s\n", count, argv[1], argv[3]);
+  std::printf("wrote %zu points on a %s to %s\n", samples.size(), argv[1], argv[3]);
   return EXIT_SUCCESS;
 }
