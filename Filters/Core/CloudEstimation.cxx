@@ -384,10 +384,11 @@ bool EstimateEveryPoint(CloudPoints cloud,
   fit.MaximumOpposingFraction = settings.MaximumOpposingFraction;
   if (rule.AutomaticScale)
   {
+    // The lattice first: the gate's fits weigh the noise too.
+    rule.Automatic.CoordinateStep = CoordinateSteps(cloud, grid, run.Processes);
     rule.Automatic.FourthOrder =
       NormalsFollowTheSurface(cloud, grid, rule, fit, boxes, run.Processes);
     summary.FourthOrderFits = rule.Automatic.FourthOrder;
-    rule.Automatic.CoordinateStep = CoordinateSteps(cloud, grid, run.Processes);
   }
   // With shared fits the anchors come first, and take most of the time.
   AnchorTable anchors;
