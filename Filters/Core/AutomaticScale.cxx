@@ -293,8 +293,13 @@ ScaleEstimate AutomaticScaleEstimator::Estimate(std::int64_t point,
   };
   if (precise && chosenRadius <= JetTrialRadius * unit)
   {
-    this->PreferJet(
-      x, frame, unit, ReportedStandardError(chosen, previous, 0.0), scratch, estimate);
+    this->PreferJet(x,
+      frame,
+      unit,
+      roundingVariance,
+      ReportedStandardError(chosen, previous, 0.0),
+      scratch,
+      estimate);
   }
   return estimate;
 }
@@ -302,6 +307,7 @@ ScaleEstimate AutomaticScaleEstimator::Estimate(std::int64_t point,
 void AutomaticScaleEstimator::PreferJet(const double* x,
   const TangentFrame& frame,
   double firstRadius,
+  double roundingVariance,
   double ladderError,
   AutomaticScaleScratch& scratch,
   ScaleEstimate& estimate) const
@@ -351,7 +357,7 @@ void AutomaticScaleEstimator::PreferJet(const double* x,
     count,
     frame,
     radius,
-    RoundingVariance(this->Rule.CoordinateStep, frame.Normal));
+    roundingVariance);
   if (!jet.Curvature.Valid)
   {
     return;

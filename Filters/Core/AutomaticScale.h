@@ -208,9 +208,11 @@ private:
   /// neighbours where the jet's error (its standard error, inflated for
   /// the bias its residual does not show) is below `ladderError` (the
   /// ladder's reported error without the precision floor).
+  /// `roundingVariance`: the coordinates' rounding along the normal.
   void PreferJet(const double* x,
     const TangentFrame& frame,
     double firstRadius,
+    double roundingVariance,
     double ladderError,
     AutomaticScaleScratch& scratch,
     ScaleEstimate& estimate) const;

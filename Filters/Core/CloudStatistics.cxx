@@ -387,20 +387,54 @@ double CommonStep(double a, double b, double smallest)
   return b;
 }
 
-/// The lattice step of the own coordinates along `axis`: the common step of
-/// the offsets between points next to each other in the grid's cell order
-/// (no farther apart than `reach`, few steps); 0 where there is none to
-/// take, at most `smallest` where there is no lattice. Each division
-/// multiplies the offsets' rounding by its quotient: the step found is
-/// made again from the largest offset known to be a multiple of it (its
-/// error then that offset's rounding over the multiple).
-double LocalStep(const CloudPoints& cloud,
-  const PointGrid& grid,
-  int axis,
-  double reach,
-  double smallest)
+/// One axis's lattice step so far (LocalSteps).
+struct AxisStep
 {
-  double step = 0.0, largest = 0.0;
+  double Step = 0.0;
+  /// The largest offset known to be a multiple of Step.
+  double Largest = 0.0;
+
+  /// Takes an offset `d` between neighbours (0 < d <= the reach): Step
+  /// stays if d is a multiple of it (made again from d when d is the
+  /// largest such: each division multiplies the offsets' rounding by its
+  /// quotient, and Step's error is then d's rounding over the multiple),
+  /// else becomes the two's common step. False once Step is at most
+  /// `smallest`: no lattice.
+  bool Take(double d, double smallest)
+  {
+    const double multiple = this->Step > 0.0 ? std::nearbyint(d / this->Step) : 0.0;
+    if (multiple > 0.0 && std::fabs(d / this->Step - multiple) <= LatticeSlack)
+    {
+      if (d > this->Largest)
+      {
+        this->Largest = d;
+        this->Step = d / multiple;
+      }
+      return true;
+    }
+    this->Step = CommonStep(std::max(this->Step, d), std::min(this->Step, d), smallest);
+    if (this->Step <= smallest)
+    {
+      return false;
+    }
+    this->Largest = d;
+    this->Step = d / std::nearbyint(d / this->Step);
+    return true;
+  }
+};
+
+/// The lattice steps of the own coordinates: per axis, the common step of
+/// the offsets between points next to each other in the grid's cell order
+/// that are no farther apart than `reach` (few steps); 0 where there is
+/// none to take, at most `smallest` where there is no lattice. One pass
+/// for the three axes, which stops at the first axis without a lattice
+/// (the cloud then has none).
+std::array<double, 3> LocalSteps(const CloudPoints& cloud,
+  const PointGrid& grid,
+  double reach,
+  const double smallest[3])
+{
+  std::array<AxisStep, 3> axes;
   const double* previous = nullptr;
   for (std::int64_t j = 0; j < grid.GetNumberOfPoints(); ++j)
   {
@@ -410,31 +444,17 @@ double LocalStep(const CloudPoints& cloud,
       continue;
     }
     const double* x = &cloud.Coordinates[3 * id];
-    const double d = previous ? std::fabs(x[axis] - previous[axis]) : 0.0;
-    previous = x;
-    if (!(d > 0.0 && d <= reach))
+    for (int k = 0; previous && k < 3; ++k)
     {
-      continue;
-    }
-    const double multiple = step > 0.0 ? std::nearbyint(d / step) : 0.0;
-    if (multiple > 0.0 && std::fabs(d / step - multiple) <= LatticeSlack)
-    {
-      if (d > largest)
+      const double d = std::fabs(x[k] - previous[k]);
+      if (d > 0.0 && d <= reach && !axes[k].Take(d, smallest[k]))
       {
-        largest = d;
-        step = d / multiple;
+        return { axes[0].Step, axes[1].Step, axes[2].Step };
       }
-      continue;
     }
-    step = CommonStep(std::max(step, d), std::min(step, d), smallest);
-    if (step <= smallest)
-    {
-      return step;
-    }
-    largest = d;
-    step = d / std::nearbyint(d / step);
+    previous = x;
   }
-  return step;
+  return { axes[0].Step, axes[1].Step, axes[2].Step };
 }
 } // namespace
 
@@ -446,20 +466,21 @@ std::array<double, 3> CoordinateSteps(const CloudPoints& cloud,
   cloud.OwnBounds(lower, upper);
   processes.Bounds(lower, upper);
   double smallest[3];
-  std::vector<double> local(3, 0.0);
+  bool spread = true;
   for (int k = 0; k < 3; ++k)
   {
-    if (!(lower[k] < upper[k]))
-    {
-      return {};
-    }
+    spread = spread && lower[k] < upper[k];
     // An offset is exact to a few units of the last place of the largest
     // coordinate: a finer lattice could not be told from rounding.
     smallest[k] = 1e4 * std::numeric_limits<double>::epsilon() *
       std::max(std::fabs(lower[k]), std::fabs(upper[k]));
-    local[k] = LocalStep(cloud, grid, k, 4.0 * grid.GetCellSize(), smallest[k]);
   }
-  const std::vector<double> all = processes.Gather(local);
+  if (!spread)
+  {
+    return {};
+  }
+  const std::array<double, 3> local = LocalSteps(cloud, grid, 4.0 * grid.GetCellSize(), smallest);
+  const std::vector<double> all = processes.Gather({ local[0], local[1], local[2] });
   std::array<double, 3> steps{};
   for (int k = 0; k < 3; ++k)
   {

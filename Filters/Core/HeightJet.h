@@ -47,7 +47,7 @@ HeightJetFit FitHeightJet(const double* dx,
   std::size_t count,
   const TangentFrame& frame,
   double scale,
-  double heightVarianceFloor = 0.0);
+  double heightVarianceFloor);
 
 } // namespace pcurv
 

@@ -61,7 +61,7 @@ void CompleteCircles(const std::array<double, 15>& x, double u, double v, Surfac
   const double denominator = 1.0 - k * w; // 1 - R_h
   const double hu = (jet.Fu + 0.5 * gu * w2) / denominator;
   const double hv = (jet.Fv + 0.5 * gv * w2) / denominator;
-  // R_uh = S_u w, R_hh = S.
+  // R_uh = kappa_u w, R_hh = kappa.
   const double ruh = gu * w, rvh = gv * w;
   jet.Height = h;
   jet.Fu = hu;

@@ -92,14 +92,11 @@ int main(int argc, char* argv[])
     {
       // Rounding makes some points coincide: the first of each position
       // is kept (a cloud's points are told apart by their coordinates).
+      pcurv::testing::RoundPositions(samples, noise * spacing);
       std::set<std::array<double, 3>> seen;
       std::vector<pcurv::testing::SurfaceSample> kept;
-      for (auto& s : samples)
+      for (const auto& s : samples)
       {
-        for (double& x : s.Point)
-        {
-          x = std::nearbyint(x / (noise * spacing)) * (noise * spacing);
-        }
         if (seen.insert(s.Point).second)
         {
           kept.push_back(s);

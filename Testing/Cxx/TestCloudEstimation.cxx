@@ -711,19 +711,6 @@ void TestGatedThirdOrder(Checks& checks)
   }
 }
 
-/// Positions rounded to multiples of `step` (a grid of that spacing),
-/// shifted by `offset` (as LAS's scaled integers are).
-void RoundPositions(std::vector<testing::SurfaceSample>& samples, double step, double offset)
-{
-  for (testing::SurfaceSample& s : samples)
-  {
-    for (double& x : s.Point)
-    {
-      x = offset + std::nearbyint(x / step) * step;
-    }
-  }
-}
-
 /// CoordinateSteps of the samples' positions, over a grid of cells about
 /// two spacings wide (as the estimation's).
 std::array<double, 3> StepsOf(const std::vector<testing::SurfaceSample>& samples)
@@ -755,13 +742,13 @@ void TestCoordinateSteps(Checks& checks)
   checks.True(
     "coordinate steps: none on unrounded points", StepsOf(torus) == std::array<double, 3>{});
   auto rounded = torus;
-  RoundPositions(rounded, 0.01, 0.0);
+  testing::RoundPositions(rounded, 0.01);
   const std::array<double, 3> steps = StepsOf(rounded);
   auto reversed = rounded;
   std::reverse(reversed.begin(), reversed.end());
   const std::array<double, 3> reversedSteps = StepsOf(reversed);
   auto far = torus;
-  RoundPositions(far, 0.001, 512000.0);
+  testing::RoundPositions(far, 0.001, 512000.0);
   const std::array<double, 3> farSteps = StepsOf(far);
   std::printf("coordinate steps: rounded to 0.01: %.17g %.17g %.17g; to 0.001 at 512000: %.17g\n",
     steps[0],
@@ -807,7 +794,7 @@ void TestRoundedPositions(Checks& checks)
   const double spacing =
     std::sqrt(4.0 * 3.141592653589793 * 3.141592653589793 * 3.0 / torus.size());
   auto gaussian = torus;
-  RoundPositions(torus, spacing / 3.0, 0.0);
+  testing::RoundPositions(torus, spacing / 3.0);
   testing::AddPositionNoise(gaussian, spacing / 3.0 / std::sqrt(12.0), 104);
   for (const bool estimate : { false, true })
   {

@@ -355,6 +355,20 @@ inline void AddPositionNoise(std::vector<SurfaceSample>& samples, double sigma, 
   }
 }
 
+/// Rounds every coordinate to a multiple of `step` (a grid of that
+/// spacing), then shifts it by `offset` (as LAS files store positions: an
+/// offset plus integers times a scale).
+inline void RoundPositions(std::vector<SurfaceSample>& samples, double step, double offset = 0.0)
+{
+  for (SurfaceSample& s : samples)
+  {
+    for (double& x : s.Point)
+    {
+      x = offset + std::nearbyint(x / step) * step;
+    }
+  }
+}
+
 } // namespace testing
 } // namespace pcurv
 
