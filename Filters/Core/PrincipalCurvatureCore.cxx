@@ -9,29 +9,8 @@ namespace pcurv
 {
 namespace
 {
-constexpr double Pi = 3.14159265358979323846;
-constexpr double DirectionStep = Pi / 8.0;
-
-/// cos and sin of theta_i = i pi / 8, the angles of the 16 half planes.
-struct DirectionTable
-{
-  std::array<double, NumberOfDirections> Cos;
-  std::array<double, NumberOfDirections> Sin;
-  DirectionTable()
-  {
-    for (int i = 0; i < NumberOfDirections; ++i)
-    {
-      this->Cos[i] = std::cos(i * DirectionStep);
-      this->Sin[i] = std::sin(i * DirectionStep);
-    }
-  }
-};
-
-const DirectionTable& Directions()
-{
-  static const DirectionTable table;
-  return table;
-}
+using binning::Directions;
+using binning::DirectionTable;
 
 Vector3 Cross(const Vector3& a, const Vector3& b)
 {
@@ -451,10 +430,6 @@ void PointCurvatureEstimator::Begin(const Vector3& point,
   this->NumberOfSlots = 0;
   this->NumberOfAdded = 0;
   this->Banks.assign(binning::BankDoubles, 0.0);
-  for (auto& record : this->RareRecords)
-  {
-    record.fill(0.0);
-  }
 }
 
 void PointCurvatureEstimator::Reserve(std::size_t neighbors)
@@ -519,60 +494,18 @@ void PointCurvatureEstimator::AddNeighborOffsets(const double* dx,
     block.Banks = this->Banks.data();
     block.FirstSlot = first;
     binning::Classify(frame, dx + start, dy + start, dz + start, size, block);
-    this->AddRareNeighbors(block, first, size);
+    this->NumberOfSlots = first + size;
+    this->NumberOfAdded += size - block.AtQueryPoint;
   }
-}
-
-void PointCurvatureEstimator::AddRareNeighbors(const binning::Block& block,
-  std::size_t first,
-  std::size_t count)
-{
-  const DirectionTable& table = Directions();
-  for (std::uint64_t rare = block.RareBits; rare; rare &= rare - 1)
-  {
-    const std::size_t k = first + static_cast<std::size_t>(__builtin_ctzll(rare));
-    // Not at the query point, where the plane tests mean nothing.
-    if (this->AddedD[k] == 0.0)
-    {
-      this->AddedMask[k] = 0;
-      continue;
-    }
-    const double h = this->AddedH[k], d = this->AddedD[k];
-    for (std::uint64_t rest = static_cast<std::uint64_t>(this->AddedMask[k]); rest;
-         rest &= rest - 1)
-    {
-      const int i = __builtin_ctzll(rest);
-      const double along = this->AddedTx[k] * table.Cos[i] + this->AddedTy[k] * table.Sin[i];
-      binning::AddToRecord(this->RareRecords[i].data(), h, d, along);
-    }
-  }
-  this->NumberOfSlots = first + count;
-  this->NumberOfAdded += count - block.AtQueryPoint;
 }
 
 void PointCurvatureEstimator::SumBanks()
 {
-  constexpr std::size_t BankStride = binning::RecordsPerBank * binning::RecordSize;
+  double totals[NumberOfDirections * binning::RecordSize];
+  binning::CombineBanks(this->Banks.data(), totals);
   for (int i = 0; i < NumberOfDirections; ++i)
   {
-    // Banks in a fixed order, then the rare neighbours: the sums depend on
-    // nothing but the order of the neighbours. Field by field (the loop
-    // over the eight fields vectorises).
-    const double* r = this->Banks.data() + i * binning::RecordSize;
-    const double* rare = this->RareRecords[i].data();
-    double total[binning::RecordSize];
-    for (int f = 0; f < binning::RecordSize; ++f)
-    {
-      total[f] = ((r[f] + r[BankStride + f]) + (r[2 * BankStride + f] + r[3 * BankStride + f])) +
-        ((r[4 * BankStride + f] + r[5 * BankStride + f]) +
-          (r[6 * BankStride + f] + r[7 * BankStride + f])) +
-        rare[f];
-    }
-    double extent = rare[binning::Extent];
-    for (int bank = 0; bank < binning::NumberOfBanks; ++bank)
-    {
-      extent = std::max(extent, r[bank * BankStride + binning::Extent]);
-    }
+    const double* total = totals + i * binning::RecordSize;
     CgaSums& sums = this->Sums[i];
     sums.SumH2 = total[binning::SumH2];
     sums.SumH = total[binning::SumH];
@@ -580,7 +513,7 @@ void PointCurvatureEstimator::SumBanks()
     sums.SumD = total[binning::SumD];
     sums.SumD2 = total[binning::SumD2];
     sums.Count = static_cast<int>(total[binning::Count]);
-    sums.Extent = extent;
+    sums.Extent = total[binning::Extent];
   }
 }
 

@@ -243,9 +243,6 @@ public:
 private:
   /// Makes room for `neighbors` neighbours in all, keeping those added.
   void Reserve(std::size_t neighbors);
-  /// Adds the block's rare neighbours (those binning::Classify left to the
-  /// caller), stored from slot `first` on, to their directions' records.
-  void AddRareNeighbors(const binning::Block& block, std::size_t first, std::size_t count);
   /// The six sums of each direction from its banks and rare record.
   void SumBanks();
   void FitDirections(const FitSettings& settings);
@@ -266,15 +263,14 @@ private:
   std::vector<double> AddedH, AddedD, AddedTx, AddedTy;
   std::vector<std::int64_t> AddedMask;
 
-  /// The running sums: the banks the classification adds most neighbours
-  /// to (binning::Block), and one record per direction for the rare
-  /// neighbours, added in slot order. Adding each neighbour into sums
-  /// picked at run time made each add wait for the previous one's store
-  /// (36 ns per neighbour in the first version); direction lists summed
-  /// afterwards halved that; banks by slot, with a vector add per
+  /// The running sums the classification adds every neighbour to
+  /// (binning::Block): banks by slot for those in one half plane, one
+  /// record per direction for the rare others. Adding each neighbour into
+  /// sums picked at run time made each add wait for the previous one's
+  /// store (36 ns per neighbour in the first version); direction lists
+  /// summed afterwards halved that; banks by slot, with a vector add per
   /// neighbour, need no lists.
   std::vector<double> Banks;
-  std::array<std::array<double, binning::RecordSize>, NumberOfDirections> RareRecords{};
   binning::Block Binned;
 
   /// New02: each direction's heights and squared distances side by side.

@@ -8,6 +8,7 @@
 #pragma GCC optimize("fp-contract=off")
 #endif
 
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 #if defined(__SSE2__)
@@ -34,6 +35,7 @@ constexpr double CosQuarterPi = 0.70710678118654757; // cos(pi / 4) = sin(pi / 4
 using namespace binning;
 using ClassifyKernel =
   void (*)(const Frame&, const double*, const double*, const double*, std::size_t, Block&);
+using CombineKernel = void (*)(const double*, double*);
 using CircleKernel = void (*)(const double*, const double*, std::size_t, const double*, double*);
 using OrientedKernel = void (*)(const oriented::Frame&,
   const oriented::NeighborBatch&,
@@ -163,7 +165,18 @@ inline __attribute__((always_inline)) void Transpose(const __m512d field[8], __m
   }
 }
 
+/// One neighbour's record (h^2, h, h D, D, D^2, 1, along, -) added to a
+/// record of sums, the extent by a max: AddToRecord in one vector.
+inline __attribute__((always_inline)) void AddLaneToRecord(double* r, __m512d value)
+{
+  __m512d sums = _mm512_loadu_pd(r);
+  sums = _mm512_mask_add_pd(sums, 0x3f, sums, value);
+  sums = _mm512_mask_max_pd(sums, 0x40, sums, value);
+  _mm512_storeu_pd(r, sums);
+}
+
 inline __attribute__((always_inline)) __m512i ClassifyLanesAvx512(const Frame& f,
+  const DirectionTable& table,
   const double* dx,
   const double* dy,
   const double* dz,
@@ -263,9 +276,9 @@ inline __attribute__((always_inline)) __m512i ClassifyLanesAvx512(const Frame& f
   {
     mask = _mm512_mask_mov_epi64(mask, near, AllDirectionsAvx512(tx, ty, p));
   }
-  const __mmask8 rare = near | several;
+  const __mmask8 atQueryPoint = _mm512_cmp_pd_mask(d, _mm512_setzero_pd(), _CMP_EQ_OQ);
+  const __mmask8 rare = (near | several) & ~atQueryPoint;
   _mm512_storeu_si512(block.Mask + at, _mm512_maskz_mov_epi64(rare | keep, mask));
-  block.RareBits |= static_cast<std::uint64_t>(rare) << at;
 
   // The single-plane lanes into their banks: the eight records (h^2, h,
   // h D, D, D^2, 1, along, -) transposed to one vector per lane, each added
@@ -285,13 +298,23 @@ inline __attribute__((always_inline)) __m512i ClassifyLanesAvx512(const Frame& f
   for (int j = 0; j < 8; ++j)
   {
     const std::size_t bank = (block.FirstSlot + at + j) % NumberOfBanks;
-    double* r = block.Banks + (bank * RecordsPerBank + records[j]) * RecordSize;
-    __m512d sums = _mm512_loadu_pd(r);
-    sums = _mm512_mask_add_pd(sums, 0x3f, sums, lane[j]);
-    sums = _mm512_mask_max_pd(sums, 0x40, sums, lane[j]);
-    _mm512_storeu_pd(r, sums);
+    AddLaneToRecord(block.Banks + (bank * RecordsPerBank + records[j]) * RecordSize, lane[j]);
   }
-  return _mm512_maskz_mov_epi64(_mm512_cmp_pd_mask(d, _mm512_setzero_pd(), _CMP_EQ_OQ), one);
+  // The rare lanes, direction by direction, with the distance along each.
+  for (unsigned rest = rare; rest; rest &= rest - 1)
+  {
+    const int j = __builtin_ctz(rest);
+    const double tx = block.Tx[at + j], ty = block.Ty[at + j];
+    for (std::uint64_t directions = static_cast<std::uint64_t>(block.Mask[at + j]); directions;
+         directions &= directions - 1)
+    {
+      const int i = __builtin_ctzll(directions);
+      const double along = tx * table.Cos[i] + ty * table.Sin[i];
+      AddLaneToRecord(block.Banks + RareRecordsStart + i * RecordSize,
+        _mm512_mask_mov_pd(lane[j], 0x40, _mm512_set1_pd(along)));
+    }
+  }
+  return _mm512_maskz_mov_epi64(atQueryPoint, one);
 }
 #define PCURV_CLASSIFY_LANES ClassifyLanesAvx512
 
@@ -343,6 +366,7 @@ struct NamedKernel
 {
   const char* Name;
   ClassifyKernel Classify;
+  CombineKernel Combine;
   GatherKernel Gather;
   CircleKernel Circles;
   OrientedKernel Oriented;
@@ -353,6 +377,7 @@ std::vector<NamedKernel> Kernels()
 {
   std::vector<NamedKernel> kernels{ { "generic",
     &generic::ClassifyBlock,
+    &generic::CombineBanks,
     &GatherScalar,
     &generic::CircleDistanceSums,
     &generic::AddOrientedNeighbors<3>,
@@ -363,6 +388,7 @@ std::vector<NamedKernel> Kernels()
   {
     kernels.push_back({ "avx2",
       &avx2::ClassifyBlock,
+      &avx2::CombineBanks,
       &GatherScalar,
       &avx2::CircleDistanceSums,
       &avx2::AddOrientedNeighbors<3>,
@@ -373,6 +399,7 @@ std::vector<NamedKernel> Kernels()
   {
     kernels.push_back({ "avx512",
       &avx512::ClassifyBlock,
+      &avx512::CombineBanks,
       &avx512::Gather,
       &avx512::CircleDistanceSums,
       &avx512::AddOrientedNeighbors<3>,
@@ -421,6 +448,38 @@ const NamedKernel* Named(const std::string& name)
 
 namespace binning
 {
+const DirectionTable& Directions()
+{
+  static const DirectionTable table = []
+  {
+    constexpr double Pi = 3.14159265358979323846;
+    constexpr double DirectionStep = Pi / 8.0;
+    DirectionTable t;
+    for (int i = 0; i < NumberOfDirections; ++i)
+    {
+      t.Cos[i] = std::cos(i * DirectionStep);
+      t.Sin[i] = std::sin(i * DirectionStep);
+    }
+    return t;
+  }();
+  return table;
+}
+
+void CombineBanks(const double* banks, double* totals)
+{
+  Best().Combine(banks, totals);
+}
+
+bool CombineBanksWith(const std::string& kernel, const double* banks, double* totals)
+{
+  const NamedKernel* named = Named(kernel);
+  if (named)
+  {
+    named->Combine(banks, totals);
+  }
+  return named != nullptr;
+}
+
 void Classify(const Frame& frame,
   const double* dx,
   const double* dy,

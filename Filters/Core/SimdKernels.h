@@ -64,10 +64,14 @@ struct Frame
 /// direction, do not wait for each other's adds. A record holds, in this
 /// order, the sums of h^2, h, h D, D, D^2, the count, and the largest
 /// distance along the direction (the extent); record 16 of each bank takes
-/// the neighbours that are in no direction (a branch-free dead end).
+/// the neighbours that are in no direction (a branch-free dead end). After
+/// the eight banks come 16 more records, one per direction, for the rare
+/// neighbours in several half planes (or near the normal line), added in
+/// slot order.
 constexpr int NumberOfBanks = 8;
 constexpr int RecordsPerBank = 17;
 constexpr int RecordSize = 8;
+constexpr int NumberOfDirections = 16;
 enum Field : int
 {
   SumH2 = 0,
@@ -78,8 +82,19 @@ enum Field : int
   Count = 5,
   Extent = 6
 };
-constexpr std::size_t BankDoubles =
+constexpr std::size_t RareRecordsStart =
   static_cast<std::size_t>(NumberOfBanks) * RecordsPerBank * RecordSize;
+constexpr std::size_t BankDoubles =
+  RareRecordsStart + static_cast<std::size_t>(NumberOfDirections) * RecordSize;
+
+/// cos and sin of direction i's angle, i pi / 8: the one table the
+/// classification and the sine fit share.
+struct DirectionTable
+{
+  double Cos[NumberOfDirections];
+  double Sin[NumberOfDirections];
+};
+const DirectionTable& Directions();
 
 /// Adds one neighbour (height h, squared distance d, distance along the
 /// direction) to a record; the AVX-512 kernel does the same in one vector.
@@ -94,10 +109,28 @@ inline __attribute__((always_inline)) void AddToRecord(double* r, double h, doub
   r[Extent] = r[Extent] > along ? r[Extent] : along;
 }
 
+/// Adds a rare neighbour to the rare record of each direction it is in
+/// (bit i of `directions`), with its distance along that direction.
+inline __attribute__((always_inline)) void AddToRareRecords(double* rare,
+  const DirectionTable& table,
+  double h,
+  double d,
+  double tx,
+  double ty,
+  std::uint64_t directions)
+{
+  for (; directions; directions &= directions - 1)
+  {
+    const int i = __builtin_ctzll(directions);
+    AddToRecord(rare + i * RecordSize, h, d, tx * table.Cos[i] + ty * table.Sin[i]);
+  }
+}
+
 /// Where a block's results go. Per neighbour, at its slot: coordinates and
-/// the directions it is in (bit i: direction i). The neighbours in one
-/// half plane (most of them) are added to the banks here; the rare others
-/// (in several, or near the normal line) are marked for the caller to add.
+/// the directions it is in (bit i: direction i; none for a neighbour at the
+/// query point, where the plane tests mean nothing). Every neighbour is
+/// added to the sums: those in one half plane to the banks, the rare others
+/// to the rare records, direction by direction.
 struct Block
 {
   double* H = nullptr;  ///< height above the tangent plane
@@ -107,10 +140,6 @@ struct Block
   std::int64_t* Mask = nullptr; ///< directions of each neighbour
   double* Banks = nullptr;      ///< BankDoubles values
   std::size_t FirstSlot = 0;    ///< slot of the block's first neighbour
-  /// Bit j set for neighbour j when it is in several half planes or within
-  /// p / sin(pi / 4) of the normal line (8 % of them at p = s / 10): not
-  /// added to the banks.
-  std::uint64_t RareBits = 0;
   std::size_t AtQueryPoint = 0; ///< neighbours with squared distance 0
 };
 
@@ -132,6 +161,14 @@ bool ClassifyWith(const std::string& kernel,
   const double* dz,
   std::size_t count,
   Block& block);
+
+/// totals[i * RecordSize + f]: field f of direction i over the eight banks
+/// (added in a fixed pairwise order) and then its rare record; the extent
+/// is the largest of theirs. The same operations on every instruction set.
+void CombineBanks(const double* banks, double* totals);
+
+/// CombineBanks with a named kernel (for tests); false when not available.
+bool CombineBanksWith(const std::string& kernel, const double* banks, double* totals);
 
 } // namespace binning
 
