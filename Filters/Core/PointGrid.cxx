@@ -146,26 +146,64 @@ void PointGrid::Build(const double* coordinates, std::int64_t count, const GridL
       this->CellIndex(x[0], 0);
   }
   this->CellStart.Bucket(cellOf, numberOfCells, this->Ids);
-  // Within a cell, by coordinates: independent of the input's order.
-  auto before = [coordinates](std::int64_t a, std::int64_t b)
-  { return PrecedesInCell(coordinates, a, b); };
+  // The coordinates in cell order (one pass of scattered reads), then each
+  // cell sorted by coordinates, which makes the order independent of the
+  // input's: the cell's points copied side by side for the sort, whose
+  // comparisons would otherwise each read two scattered points.
+  for (int k = 0; k < 3; ++k)
+  {
+    this->Sorted[k].resize(count);
+  }
+  for (std::int64_t j = 0; j < count; ++j)
+  {
+    const double* x = coordinates + 3 * this->Ids[j];
+    for (int k = 0; k < 3; ++k)
+    {
+      this->Sorted[k][j] = x[k];
+    }
+  }
+  std::vector<CellEntry> cell;
   for (std::int64_t c = 0; c < numberOfCells; ++c)
   {
     if (this->CellStart[c + 1] - this->CellStart[c] > 1)
     {
-      std::sort(
-        this->Ids.begin() + this->CellStart[c], this->Ids.begin() + this->CellStart[c + 1], before);
-    }
-  }
-  for (int k = 0; k < 3; ++k)
-  {
-    this->Sorted[k].resize(count);
-    for (std::int64_t j = 0; j < count; ++j)
-    {
-      this->Sorted[k][j] = coordinates[3 * this->Ids[j] + k];
+      this->SortCell(this->CellStart[c], this->CellStart[c + 1], cell);
     }
   }
   this->BuildDenseCells(coordinates);
+}
+
+void PointGrid::SortCell(std::int64_t begin, std::int64_t end, std::vector<CellEntry>& cell)
+{
+  cell.resize(static_cast<std::size_t>(end - begin));
+  for (std::int64_t j = begin; j < end; ++j)
+  {
+    cell[j - begin] = { { this->Sorted[0][j], this->Sorted[1][j], this->Sorted[2][j] },
+      this->Ids[j] };
+  }
+  // PrecedesInCell's order: by x, y, z, identical points by index.
+  std::sort(cell.begin(),
+    cell.end(),
+    [](const CellEntry& a, const CellEntry& b)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        if (a.X[k] != b.X[k])
+        {
+          return a.X[k] < b.X[k];
+        }
+      }
+      return a.Id < b.Id;
+    });
+  for (std::int64_t j = begin; j < end; ++j)
+  {
+    const CellEntry& entry = cell[j - begin];
+    this->Ids[j] = entry.Id;
+    for (int k = 0; k < 3; ++k)
+    {
+      this->Sorted[k][j] = entry.X[k];
+    }
+  }
 }
 
 void PointGrid::BuildDenseCells(const double* coordinates)

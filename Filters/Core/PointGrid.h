@@ -276,6 +276,15 @@ private:
     std::int64_t First = 0, Starts = 0;
   };
 
+  /// A point of a cell being sorted: its coordinates and id.
+  struct CellEntry
+  {
+    double X[3];
+    std::int64_t Id;
+  };
+  /// Sorts entries [begin, end) of Ids and Sorted into PrecedesInCell's
+  /// order, through `cell` (scratch).
+  void SortCell(std::int64_t begin, std::int64_t end, std::vector<CellEntry>& cell);
   /// Finds the cells far denser than the median non-empty one and builds
   /// their finer cells.
   void BuildDenseCells(const double* coordinates);
