@@ -163,6 +163,13 @@ public:
       {
         return false;
       }
+      if (j + PrefetchDistance < count)
+      {
+        // In the grid's order the points are scattered in memory.
+        const std::int64_t ahead = pointAt(j + PrefetchDistance);
+        __builtin_prefetch(coordinates + 3 * ahead);
+        __builtin_prefetch(normals + 3 * ahead);
+      }
       const std::int64_t point = pointAt(j);
       if (!eligible(point))
       {
@@ -191,6 +198,8 @@ public:
 
   /// Points between two asks whether to go on.
   static constexpr std::int64_t CheckInterval = 1 << 16;
+  /// How many points ahead Build asks for a point's data.
+  static constexpr std::int64_t PrefetchDistance = 16;
 
   /// The anchor of the cell holding x, and of the 26 cells around it, in a
   /// fixed order (cells without anchors skipped), into `around` (which
