@@ -518,7 +518,7 @@ bool SameSums(const OrientedCircleSums& a, const OrientedCircleSums& b)
 void TestOrientedSumKernelsAgree(Checks& checks)
 {
   Random random(41);
-  long differences = 0, countsWrong = 0, partsDiffer = 0;
+  long differences = 0, countsWrong = 0, partsDiffer = 0, groupingDiffers = 0;
   double largestRelative = 0.0;
   for (int trial = 0; trial < 400; ++trial)
   {
@@ -563,6 +563,22 @@ void TestOrientedSumKernelsAgree(Checks& checks)
         decltype(reference) sums{};
         checks.True("oriented kernel runs", oriented::AddNeighborsWith(kernel, f, batch, sums));
         differences += std::memcmp(&sums, &reference, sizeof sums) == 0 ? 0 : 1;
+        // Eight at a time (one group per call, where whole batches take
+        // several groups per load of the sums): the same adds in the same
+        // order.
+        decltype(reference) byEights{};
+        for (std::size_t first = 0; first < count; first += 8)
+        {
+          const oriented::NeighborBatch eight{ batch.Dx + first,
+            batch.Dy + first,
+            batch.Dz + first,
+            batch.Nx + first,
+            batch.Ny + first,
+            batch.Nz + first,
+            std::min<std::size_t>(8, count - first) };
+          oriented::AddNeighborsWith(kernel, f, eight, byEights);
+        }
+        groupingDiffers += std::memcmp(&byEights, &reference, sizeof byEights) == 0 ? 0 : 1;
       }
     };
     agree(oriented::Sums{});
@@ -584,6 +600,7 @@ void TestOrientedSumKernelsAgree(Checks& checks)
     partsDiffer += SameSums(ThirdOrderPart(fourth.Sums()), third.Sums()) ? 0 : 1;
   }
   checks.Equal("oriented sums where a kernel differs from the generic one", differences, 0L);
+  checks.Equal("oriented sums differing when added eight at a time", groupingDiffers, 0L);
   checks.Equal("oriented sums' neighbour counts wrong", countsWrong, 0L);
   checks.Near("oriented sums against the rows one by one (relative)", largestRelative, 0.0, 1e-12);
   checks.Equal("third order's part of the fourth's sums differs from its own", partsDiffer, 0L);
