@@ -228,8 +228,13 @@ private:
     double inverseUnit,
     OrientedCircleAccumulatorOf<Order>& sums) const
   {
+    constexpr std::size_t Ahead = 16; // the normals are scattered in memory
     for (std::size_t i = 0; i < shell.Count; ++i)
     {
+      if (i + Ahead < shell.Count)
+      {
+        __builtin_prefetch(&this->Cloud.Normals[3 * shell.Ids[i + Ahead]]);
+      }
       const double d[3] = {
         shell.Dx[i] * inverseUnit, shell.Dy[i] * inverseUnit, shell.Dz[i] * inverseUnit
       };

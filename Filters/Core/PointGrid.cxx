@@ -389,9 +389,8 @@ std::size_t PointGrid::GatherShell(const double x[3],
     radius,
     [&](const CandidateRun& run)
     {
-      // Every candidate is written, at the first free place; only those in
-      // the shell advance it.
-      const std::size_t needed = out.Count + static_cast<std::size_t>(run.End - run.Begin);
+      const std::size_t needed =
+        out.Count + static_cast<std::size_t>(run.End - run.Begin) + gather::Padding;
       if (out.Dx.size() < needed)
       {
         const std::size_t size = std::max(needed, 2 * out.Dx.size());
@@ -401,17 +400,14 @@ std::size_t PointGrid::GatherShell(const double x[3],
         }
         out.Ids.resize(size);
       }
-      std::size_t kept = out.Count;
-      for (std::int64_t j = run.Begin; j < run.End; ++j)
-      {
-        const double dx = run.X[j] - x[0], dy = run.Y[j] - x[1], dz = run.Z[j] - x[2];
-        const double squared = dx * dx + dy * dy + dz * dz;
-        out.Dx[kept] = dx;
-        out.Dy[kept] = dy;
-        out.Dz[kept] = dz;
-        out.Ids[kept] = run.Ids[j];
-        kept += (squared >= innerSquared) & (squared < radiusSquared);
-      }
+      const std::size_t kept = gather::ShellWithin({ run.X, run.Y, run.Z, run.Ids },
+        run.Begin,
+        run.End,
+        x,
+        innerSquared,
+        radiusSquared,
+        { out.Dx.data(), out.Dy.data(), out.Dz.data(), out.Ids.data() },
+        out.Count);
       out.Count = kept;
     });
   return out.Count;

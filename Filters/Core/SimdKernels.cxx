@@ -358,9 +358,78 @@ std::size_t Gather(const double* x,
   }
   return kept;
 }
+
+/// The shell's gather eight candidates at a time, ids packed with the
+/// offsets. The same operations as GatherShellScalar.
+std::size_t GatherShell(const gather::Candidates& in,
+  std::int64_t begin,
+  std::int64_t end,
+  const double* query,
+  double innerSquared,
+  double radiusSquared,
+  const gather::Output& out,
+  std::size_t kept)
+{
+  const __m512d qx = _mm512_set1_pd(query[0]);
+  const __m512d qy = _mm512_set1_pd(query[1]);
+  const __m512d qz = _mm512_set1_pd(query[2]);
+  const __m512d lower = _mm512_set1_pd(innerSquared);
+  const __m512d limit = _mm512_set1_pd(radiusSquared);
+  for (std::int64_t j = begin; j < end; j += 8)
+  {
+    const __mmask8 valid =
+      end - j >= 8 ? __mmask8(0xff) : static_cast<__mmask8>((1u << (end - j)) - 1u);
+    const __m512d ox = _mm512_sub_pd(_mm512_maskz_loadu_pd(valid, in.X + j), qx);
+    const __m512d oy = _mm512_sub_pd(_mm512_maskz_loadu_pd(valid, in.Y + j), qy);
+    const __m512d oz = _mm512_sub_pd(_mm512_maskz_loadu_pd(valid, in.Z + j), qz);
+    const __m512d squared = _mm512_add_pd(
+      _mm512_add_pd(_mm512_mul_pd(ox, ox), _mm512_mul_pd(oy, oy)), _mm512_mul_pd(oz, oz));
+    const __mmask8 inside = _mm512_mask_cmp_pd_mask(valid, squared, lower, _CMP_GE_OQ) &
+      _mm512_cmp_pd_mask(squared, limit, _CMP_LT_OQ);
+    _mm512_storeu_pd(out.Dx + kept, _mm512_maskz_compress_pd(inside, ox));
+    _mm512_storeu_pd(out.Dy + kept, _mm512_maskz_compress_pd(inside, oy));
+    _mm512_storeu_pd(out.Dz + kept, _mm512_maskz_compress_pd(inside, oz));
+    _mm512_storeu_si512(out.Ids + kept,
+      _mm512_maskz_compress_epi64(inside, _mm512_maskz_loadu_epi64(valid, in.Ids + j)));
+    kept += static_cast<std::size_t>(__builtin_popcount(inside));
+  }
+  return kept;
+}
 } // namespace avx512
 #pragma GCC pop_options
 #endif
+
+using ShellKernel = std::size_t (*)(const gather::Candidates&,
+  std::int64_t,
+  std::int64_t,
+  const double*,
+  double,
+  double,
+  const gather::Output&,
+  std::size_t);
+
+/// The shell's gather one candidate at a time, branch-free as GatherScalar.
+std::size_t GatherShellScalar(const gather::Candidates& in,
+  std::int64_t begin,
+  std::int64_t end,
+  const double* query,
+  double innerSquared,
+  double radiusSquared,
+  const gather::Output& out,
+  std::size_t kept)
+{
+  for (std::int64_t j = begin; j < end; ++j)
+  {
+    const double ox = in.X[j] - query[0], oy = in.Y[j] - query[1], oz = in.Z[j] - query[2];
+    const double squared = ox * ox + oy * oy + oz * oz;
+    out.Dx[kept] = ox;
+    out.Dy[kept] = oy;
+    out.Dz[kept] = oz;
+    out.Ids[kept] = in.Ids[j];
+    kept += (squared >= innerSquared) & (squared < radiusSquared);
+  }
+  return kept;
+}
 
 struct NamedKernel
 {
@@ -368,6 +437,7 @@ struct NamedKernel
   ClassifyKernel Classify;
   CombineKernel Combine;
   GatherKernel Gather;
+  ShellKernel Shell;
   CircleKernel Circles;
   OrientedKernel Oriented;
   QuarticKernel Quartic;
@@ -379,6 +449,7 @@ std::vector<NamedKernel> Kernels()
     &generic::ClassifyBlock,
     &generic::CombineBanks,
     &GatherScalar,
+    &GatherShellScalar,
     &generic::CircleDistanceSums,
     &generic::AddOrientedNeighbors<3>,
     &generic::AddOrientedNeighbors<4> } };
@@ -390,6 +461,7 @@ std::vector<NamedKernel> Kernels()
       &avx2::ClassifyBlock,
       &avx2::CombineBanks,
       &GatherScalar,
+      &GatherShellScalar,
       &avx2::CircleDistanceSums,
       &avx2::AddOrientedNeighbors<3>,
       &avx2::AddOrientedNeighbors<4> });
@@ -401,6 +473,7 @@ std::vector<NamedKernel> Kernels()
       &avx512::ClassifyBlock,
       &avx512::CombineBanks,
       &avx512::Gather,
+      &avx512::GatherShell,
       &avx512::CircleDistanceSums,
       &avx512::AddOrientedNeighbors<3>,
       &avx512::AddOrientedNeighbors<4> });
@@ -541,6 +614,39 @@ bool WithinRadiusWith(const std::string& kernel,
   if (named)
   {
     kept = named->Gather(x, y, z, begin, end, query, radiusSquared, dx, dy, dz, kept);
+  }
+  return named != nullptr;
+}
+} // namespace gather
+
+namespace gather
+{
+std::size_t ShellWithin(const Candidates& in,
+  std::int64_t begin,
+  std::int64_t end,
+  const double query[3],
+  double innerSquared,
+  double radiusSquared,
+  const Output& out,
+  std::size_t kept)
+{
+  return Best().Shell(in, begin, end, query, innerSquared, radiusSquared, out, kept);
+}
+
+bool ShellWithinWith(const std::string& kernel,
+  const Candidates& in,
+  std::int64_t begin,
+  std::int64_t end,
+  const double query[3],
+  double innerSquared,
+  double radiusSquared,
+  const Output& out,
+  std::size_t& kept)
+{
+  const NamedKernel* named = Named(kernel);
+  if (named)
+  {
+    kept = named->Shell(in, begin, end, query, innerSquared, radiusSquared, out, kept);
   }
   return named != nullptr;
 }

@@ -208,6 +208,49 @@ bool WithinRadiusWith(const std::string& kernel,
   double* dy,
   double* dz,
   std::size_t& kept);
+
+/// Candidate points: coordinate arrays and their ids.
+struct Candidates
+{
+  const double* X;
+  const double* Y;
+  const double* Z;
+  const std::int64_t* Ids;
+};
+
+/// Where gathered points go: offsets and ids (each with Padding entries of
+/// room beyond the last candidate).
+struct Output
+{
+  double* Dx;
+  double* Dy;
+  double* Dz;
+  std::int64_t* Ids;
+};
+
+/// The candidates begin..end - 1 whose squared distance to `query`
+/// (computed as in WithinRadius) is at least innerSquared and below
+/// radiusSquared: offsets and ids appended in order from entry `kept` of
+/// `out`. Returns the new count.
+std::size_t ShellWithin(const Candidates& in,
+  std::int64_t begin,
+  std::int64_t end,
+  const double query[3],
+  double innerSquared,
+  double radiusSquared,
+  const Output& out,
+  std::size_t kept);
+
+/// ShellWithin with a named kernel (for tests); false when not available.
+bool ShellWithinWith(const std::string& kernel,
+  const Candidates& in,
+  std::int64_t begin,
+  std::int64_t end,
+  const double query[3],
+  double innerSquared,
+  double radiusSquared,
+  const Output& out,
+  std::size_t& kept);
 } // namespace gather
 
 namespace circles

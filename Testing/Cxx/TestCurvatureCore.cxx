@@ -253,6 +253,94 @@ void TestCombineKernelsAgree(Checks& checks)
   checks.Equal("combined banks differing from the documented order", differences, 0L);
 }
 
+/// The shell gather kernels: the same points, offsets, ids and count as
+/// the generic one, for runs of every length, points exactly on either
+/// sphere (the inner one's are in the shell, the outer one's are not) and
+/// non-finite coordinates; and the generic one keeps exactly the points of
+/// the shell.
+void TestShellGatherKernelsAgree(Checks& checks)
+{
+  Random random(37);
+  const std::size_t points = 4000;
+  std::vector<double> x(points), y(points), z(points);
+  std::vector<std::int64_t> ids(points);
+  for (std::size_t j = 0; j < points; ++j)
+  {
+    x[j] = 2.0 * random.Uniform() - 1.0;
+    y[j] = 2.0 * random.Uniform() - 1.0;
+    z[j] = 2.0 * random.Uniform() - 1.0;
+    ids[j] = static_cast<std::int64_t>(7 * j + 3);
+    if (j % 97 == 0)
+    {
+      x[j] = j % 2 ? 0.5 : 0.25; // on the outer or the inner sphere
+      y[j] = z[j] = 0.0;
+    }
+    if (j % 389 == 0)
+    {
+      z[j] = std::numeric_limits<double>::quiet_NaN();
+    }
+  }
+  const gather::Candidates in{ x.data(), y.data(), z.data(), ids.data() };
+  const double query[3] = { 0.0, 0.0, 0.0 };
+  long differences = 0, wrongMembers = 0;
+  constexpr std::size_t Room = 64 + gather::Padding;
+  struct Gathered
+  {
+    std::vector<double> Dx = std::vector<double>(Room, -1.0), Dy = Dx, Dz = Dx;
+    std::vector<std::int64_t> Ids = std::vector<std::int64_t>(Room, -1);
+    gather::Output Out()
+    {
+      return { this->Dx.data(), this->Dy.data(), this->Dz.data(), this->Ids.data() };
+    }
+  };
+  for (int trial = 0; trial < 2000; ++trial)
+  {
+    const std::int64_t begin = static_cast<std::int64_t>(random.Uniform() * 3900);
+    const std::int64_t end = begin + trial % 40;
+    const double innerSquared = trial % 3 == 0 ? 0.0625 : 0.3 * random.Uniform();
+    const double radiusSquared = trial % 3 == 0 ? 0.25 : innerSquared + random.Uniform();
+    Gathered reference;
+    std::size_t keptReference = 3; // appended after three earlier entries
+    gather::ShellWithinWith("generic",
+      in,
+      begin,
+      end,
+      query,
+      innerSquared,
+      radiusSquared,
+      reference.Out(),
+      keptReference);
+    std::size_t expected = 3;
+    for (std::int64_t j = begin; j < end; ++j)
+    {
+      const double squared = x[j] * x[j] + y[j] * y[j] + z[j] * z[j];
+      if (squared >= innerSquared && squared < radiusSquared)
+      {
+        wrongMembers += reference.Ids[expected] == ids[j] ? 0 : 1;
+        ++expected;
+      }
+    }
+    wrongMembers += expected == keptReference ? 0 : 1;
+    for (const std::string& kernel : AvailableKernels())
+    {
+      Gathered out;
+      std::size_t kept = 3;
+      checks.True("shell kernel runs",
+        gather::ShellWithinWith(
+          kernel, in, begin, end, query, innerSquared, radiusSquared, out.Out(), kept));
+      const std::size_t n = (kept - 3) * sizeof(double);
+      const bool same = kept == keptReference &&
+        std::memcmp(out.Dx.data() + 3, reference.Dx.data() + 3, n) == 0 &&
+        std::memcmp(out.Dy.data() + 3, reference.Dy.data() + 3, n) == 0 &&
+        std::memcmp(out.Dz.data() + 3, reference.Dz.data() + 3, n) == 0 &&
+        std::memcmp(out.Ids.data() + 3, reference.Ids.data() + 3, n) == 0;
+      differences += same ? 0 : 1;
+    }
+  }
+  checks.Equal("shell gathers where a kernel differs from the generic one", differences, 0L);
+  checks.Equal("shell gathers keeping other points than the shell's", wrongMembers, 0L);
+}
+
 /// The gather kernels: the same points, offsets and count as the generic
 /// one, for runs of every length (whole vectors and tails), points exactly
 /// on the sphere and non-finite coordinates.
@@ -968,6 +1056,7 @@ int main()
   TestBinningKernelsAgree(checks);
   TestCombineKernelsAgree(checks);
   TestGatherKernelsAgree(checks);
+  TestShellGatherKernelsAgree(checks);
   TestCircleDistanceKernelsAgree(checks);
   TestOrientedSumKernelsAgree(checks);
   TestOffsetsEqualCoordinates(checks);
