@@ -122,6 +122,42 @@ public:
     return x;
   }
 
+  /// Solve for K right-hand sides at once, x[i][c] the i-th entry of the
+  /// c-th: each column takes Solve's operations in Solve's order (the same
+  /// bits), the columns side by side keep the processor busy where one
+  /// column's substitutions wait for each other.
+  template<int K>
+  void SolveColumns(double (&x)[N][K]) const
+  {
+    for (int i = 0; i < N; ++i)
+    {
+      for (int k = 0; k < i; ++k)
+      {
+        for (int c = 0; c < K; ++c)
+        {
+          x[i][c] -= this->L[i][k] * x[k][c];
+        }
+      }
+    }
+    for (int i = 0; i < N; ++i)
+    {
+      for (int c = 0; c < K; ++c)
+      {
+        x[i][c] /= this->D[i];
+      }
+    }
+    for (int i = N - 1; i >= 0; --i)
+    {
+      for (int k = i + 1; k < N; ++k)
+      {
+        for (int c = 0; c < K; ++c)
+        {
+          x[i][c] -= this->L[k][i] * x[k][c];
+        }
+      }
+    }
+  }
+
 private:
   // Factor writes every entry it and Solve read (L below the diagonal).
   double L[N][N];
@@ -153,15 +189,31 @@ Solution<N> Solve(const Matrix<N>& normal, const Vector<N>& right, bool withInve
   {
     return solution;
   }
-  solution.X = unscale.cwiseProduct(ldlt.Solve(unscale.cwiseProduct(right)));
-  if (withInverse)
+  if (!withInverse)
   {
-    // Only C, A and B's covariance is wanted: three columns, not N.
-    for (int c = 0; c < 3; ++c)
+    solution.X = unscale.cwiseProduct(ldlt.Solve(unscale.cwiseProduct(right)));
+  }
+  else
+  {
+    // The unknowns and C, A and B's covariance (three columns of the
+    // inverse, not N) in one pass.
+    double columns[N][4];
+    for (int i = 0; i < N; ++i)
     {
-      Vector<N> unit = Vector<N>::Zero();
-      unit[c] = unscale[c];
-      solution.Inverse.col(c) = unscale.cwiseProduct(ldlt.Solve(unit));
+      columns[i][0] = unscale[i] * right[i];
+      for (int c = 0; c < 3; ++c)
+      {
+        columns[i][1 + c] = i == c ? unscale[c] : 0.0;
+      }
+    }
+    ldlt.SolveColumns(columns);
+    for (int i = 0; i < N; ++i)
+    {
+      solution.X[i] = unscale[i] * columns[i][0];
+      for (int c = 0; c < 3; ++c)
+      {
+        solution.Inverse(i, c) = unscale[i] * columns[i][1 + c];
+      }
     }
   }
   solution.Valid = solution.X.allFinite() && solution.Inverse.allFinite();
