@@ -154,8 +154,13 @@ void PointGrid::Build(const double* coordinates, std::int64_t count, const GridL
   {
     this->Sorted[k].resize(count);
   }
+  constexpr std::int64_t Ahead = 16;
   for (std::int64_t j = 0; j < count; ++j)
   {
+    if (j + Ahead < count)
+    {
+      __builtin_prefetch(coordinates + 3 * this->Ids[j + Ahead]);
+    }
     const double* x = coordinates + 3 * this->Ids[j];
     for (int k = 0; k < 3; ++k)
     {

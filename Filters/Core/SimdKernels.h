@@ -3,16 +3,17 @@
  * @brief The innermost loops, with SIMD chosen at run time (no VTK): which
  * of the 16 half planes each neighbour of a query point falls into
  * (binning), which points of a run of grid cells lie within the radius
- * (gather), New02's summed distances to its two circles (circles), and the
- * least-squares sums of OrientedCircles' rows (oriented).
+ * or a shell (gather), New02's summed distances to its two circles
+ * (circles), and the least-squares sums of OrientedCircles' rows
+ * (oriented).
  *
  * Binning is the innermost loop of the method: about 375 neighbours per point,
  * each put into its tangent frame, tested against the half planes and added
  * to its direction's sums. Done one neighbour at a time it cost about 100
  * scalar instructions and 60 % of the filter's time; here the frame
  * coordinates and the tests run on several neighbours at once (2 lanes with
- * SSE2, 4 with AVX2, 8 with AVX-512), and with AVX-512 the sums too; only
- * the rare neighbours in several half planes stay scalar.
+ * SSE2, 4 with AVX2, 8 with AVX-512), and with AVX-512 the sums too (the
+ * rare neighbours in several half planes one direction at a time).
  *
  * Every instruction set computes the same IEEE operations in the same order,
  * without fused multiply-adds (the file turns contraction off): results are
