@@ -397,7 +397,10 @@ std::uint32_t PointCurvatureEstimator::DirectionMask(double tx, double ty, doubl
   // The filter's own classification, in the frame where the tangent
   // coordinates are the offsets themselves.
   const binning::Frame identity{ { 0.0, 0.0, 1.0 }, { 1.0, 0.0, 0.0 }, { 0.0, 1.0, 0.0 }, 1.0, p };
-  const double zero = 0.0;
+  // A height off the tangent plane, which the plane tests ignore: the
+  // neighbour is never taken for the query point itself, however small t
+  // (its squared length may underflow to 0).
+  const double height = 1.0;
   double h[1 + binning::Padding], d[1 + binning::Padding];
   double x[1 + binning::Padding], y[1 + binning::Padding];
   std::int64_t mask[1 + binning::Padding];
@@ -410,7 +413,7 @@ std::uint32_t PointCurvatureEstimator::DirectionMask(double tx, double ty, doubl
   block.Ty = y;
   block.Mask = mask;
   block.Banks = banks.data();
-  binning::Classify(identity, &tx, &ty, &zero, 1, block);
+  binning::Classify(identity, &tx, &ty, &height, 1, block);
   return static_cast<std::uint32_t>(mask[0]);
 }
 

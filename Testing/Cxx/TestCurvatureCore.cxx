@@ -38,6 +38,24 @@ void TestTangentFrame(Checks& checks)
   }
 }
 
+/// The definition's 16-plane test: direction i holds t when t . v_i > 0
+/// and |t . (n x v_i)| < p.
+std::uint32_t PlaneTestMask(double tx, double ty, double p)
+{
+  std::uint32_t mask = 0;
+  for (int i = 0; i < NumberOfDirections; ++i)
+  {
+    const double theta = i * 3.14159265358979323846 / 8.0;
+    const double along = tx * std::cos(theta) + ty * std::sin(theta);
+    const double across = -tx * std::sin(theta) + ty * std::cos(theta);
+    if (along > 0.0 && std::fabs(across) < p)
+    {
+      mask |= 1u << i;
+    }
+  }
+  return mask;
+}
+
 /// The polar-angle binning must give exactly the directions of the plain
 /// 16-plane test of the definition.
 void TestDirectionMaskMatchesPlaneTest(Checks& checks)
@@ -49,20 +67,14 @@ void TestDirectionMaskMatchesPlaneTest(Checks& checks)
     const double tx = 2.0 * random.Uniform() - 1.0;
     const double ty = 2.0 * random.Uniform() - 1.0;
     const double p = 0.3 * random.Uniform() * random.Uniform();
-    std::uint32_t expected = 0;
-    for (int i = 0; i < NumberOfDirections; ++i)
-    {
-      const double theta = i * 3.14159265358979323846 / 8.0;
-      const double along = tx * std::cos(theta) + ty * std::sin(theta);
-      const double across = -tx * std::sin(theta) + ty * std::cos(theta);
-      if (along > 0.0 && std::fabs(across) < p)
-      {
-        expected |= 1u << i;
-      }
-    }
-    mismatches += PointCurvatureEstimator::DirectionMask(tx, ty, p) != expected;
+    mismatches += PointCurvatureEstimator::DirectionMask(tx, ty, p) != PlaneTestMask(tx, ty, p);
   }
   checks.Equal("direction mask mismatches", mismatches, 0);
+  // Tangent coordinates whose squares underflow to 0 (found by fuzzing):
+  // not the query point, but a point in the eight half planes facing it.
+  checks.Equal("point whose squared distance underflows",
+    static_cast<int>(PointCurvatureEstimator::DirectionMask(1e-170, 1e-171, 1e-150)),
+    static_cast<int>(PlaneTestMask(1e-170, 1e-171, 1e-150)));
   checks.Equal("point on the normal line has no direction",
     static_cast<int>(PointCurvatureEstimator::DirectionMask(0.0, 0.0, 0.1)),
     0);
