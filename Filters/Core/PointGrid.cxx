@@ -408,9 +408,7 @@ std::size_t PointGrid::GatherShell(const double x[3],
       const std::size_t kept = gather::ShellWithin({ run.X, run.Y, run.Z, run.Ids },
         run.Begin,
         run.End,
-        x,
-        innerSquared,
-        radiusSquared,
+        { x, innerSquared, radiusSquared },
         { out.Dx.data(), out.Dy.data(), out.Dz.data(), out.Ids.data() },
         out.Count);
       out.Count = kept;

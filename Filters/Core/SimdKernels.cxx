@@ -364,17 +364,15 @@ std::size_t Gather(const double* x,
 std::size_t GatherShell(const gather::Candidates& in,
   std::int64_t begin,
   std::int64_t end,
-  const double* query,
-  double innerSquared,
-  double radiusSquared,
+  const gather::Shell& shell,
   const gather::Output& out,
   std::size_t kept)
 {
-  const __m512d qx = _mm512_set1_pd(query[0]);
-  const __m512d qy = _mm512_set1_pd(query[1]);
-  const __m512d qz = _mm512_set1_pd(query[2]);
-  const __m512d lower = _mm512_set1_pd(innerSquared);
-  const __m512d limit = _mm512_set1_pd(radiusSquared);
+  const __m512d qx = _mm512_set1_pd(shell.Query[0]);
+  const __m512d qy = _mm512_set1_pd(shell.Query[1]);
+  const __m512d qz = _mm512_set1_pd(shell.Query[2]);
+  const __m512d lower = _mm512_set1_pd(shell.InnerSquared);
+  const __m512d limit = _mm512_set1_pd(shell.RadiusSquared);
   for (std::int64_t j = begin; j < end; j += 8)
   {
     const __mmask8 valid =
@@ -402,9 +400,7 @@ std::size_t GatherShell(const gather::Candidates& in,
 using ShellKernel = std::size_t (*)(const gather::Candidates&,
   std::int64_t,
   std::int64_t,
-  const double*,
-  double,
-  double,
+  const gather::Shell&,
   const gather::Output&,
   std::size_t);
 
@@ -412,12 +408,11 @@ using ShellKernel = std::size_t (*)(const gather::Candidates&,
 std::size_t GatherShellScalar(const gather::Candidates& in,
   std::int64_t begin,
   std::int64_t end,
-  const double* query,
-  double innerSquared,
-  double radiusSquared,
+  const gather::Shell& shell,
   const gather::Output& out,
   std::size_t kept)
 {
+  const double* query = shell.Query;
   for (std::int64_t j = begin; j < end; ++j)
   {
     const double ox = in.X[j] - query[0], oy = in.Y[j] - query[1], oz = in.Z[j] - query[2];
@@ -426,7 +421,7 @@ std::size_t GatherShellScalar(const gather::Candidates& in,
     out.Dy[kept] = oy;
     out.Dz[kept] = oz;
     out.Ids[kept] = in.Ids[j];
-    kept += (squared >= innerSquared) & (squared < radiusSquared);
+    kept += (squared >= shell.InnerSquared) & (squared < shell.RadiusSquared);
   }
   return kept;
 }
@@ -617,36 +612,29 @@ bool WithinRadiusWith(const std::string& kernel,
   }
   return named != nullptr;
 }
-} // namespace gather
 
-namespace gather
-{
 std::size_t ShellWithin(const Candidates& in,
   std::int64_t begin,
   std::int64_t end,
-  const double query[3],
-  double innerSquared,
-  double radiusSquared,
+  const Shell& shell,
   const Output& out,
   std::size_t kept)
 {
-  return Best().Shell(in, begin, end, query, innerSquared, radiusSquared, out, kept);
+  return Best().Shell(in, begin, end, shell, out, kept);
 }
 
 bool ShellWithinWith(const std::string& kernel,
   const Candidates& in,
   std::int64_t begin,
   std::int64_t end,
-  const double query[3],
-  double innerSquared,
-  double radiusSquared,
+  const Shell& shell,
   const Output& out,
   std::size_t& kept)
 {
   const NamedKernel* named = Named(kernel);
   if (named)
   {
-    kept = named->Shell(in, begin, end, query, innerSquared, radiusSquared, out, kept);
+    kept = named->Shell(in, begin, end, shell, out, kept);
   }
   return named != nullptr;
 }

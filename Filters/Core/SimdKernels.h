@@ -229,16 +229,22 @@ struct Output
   std::int64_t* Ids;
 };
 
-/// The candidates begin..end - 1 whose squared distance to `query`
-/// (computed as in WithinRadius) is at least innerSquared and below
-/// radiusSquared: offsets and ids appended in order from entry `kept` of
-/// `out`. Returns the new count.
+/// A shell about a query point: the squared distances from innerSquared
+/// (included) to radiusSquared (excluded).
+struct Shell
+{
+  const double* Query;
+  double InnerSquared;
+  double RadiusSquared;
+};
+
+/// The candidates begin..end - 1 in `shell` (their squared distance
+/// computed as in WithinRadius): offsets and ids appended in order from
+/// entry `kept` of `out`. Returns the new count.
 std::size_t ShellWithin(const Candidates& in,
   std::int64_t begin,
   std::int64_t end,
-  const double query[3],
-  double innerSquared,
-  double radiusSquared,
+  const Shell& shell,
   const Output& out,
   std::size_t kept);
 
@@ -247,9 +253,7 @@ bool ShellWithinWith(const std::string& kernel,
   const Candidates& in,
   std::int64_t begin,
   std::int64_t end,
-  const double query[3],
-  double innerSquared,
-  double radiusSquared,
+  const Shell& shell,
   const Output& out,
   std::size_t& kept);
 } // namespace gather

@@ -313,15 +313,8 @@ void TestShellGatherKernelsAgree(Checks& checks)
     const double radiusSquared = trial % 3 == 0 ? 0.25 : innerSquared + random.Uniform();
     Gathered reference;
     std::size_t keptReference = 3; // appended after three earlier entries
-    gather::ShellWithinWith("generic",
-      in,
-      begin,
-      end,
-      query,
-      innerSquared,
-      radiusSquared,
-      reference.Out(),
-      keptReference);
+    const gather::Shell shell{ query, innerSquared, radiusSquared };
+    gather::ShellWithinWith("generic", in, begin, end, shell, reference.Out(), keptReference);
     std::size_t expected = 3;
     for (std::int64_t j = begin; j < end; ++j)
     {
@@ -338,8 +331,7 @@ void TestShellGatherKernelsAgree(Checks& checks)
       Gathered out;
       std::size_t kept = 3;
       checks.True("shell kernel runs",
-        gather::ShellWithinWith(
-          kernel, in, begin, end, query, innerSquared, radiusSquared, out.Out(), kept));
+        gather::ShellWithinWith(kernel, in, begin, end, shell, out.Out(), kept));
       const std::size_t n = (kept - 3) * sizeof(double);
       const bool same = kept == keptReference &&
         std::memcmp(out.Dx.data() + 3, reference.Dx.data() + 3, n) == 0 &&
