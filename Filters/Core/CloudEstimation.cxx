@@ -13,6 +13,8 @@ namespace pcurv
 namespace
 {
 constexpr double NaN = std::numeric_limits<double>::quiet_NaN();
+/// Points (or cells) per range of a parallel grid build.
+constexpr std::int64_t GridBuildGrain = 1 << 15;
 
 /// The adjustment's target counts within [1, 1e6] (NaN: 1): a count outside
 /// it has no meaning, and beyond the int range it could not be reported in
@@ -60,8 +62,10 @@ NeighborhoodRule ChooseThresholds(const EstimationSettings& settings,
   const Collectives& processes,
   const CloudBoxes& boxes,
   const WorkingUnit& unit,
+  WorkRunner& runner,
   EstimationSummary& summary)
 {
+  const ParallelRanges ranges = RangesOf(runner, GridBuildGrain);
   NeighborhoodRule rule;
   rule.KNearest = settings.Neighborhood == NeighborhoodMode::KNearest;
   rule.K = settings.NumberOfNeighbors;
@@ -74,7 +78,7 @@ NeighborhoodRule ChooseThresholds(const EstimationSettings& settings,
   {
     rule.AutomaticScale = true;
     rule.Automatic.Tolerance = settings.AutomaticScaleTolerance;
-    const double base = TypicalRadius(cloud, processes, boxes, rule.Automatic.BaseCount);
+    const double base = TypicalRadius(cloud, processes, boxes, rule.Automatic.BaseCount, ranges);
     rule.Automatic.LargestRadius = base * std::pow(2.0, 0.5 * (rule.Automatic.Levels - 1));
     rule.Automatic.TypicalRadius = base;
     rule.Radius = base; // reported as the used s: the typical first radius
@@ -106,7 +110,7 @@ NeighborhoodRule ChooseThresholds(const EstimationSettings& settings,
   const bool needsTypicalRadius =
     rule.Adjusted ? settings.AutomaticLengthUnit : (settings.AutomaticThresholds || rule.KNearest);
   const double typicalRadius =
-    needsTypicalRadius ? TypicalRadius(cloud, processes, boxes, typicalCount) : 0.0;
+    needsTypicalRadius ? TypicalRadius(cloud, processes, boxes, typicalCount, ranges) : 0.0;
   rule.CellRadius = typicalRadius;
   if (rule.Adjusted)
   {
@@ -363,7 +367,10 @@ bool EstimateEveryPoint(CloudPoints cloud,
     RemoveRepeatedHalo(cloud);
   }
   PointGrid grid;
-  grid.Build(cloud.Coordinates.data(), cloud.GetNumberOfPoints(), lattice);
+  grid.Build(cloud.Coordinates.data(),
+    cloud.GetNumberOfPoints(),
+    lattice,
+    RangesOf(run.Runner, GridBuildGrain));
   ProcessingOrder order;
   if (rule.Adjusted)
   {
@@ -467,7 +474,8 @@ EstimationSummary EstimateCloud(CloudPoints cloud,
     }
   }
   const CloudBoxes boxes = MeasureBoxes(cloud, processes);
-  NeighborhoodRule rule = ChooseThresholds(settings, cloud, processes, boxes, unit, summary);
+  NeighborhoodRule rule =
+    ChooseThresholds(settings, cloud, processes, boxes, unit, runner, summary);
   SummarizeThresholds(rule, unit, summary);
   if (!ContinueBetweenSteps(monitor, normalsShare, processes))
   {

@@ -661,7 +661,8 @@ GridLattice GlobalLattice(const CloudBoxes& boxes, double radius)
 double TypicalRadius(const CloudPoints& cloud,
   const Collectives& processes,
   const CloudBoxes& boxes,
-  int k)
+  int k,
+  const ParallelRanges& ranges)
 {
   const std::int64_t globalCount = boxes.GlobalCount;
   if (globalCount < 2)
@@ -691,7 +692,7 @@ double TypicalRadius(const CloudPoints& cloud,
   std::vector<double> scratch;
   auto sampleRadii = [&](const CloudPoints& searched)
   {
-    grid.Build(searched.Coordinates.data(), searched.GetNumberOfPoints(), lattice);
+    grid.Build(searched.Coordinates.data(), searched.GetNumberOfPoints(), lattice, ranges);
     std::vector<double> radii;
     for (const std::int64_t i : sample)
     {

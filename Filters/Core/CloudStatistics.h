@@ -181,11 +181,13 @@ bool InSpacingSample(const double x[3],
 /// Median over the global sample of the distance to the k-th nearest other
 /// point: a radius holding about k neighbours at a typical point. When
 /// distributed, the sample's queries also see a halo of the other pieces
-/// (on a copy: `cloud` is not changed).
+/// (on a copy: `cloud` is not changed). The grid it searches is built in
+/// `ranges` where given.
 double TypicalRadius(const CloudPoints& cloud,
   const Collectives& processes,
   const CloudBoxes& boxes,
-  int k);
+  int k,
+  const ParallelRanges& ranges = nullptr);
 
 /// The lattice every process uses for a query radius: the grid box and the
 /// global count, cells of half the radius (a query then visits at most

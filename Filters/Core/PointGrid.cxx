@@ -94,8 +94,24 @@ void CellStarts::Clear()
   this->Starts.Assign(2, 0, 0);
 }
 
-void PointGrid::Build(const double* coordinates, std::int64_t count, const GridLattice& lattice)
+void PointGrid::Build(const double* coordinates,
+  std::int64_t count,
+  const GridLattice& lattice,
+  const ParallelRanges& ranges)
 {
+  // Each range writes entries of its own: the same grid on any number of
+  // threads.
+  const auto inRanges = [&ranges](std::int64_t n, const RangeWork& work)
+  {
+    if (ranges)
+    {
+      ranges(n, work);
+    }
+    else
+    {
+      work(0, n);
+    }
+  };
   this->Lattice = lattice;
   this->Ids.clear();
   for (std::vector<double>& axis : this->Sorted)
@@ -138,13 +154,17 @@ void PointGrid::Build(const double* coordinates, std::int64_t count, const GridL
   const std::int64_t numberOfCells =
     this->Dimensions[0] * this->Dimensions[1] * this->Dimensions[2];
   std::vector<std::int64_t> cellOf(count);
-  for (std::int64_t i = 0; i < count; ++i)
-  {
-    const double* x = coordinates + 3 * i;
-    cellOf[i] = (this->CellIndex(x[2], 2) * this->Dimensions[1] + this->CellIndex(x[1], 1)) *
-        this->Dimensions[0] +
-      this->CellIndex(x[0], 0);
-  }
+  inRanges(count,
+    [&](std::int64_t begin, std::int64_t end)
+    {
+      for (std::int64_t i = begin; i < end; ++i)
+      {
+        const double* x = coordinates + 3 * i;
+        cellOf[i] = (this->CellIndex(x[2], 2) * this->Dimensions[1] + this->CellIndex(x[1], 1)) *
+            this->Dimensions[0] +
+          this->CellIndex(x[0], 0);
+      }
+    });
   this->CellStart.Bucket(cellOf, numberOfCells, this->Ids);
   // The coordinates in cell order (one pass of scattered reads), then each
   // cell sorted by coordinates, which makes the order independent of the
@@ -154,27 +174,35 @@ void PointGrid::Build(const double* coordinates, std::int64_t count, const GridL
   {
     this->Sorted[k].resize(count);
   }
-  constexpr std::int64_t Ahead = 16;
-  for (std::int64_t j = 0; j < count; ++j)
-  {
-    if (j + Ahead < count)
+  inRanges(count,
+    [&](std::int64_t begin, std::int64_t end)
     {
-      __builtin_prefetch(coordinates + 3 * this->Ids[j + Ahead]);
-    }
-    const double* x = coordinates + 3 * this->Ids[j];
-    for (int k = 0; k < 3; ++k)
+      constexpr std::int64_t Ahead = 16;
+      for (std::int64_t j = begin; j < end; ++j)
+      {
+        if (j + Ahead < end)
+        {
+          __builtin_prefetch(coordinates + 3 * this->Ids[j + Ahead]);
+        }
+        const double* x = coordinates + 3 * this->Ids[j];
+        for (int k = 0; k < 3; ++k)
+        {
+          this->Sorted[k][j] = x[k];
+        }
+      }
+    });
+  inRanges(numberOfCells,
+    [&](std::int64_t begin, std::int64_t end)
     {
-      this->Sorted[k][j] = x[k];
-    }
-  }
-  std::vector<CellEntry> cell;
-  for (std::int64_t c = 0; c < numberOfCells; ++c)
-  {
-    if (this->CellStart[c + 1] - this->CellStart[c] > 1)
-    {
-      this->SortCell(this->CellStart[c], this->CellStart[c + 1], cell);
-    }
-  }
+      std::vector<CellEntry> cell;
+      for (std::int64_t c = begin; c < end; ++c)
+      {
+        if (this->CellStart[c + 1] - this->CellStart[c] > 1)
+        {
+          this->SortCell(this->CellStart[c], this->CellStart[c + 1], cell);
+        }
+      }
+    });
   this->BuildDenseCells(coordinates);
 }
 

@@ -27,6 +27,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace pcurv
@@ -141,12 +142,23 @@ inline bool PrecedesInCell(const double* coordinates, std::int64_t a, std::int64
   return a < b;
 }
 
+/// Work on the items [begin, end) of a range.
+using RangeWork = std::function<void(std::int64_t begin, std::int64_t end)>;
+/// Calls the work on ranges that together cover [0, count) once, possibly
+/// on several threads at a time.
+using ParallelRanges = std::function<void(std::int64_t count, const RangeWork& work)>;
+
 class PointGrid
 {
 public:
   /// Builds the grid over `count` points (xyz triplets, all finite) on the
-  /// given lattice; only the cells spanned by these points are stored.
-  void Build(const double* coordinates, std::int64_t count, const GridLattice& lattice);
+  /// given lattice; only the cells spanned by these points are stored. Its
+  /// passes over the points and the cells run in `ranges` where given (the
+  /// same grid on any number of threads).
+  void Build(const double* coordinates,
+    std::int64_t count,
+    const GridLattice& lattice,
+    const ParallelRanges& ranges = nullptr);
 
   std::int64_t GetNumberOfPoints() const { return static_cast<std::int64_t>(this->Ids.size()); }
   double GetCellSize() const { return this->Lattice.CellSize; }

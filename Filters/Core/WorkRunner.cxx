@@ -36,6 +36,16 @@ bool StageProgress::Reach(double fraction)
   return !this->Stopped();
 }
 
+ParallelRanges RangesOf(WorkRunner& runner, std::int64_t grain)
+{
+  return [&runner, grain](std::int64_t count, const RangeWork& work)
+  {
+    runner.For(count,
+      grain,
+      [&work](std::int64_t begin, std::int64_t end, EstimationScratch&) { work(begin, end); });
+  };
+}
+
 void SerialRunner::For(std::int64_t count, std::int64_t, const Work& work)
 {
   EstimationScratch scratch;

@@ -84,6 +84,10 @@ public:
   virtual void For(std::int64_t count, std::int64_t grain, const Work& work) = 0;
 };
 
+/// The runner's ranges of at least `grain` items, for work that needs no
+/// scratch (PointGrid::Build).
+ParallelRanges RangesOf(WorkRunner& runner, std::int64_t grain);
+
 /// All items in the calling thread.
 class SerialRunner : public WorkRunner
 {

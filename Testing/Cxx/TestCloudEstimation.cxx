@@ -1437,8 +1437,41 @@ void TestDenseCells(Checks& checks)
   }
   const std::int64_t n = static_cast<std::int64_t>(xyz.size() / 3);
   const double lower[3] = { 0.0, 0.0, 0.0 }, upper[3] = { 4.0, 4.0, 0.01 };
+  const GridLattice lattice = GridLattice::Make(lower, upper, n, 0.2);
   PointGrid grid;
-  grid.Build(xyz.data(), n, GridLattice::Make(lower, upper, n, 0.2));
+  grid.Build(xyz.data(), n, lattice);
+  // Built on three threads in ranges of 7 points or cells, and in ranges
+  // taken last to first: the same order, the same shells.
+  ThreadRunner threads(3);
+  PointGrid threaded, backwards;
+  threaded.Build(xyz.data(), n, lattice, RangesOf(threads, 7));
+  backwards.Build(xyz.data(),
+    n,
+    lattice,
+    [](std::int64_t count, const RangeWork& work)
+    {
+      for (std::int64_t end = count; end > 0; end -= std::min<std::int64_t>(end, 5))
+      {
+        work(std::max<std::int64_t>(0, end - 5), end);
+      }
+    });
+  bool sameOrder = true;
+  for (const PointGrid* other : { &threaded, &backwards })
+  {
+    sameOrder = sameOrder && other->GetNumberOfPoints() == n &&
+      std::equal(grid.GetSortedIds(), grid.GetSortedIds() + n, other->GetSortedIds());
+    ShellPoints mine, theirs;
+    for (int query = 0; query < 50; ++query)
+    {
+      const double* x = &xyz[3 * ((query * 104729) % n)];
+      grid.GatherShell(x, 0.01, 0.2, mine);
+      other->GatherShell(x, 0.01, 0.2, theirs);
+      sameOrder = sameOrder && mine.Count == theirs.Count &&
+        std::equal(mine.Ids.begin(), mine.Ids.begin() + mine.Count, theirs.Ids.begin()) &&
+        std::equal(mine.Dx.begin(), mine.Dx.begin() + mine.Count, theirs.Dx.begin());
+    }
+  }
+  checks.True("grid built in parallel ranges: the serial build's order and shells", sameOrder);
   int wrongSets = 0, wrongKth = 0, wrongShells = 0;
   std::vector<double> scratch;
   ShellPoints shell;
