@@ -214,20 +214,9 @@ void PointGrid::SortCell(std::int64_t begin, std::int64_t end, std::vector<CellE
     cell[j - begin] = { { this->Sorted[0][j], this->Sorted[1][j], this->Sorted[2][j] },
       this->Ids[j] };
   }
-  // PrecedesInCell's order: by x, y, z, identical points by index.
   std::sort(cell.begin(),
     cell.end(),
-    [](const CellEntry& a, const CellEntry& b)
-    {
-      for (int k = 0; k < 3; ++k)
-      {
-        if (a.X[k] != b.X[k])
-        {
-          return a.X[k] < b.X[k];
-        }
-      }
-      return a.Id < b.Id;
-    });
+    [](const CellEntry& a, const CellEntry& b) { return PointPrecedes(a.X, a.Id, b.X, b.Id); });
   for (std::int64_t j = begin; j < end; ++j)
   {
     const CellEntry& entry = cell[j - begin];

@@ -128,10 +128,9 @@ private:
 /// The order of two points within a cell: by coordinates (x, then y, then
 /// z), identical points by index. A total order that does not depend on
 /// the input's order, so that any sort of a cell gives the same.
-inline bool PrecedesInCell(const double* coordinates, std::int64_t a, std::int64_t b)
+/// Point a at p before point b at q.
+inline bool PointPrecedes(const double p[3], std::int64_t a, const double q[3], std::int64_t b)
 {
-  const double* p = coordinates + 3 * a;
-  const double* q = coordinates + 3 * b;
   for (int k = 0; k < 3; ++k)
   {
     if (p[k] != q[k])
@@ -140,6 +139,11 @@ inline bool PrecedesInCell(const double* coordinates, std::int64_t a, std::int64
     }
   }
   return a < b;
+}
+
+inline bool PrecedesInCell(const double* coordinates, std::int64_t a, std::int64_t b)
+{
+  return PointPrecedes(coordinates + 3 * a, a, coordinates + 3 * b, b);
 }
 
 /// Work on the items [begin, end) of a range.

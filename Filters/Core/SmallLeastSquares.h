@@ -99,33 +99,26 @@ public:
     return inverse.transpose() * reciprocal.asDiagonal() * inverse;
   }
 
-  Vector<N> Solve(Vector<N> x) const
+  Vector<N> Solve(const Vector<N>& right) const
   {
+    double column[N][1];
     for (int i = 0; i < N; ++i)
     {
-      for (int k = 0; k < i; ++k)
-      {
-        x[i] -= this->L[i][k] * x[k];
-      }
+      column[i][0] = right[i];
     }
+    this->SolveColumns(column);
+    Vector<N> x;
     for (int i = 0; i < N; ++i)
     {
-      x[i] /= this->D[i];
-    }
-    for (int i = N - 1; i >= 0; --i)
-    {
-      for (int k = i + 1; k < N; ++k)
-      {
-        x[i] -= this->L[k][i] * x[k];
-      }
+      x[i] = column[i][0];
     }
     return x;
   }
 
-  /// Solve for K right-hand sides at once, x[i][c] the i-th entry of the
-  /// c-th: each column takes Solve's operations in Solve's order (the same
-  /// bits), the columns side by side keep the processor busy where one
-  /// column's substitutions wait for each other.
+  /// Solves for K right-hand sides at once, x[i][c] the i-th entry of the
+  /// c-th: each column takes one solve's operations in its order (the same
+  /// bits as alone), the columns side by side keep the processor busy where
+  /// one column's substitutions wait for each other.
   template<int K>
   void SolveColumns(double (&x)[N][K]) const
   {
