@@ -2,6 +2,7 @@
 
 #include "HeightJet.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -49,9 +50,8 @@ constexpr double JetAgreement = 2.0;
 /// where the jet was right and its error not below the ladder's, the
 /// ladder's real error was about 4 times its reported one (the median).
 constexpr double LadderBiasAllowance = 3.0;
-/// The radius, in first radii, first searched for the jet's neighbours:
-/// about 1.4 times their count on an even sampling (the first radius holds
-/// 17 points), and the factor it grows by where that holds too few.
+/// How far the jet's neighbours may reach, in first radii, where that is
+/// beyond the largest radius (the first radius is then about the largest).
 constexpr double JetReach = 1.3;
 
 /// A fit beside the fourth order's (either order, where the normals follow
@@ -165,35 +165,6 @@ bool FitEitherOrder(QuarticCircleAccumulator& accumulator,
   result = Simplest(third, fourth);
   return true;
 }
-/// The k-th smallest of `values` (k from 1), searched for on one side of
-/// `pivot` only: a jet's candidates lie mostly within the ladder's first
-/// radius, which holds a few fewer than the jet's count, and only the few
-/// beyond it need ordering.
-double KthSmallest(const std::vector<double>& values,
-  std::size_t k,
-  double pivot,
-  std::vector<double>& side)
-{
-  std::size_t within = 0;
-  for (const double value : values)
-  {
-    within += value <= pivot;
-  }
-  const bool below = within >= k;
-  // Branch-free (which side a distance falls on is not predictable): a
-  // value on the other side is overwritten by the next.
-  side.resize(values.size());
-  std::size_t kept = 0;
-  for (const double value : values)
-  {
-    side[kept] = value;
-    kept += (value <= pivot) == below;
-  }
-  side.resize(kept);
-  const std::size_t rank = below ? k - 1 : k - 1 - within;
-  std::nth_element(side.begin(), side.begin() + rank, side.end());
-  return side[rank];
-}
 } // namespace
 
 ScaleEstimate AutomaticScaleEstimator::Estimate(std::int64_t point,
@@ -233,7 +204,7 @@ ScaleEstimate AutomaticScaleEstimator::Estimate(std::int64_t point,
       this->AddShell(scratch.Shell, inverseUnit, quartic);
     }
     // The inner radii's neighbours are in the sums already.
-    this->Grid.GatherShell(x, inner, r, scratch.Shell);
+    this->GatherLevel(x, inner, r, scratch);
     if (fourthOrder)
     {
       this->AddShell(scratch.Shell, inverseUnit, quartic);
@@ -312,40 +283,36 @@ void AutomaticScaleEstimator::PreferJet(const double* x,
   AutomaticScaleScratch& scratch,
   ScaleEstimate& estimate) const
 {
-  // The ladder's first radius holds BaseCount neighbours: a radius that
-  // holds the jets' on an even sampling, grown where it holds fewer.
-  ShellPoints& shell = scratch.Shell;
-  double reach = JetReach * firstRadius;
-  while (this->Grid.GatherShell(x, 0.0, reach, shell) < static_cast<std::size_t>(JetCount))
-  {
-    if (reach >= this->Rule.LargestRadius)
-    {
-      return;
-    }
-    reach = std::min(JetReach * reach, this->Rule.LargestRadius);
-  }
   // The JetCount nearest and all as near as the last of them (a regular
-  // grid has many such ties), in the shell's order (the same on every
-  // process).
-  std::vector<double>& squared = scratch.JetDistances;
-  squared.resize(shell.Count);
-  for (std::size_t i = 0; i < shell.Count; ++i)
+  // grid has many such ties), in the grid's order (the same on every
+  // process), from the nearest points FirstRadius gathered: they hold
+  // every point as near as their JetCount-th.
+  const ShellPoints& nearest = scratch.Nearest;
+  if (!(scratch.NearestRadius > 0.0) || nearest.Count < static_cast<std::size_t>(JetCount))
   {
-    squared[i] = shell.Dx[i] * shell.Dx[i] + shell.Dy[i] * shell.Dy[i] + shell.Dz[i] * shell.Dz[i];
+    return;
   }
-  const double limit =
-    KthSmallest(squared, JetCount, firstRadius * firstRadius, scratch.JetSelection);
-  scratch.JetDx.resize(shell.Count);
-  scratch.JetDy.resize(shell.Count);
-  scratch.JetDz.resize(shell.Count);
+  const std::vector<double>& squared = scratch.NearestSquared;
+  const double limit = scratch.JetCountSquared;
+  // Within the largest radius, or JetReach first radii where the first is
+  // about the largest already.
+  const double reach = std::max(JetReach * firstRadius, this->Rule.LargestRadius);
+  if (!(limit < reach * reach))
+  {
+    return;
+  }
+  scratch.JetDx.resize(nearest.Count);
+  scratch.JetDy.resize(nearest.Count);
+  scratch.JetDz.resize(nearest.Count);
   std::size_t count = 0;
   int others = 0;
-  for (std::size_t i = 0; i < shell.Count; ++i)
+  for (std::size_t i = 0; i < nearest.Count; ++i)
   {
-    // Branch-free, as in KthSmallest.
-    scratch.JetDx[count] = shell.Dx[i];
-    scratch.JetDy[count] = shell.Dy[i];
-    scratch.JetDz[count] = shell.Dz[i];
+    // Branch-free: which side of the limit a point falls on is not
+    // predictable.
+    scratch.JetDx[count] = nearest.Dx[i];
+    scratch.JetDy[count] = nearest.Dy[i];
+    scratch.JetDz[count] = nearest.Dz[i];
     const bool kept = squared[i] <= limit;
     count += kept;
     others += kept && squared[i] > 0.0;
@@ -420,7 +387,66 @@ void AutomaticScaleEstimator::PreferJet(const double* x,
 double AutomaticScaleEstimator::FirstRadius(const double* x, AutomaticScaleScratch& scratch) const
 {
   // k + 1: the point itself is found too.
-  return std::sqrt(this->Grid.SquaredDistanceToKth(x, this->Rule.BaseCount + 1, scratch.Distances));
+  const int k = this->Rule.BaseCount + 1;
+  ShellPoints& nearest = scratch.Nearest;
+  scratch.NearestRadius = this->Grid.GatherNearest(x, std::max(k, JetCount), nearest);
+  if (!(scratch.NearestRadius > 0.0))
+  {
+    return std::sqrt(this->Grid.SquaredDistanceToKth(x, k, scratch.Distances));
+  }
+  std::vector<double>& squared = scratch.NearestSquared;
+  squared.resize(nearest.Count);
+  for (std::size_t i = 0; i < nearest.Count; ++i)
+  {
+    // As the grid's gathers compute it.
+    squared[i] =
+      nearest.Dx[i] * nearest.Dx[i] + nearest.Dy[i] * nearest.Dy[i] + nearest.Dz[i] * nearest.Dz[i];
+  }
+  // Fewer points than k in the whole cloud: the farthest of them, as
+  // SquaredDistanceToKth.
+  const std::size_t count = nearest.Count;
+  const std::size_t first = std::min(static_cast<std::size_t>(k), count);
+  const std::size_t jet = std::min(std::max(first, static_cast<std::size_t>(JetCount)), count);
+  const double radius = scratch.NearestRadius;
+  const std::array<double, 2> kth =
+    SquaredDistanceRanks(squared, { first, jet }, radius * radius, scratch.Ranks);
+  scratch.JetCountSquared = kth[1];
+  return std::sqrt(kth[0]);
+}
+
+void AutomaticScaleEstimator::GatherLevel(const double* x,
+  double inner,
+  double radius,
+  AutomaticScaleScratch& scratch) const
+{
+  // The nearest points hold every point within their radius.
+  if (!(inner == 0.0 && radius < scratch.NearestRadius))
+  {
+    this->Grid.GatherShell(x, inner, radius, scratch.Shell);
+    return;
+  }
+  const ShellPoints& nearest = scratch.Nearest;
+  ShellPoints& shell = scratch.Shell;
+  if (shell.Dx.size() < nearest.Count)
+  {
+    for (std::vector<double>* axis : { &shell.Dx, &shell.Dy, &shell.Dz })
+    {
+      axis->resize(nearest.Count);
+    }
+    shell.Ids.resize(nearest.Count);
+  }
+  // GatherShell's test and order, branch-free as it is.
+  const double radiusSquared = radius * radius;
+  std::size_t count = 0;
+  for (std::size_t i = 0; i < nearest.Count; ++i)
+  {
+    shell.Dx[count] = nearest.Dx[i];
+    shell.Dy[count] = nearest.Dy[i];
+    shell.Dz[count] = nearest.Dz[i];
+    shell.Ids[count] = nearest.Ids[i];
+    count += scratch.NearestSquared[i] < radiusSquared;
+  }
+  shell.Count = count;
 }
 
 int AutomaticScaleEstimator::NormalFollowsSurface(std::int64_t point,

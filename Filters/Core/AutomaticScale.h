@@ -148,8 +148,15 @@ struct AutomaticScaleScratch
   QuarticCircleAccumulator QuarticSums;
   ShellPoints Shell;
   std::vector<double> Distances;
+  /// The nearest points of the point being estimated (FirstRadius): every
+  /// point strictly within NearestRadius (0: none gathered), with their
+  /// squared distances, and that of the JetCount-th nearest.
+  ShellPoints Nearest;
+  std::vector<double> NearestSquared;
+  double NearestRadius = 0.0;
+  double JetCountSquared = 0.0;
+  RankScratch Ranks;
   std::vector<OrientedCircleResult> Scales;
-  std::vector<double> JetDistances, JetSelection;
   std::vector<double> JetDx, JetDy, JetDz;
   AnchorCells::Around Anchors;
   std::vector<AnchorEstimate> NearbyAnchors;
@@ -218,8 +225,17 @@ private:
     ScaleEstimate& estimate) const;
 
   /// The distance from `x` to its BaseCount-th nearest neighbour: the
-  /// first radius of its ladder.
+  /// first radius of its ladder. Gathers the nearest points into the
+  /// scratch's Nearest on the way, as many as the jet needs.
   double FirstRadius(const double* x, AutomaticScaleScratch& scratch) const;
+
+  /// The ladder's shell of points with inner <= distance < radius into the
+  /// scratch's Shell: the first (inner 0) from the nearest points where
+  /// they hold it, else from the grid.
+  void GatherLevel(const double* x,
+    double inner,
+    double radius,
+    AutomaticScaleScratch& scratch) const;
 
   /// Adds the points of `shell` (offsets divided by the radius unit) with
   /// their normals to `sums`.

@@ -433,6 +433,70 @@ std::size_t PointGrid::GatherShell(const double x[3],
   return out.Count;
 }
 
+namespace
+{
+/// The next radius of a search for `wanted` points that found `found`:
+/// points on a surface, whose count grows with the area, radius^2.
+double GrownSearchRadius(double radius, std::int64_t wanted, std::int64_t found)
+{
+  const double factor =
+    1.1 * std::sqrt(static_cast<double>(wanted) / std::max<std::int64_t>(found, 1));
+  return radius * std::min(4.0, std::max(1.25, factor));
+}
+
+/// The value of rank `rank` (from 0) among `values`, each counted into one
+/// of the buckets (`bucket`; `starts`: where each bucket starts in the
+/// values' order): only the values in its bucket need ordering.
+double ValueOfRank(const std::vector<double>& values,
+  const std::vector<std::uint32_t>& bucket,
+  const std::vector<std::uint32_t>& starts,
+  std::size_t rank,
+  std::vector<double>& side)
+{
+  const std::uint32_t b = static_cast<std::uint32_t>(
+    std::upper_bound(starts.begin(), starts.end(), rank) - starts.begin() - 1);
+  side.resize(values.size());
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < values.size(); ++i)
+  {
+    // Branch-free: which bucket a value falls into is not predictable.
+    side[kept] = values[i];
+    kept += bucket[i] == b;
+  }
+  const auto begin = side.begin();
+  const std::size_t within = rank - starts[b];
+  std::nth_element(begin, begin + within, begin + kept);
+  return side[within];
+}
+} // namespace
+
+std::array<double, 2> SquaredDistanceRanks(const std::vector<double>& squared,
+  const std::array<std::size_t, 2>& ranks,
+  double top,
+  RankScratch& scratch)
+{
+  const std::size_t n = squared.size();
+  std::vector<std::uint32_t>& bucket = scratch.Bucket;
+  std::vector<std::uint32_t>& starts = scratch.Starts;
+  bucket.resize(n);
+  // A last bucket for what lies beyond top (or is not a number), and one
+  // more entry: the counts, shifted by one, become where buckets start.
+  starts.assign(n + 2, 0);
+  const double scale = static_cast<double>(n) / top;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const double position = squared[i] * scale;
+    bucket[i] = static_cast<std::uint32_t>(position < static_cast<double>(n) ? position : n);
+    ++starts[bucket[i] + 1];
+  }
+  for (std::size_t b = 1; b < starts.size(); ++b)
+  {
+    starts[b] += starts[b - 1];
+  }
+  return { ValueOfRank(squared, bucket, starts, ranks[0] - 1, scratch.Side),
+    ValueOfRank(squared, bucket, starts, ranks[1] - 1, scratch.Side) };
+}
+
 double PointGrid::SquaredDistanceToKth(const double x[3], int k, std::vector<double>& scratch) const
 {
   const std::int64_t wanted = std::min<std::int64_t>(std::max(k, 1), this->GetNumberOfPoints());
@@ -472,11 +536,30 @@ double PointGrid::SquaredDistanceToKth(const double x[3], int k, std::vector<dou
       std::nth_element(scratch.begin(), scratch.begin() + (wanted - 1), scratch.end());
       return scratch[wanted - 1];
     }
-    // Points on a surface: the count grows with the area, radius^2.
-    const double factor =
-      1.1 * std::sqrt(static_cast<double>(wanted) / std::max<std::int64_t>(found, 1));
-    radius *= std::min(4.0, std::max(1.25, factor));
+    radius = GrownSearchRadius(radius, wanted, found);
   }
+}
+
+double PointGrid::GatherNearest(const double x[3], int k, ShellPoints& out) const
+{
+  out.Count = 0;
+  const std::int64_t wanted = std::min<std::int64_t>(std::max(k, 1), this->GetNumberOfPoints());
+  if (wanted == 0)
+  {
+    return 0.0;
+  }
+  // SquaredDistanceToKth's radii, so that both stop at the same one.
+  for (double radius = this->StartRadius(x);
+       !(radius > 2.0 * this->Diagonal + this->Lattice.CellSize) && std::isfinite(radius * radius);
+       radius = GrownSearchRadius(radius, wanted, static_cast<std::int64_t>(out.Count)))
+  {
+    if (static_cast<std::int64_t>(this->GatherShell(x, 0.0, radius, out)) >= wanted)
+    {
+      return radius;
+    }
+  }
+  out.Count = 0;
+  return 0.0;
 }
 
 } // namespace pcurv

@@ -99,6 +99,25 @@ struct ShellPoints
   std::size_t Count = 0;
 };
 
+/// Buffers of SquaredDistanceRanks.
+struct RankScratch
+{
+  std::vector<std::uint32_t> Bucket, Starts;
+  std::vector<double> Side;
+};
+
+/// The k-th and the l-th smallest (ranks = {k, l}, 1 <= k <= l <= size)
+/// of the squared distances of the points within a radius whose square is
+/// `top` (GatherNearest's). On a surface they spread about evenly over
+/// [0, top] (the count grows with the area): counted into buckets of
+/// 1 / size of that range, about one a bucket, only the few in a rank's
+/// bucket need ordering. Exact whatever the spread: a bucket of many
+/// orders them all.
+std::array<double, 2> SquaredDistanceRanks(const std::vector<double>& squared,
+  const std::array<std::size_t, 2>& ranks,
+  double top,
+  RankScratch& scratch);
+
 /// Where each cell's points begin in the cell order (one more entry at the
 /// end), 32-bit where the points allow (IndexList): the lattice over a
 /// surface's bounding box has several cells a point, most of them empty,
@@ -222,6 +241,14 @@ public:
   /// when it is one of the points), found with growing radius queries.
   /// Returns the largest squared distance when there are fewer points.
   double SquaredDistanceToKth(const double x[3], int k, std::vector<double>& scratch) const;
+
+  /// Gathers into `out`, as GatherShell(x, 0, radius, out) does, every
+  /// point strictly within a radius that holds at least k of them (x itself
+  /// counts), grown as SquaredDistanceToKth's search is: the k nearest and
+  /// some more, with their offsets and ids. Returns that radius, or 0 with
+  /// nothing gathered where the search would reach beyond the whole box
+  /// (SquaredDistanceToKth then finds the k-th distance).
+  double GatherNearest(const double x[3], int k, ShellPoints& out) const;
 
   /// The same points as ForEachWithinRadius, in another fixed order (that
   /// too depends only on the grid and x), at a cost that follows the points

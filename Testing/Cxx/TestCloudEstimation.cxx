@@ -1472,9 +1472,10 @@ void TestDenseCells(Checks& checks)
     }
   }
   checks.True("grid built in parallel ranges: the serial build's order and shells", sameOrder);
-  int wrongSets = 0, wrongKth = 0, wrongShells = 0;
+  int wrongSets = 0, wrongKth = 0, wrongShells = 0, wrongNearest = 0, wrongRanks = 0;
   std::vector<double> scratch;
-  ShellPoints shell;
+  ShellPoints shell, nearest;
+  RankScratch ranked;
   for (int query = 0; query < 300; ++query)
   {
     const double* x = &xyz[3 * ((query * 7919) % n)];
@@ -1525,12 +1526,64 @@ void TestDenseCells(Checks& checks)
     const int k = 1 + query % 40;
     std::nth_element(distances.begin(), distances.begin() + (k - 1), distances.end());
     wrongKth += grid.SquaredDistanceToKth(x, k, scratch) != distances[k - 1];
+    // The nearest: every point within the search's radius, at least k of
+    // them, as the shell of that radius gathers them; the k-th and a
+    // later rank among their distances are the brute force's.
+    const double reach = grid.GatherNearest(x, k, nearest);
+    grid.GatherShell(x, 0.0, reach, shell);
+    bool nearestRight =
+      reach > 0.0 && nearest.Count >= static_cast<std::size_t>(k) && nearest.Count == shell.Count;
+    for (std::size_t i = 0; nearestRight && i < shell.Count; ++i)
+    {
+      nearestRight = nearest.Ids[i] == shell.Ids[i] && nearest.Dx[i] == shell.Dx[i] &&
+        nearest.Dy[i] == shell.Dy[i] && nearest.Dz[i] == shell.Dz[i];
+    }
+    wrongNearest += !nearestRight;
+    if (nearestRight)
+    {
+      std::vector<double> squared(nearest.Count);
+      for (std::size_t i = 0; i < nearest.Count; ++i)
+      {
+        squared[i] = nearest.Dx[i] * nearest.Dx[i] + nearest.Dy[i] * nearest.Dy[i] +
+          nearest.Dz[i] * nearest.Dz[i];
+      }
+      const std::size_t later = std::min<std::size_t>(k + 3, nearest.Count);
+      std::nth_element(distances.begin(), distances.begin() + (later - 1), distances.end());
+      const std::array<double, 2> ranks = SquaredDistanceRanks(
+        squared, { static_cast<std::size_t>(k), later }, reach * reach, ranked);
+      wrongRanks +=
+        ranks[0] != grid.SquaredDistanceToKth(x, k, scratch) || ranks[1] != distances[later - 1];
+    }
   }
   checks.True(
     "dense patch: its cell is searched through finer cells", grid.GetNumberOfDenseCells() >= 1);
   checks.True(
     "dense patch: the fine query finds exactly the points within the radius", wrongSets == 0);
   checks.True("dense patch: k-th nearest distances equal brute force", wrongKth == 0);
+  checks.True("dense patch: the nearest are the shell of their radius, at least k of them",
+    wrongNearest == 0);
+  checks.True(
+    "dense patch: ranks among the nearest's distances equal brute force", wrongRanks == 0);
+  // Ranks where the distances do not spread evenly: ties, one crowded
+  // bucket, values beyond the top.
+  const std::vector<std::vector<double>> uneven = { std::vector<double>(30, 0.25),
+    { 0.0, 0.0, 0.0, 0.9, 0.9, 0.1, 0.1, 0.1, 0.1, 0.5 },
+    { 1e-9, 2e-9, 3e-9, 4e-9, 5e-9, 6e-9, 0.99, 2e-9 },
+    { 0.3, 0.2, 5.0, 0.1, 7.0, 0.4 } };
+  bool unevenRight = true;
+  for (const std::vector<double>& values : uneven)
+  {
+    std::vector<double> sorted = values;
+    std::sort(sorted.begin(), sorted.end());
+    for (std::size_t k = 1; k <= values.size(); ++k)
+    {
+      const std::array<double, 2> ranks =
+        SquaredDistanceRanks(values, { k, values.size() }, 1.0, ranked);
+      unevenRight = unevenRight && ranks[0] == sorted[k - 1] && ranks[1] == sorted.back();
+    }
+  }
+  checks.True(
+    "distance ranks: exact with ties, crowded buckets and values beyond the top", unevenRight);
   checks.True("dense patch: a shell's points are the fine query's beyond the inner radius, in "
               "its order",
     wrongShells == 0);
