@@ -318,11 +318,16 @@ void AutomaticScaleEstimator::PreferJet(const double* x,
     others += kept && squared[i] > 0.0;
   }
   const double radius = std::sqrt(limit);
+  // Over the neighbours' own plane: there the heights, and with them the
+  // terms the quartic leaves out, are the smallest (a given normal, even
+  // an exact one, tilts against an uneven neighbourhood).
+  const TangentFrame plane = MakeTangentFrame(NeighborhoodPlaneNormal(
+    scratch.JetDx.data(), scratch.JetDy.data(), scratch.JetDz.data(), count, radius, frame.Normal));
   const HeightJetFit jet = FitHeightJet(scratch.JetDx.data(),
     scratch.JetDy.data(),
     scratch.JetDz.data(),
     count,
-    frame,
+    plane,
     radius,
     roundingVariance);
   if (!jet.Curvature.Valid)

@@ -258,7 +258,77 @@ void CurvaturesOfGraph(const TangentFrame& frame,
     std::isfinite(out.MaximumDirection[0]);
 }
 
+/// Steps of inverse iteration from the given normal: each takes the other
+/// eigenvectors' parts down by the ratio of the smallest eigenvalue to
+/// theirs, which the heights' small spread across a surface's
+/// neighbourhood makes small.
+constexpr int PlaneIterations = 3;
+
 } // namespace
+
+Vector3 NeighborhoodPlaneNormal(const double* dx,
+  const double* dy,
+  const double* dz,
+  std::size_t count,
+  double scale,
+  const Vector3& side)
+{
+  if (count < 3 || !(scale > 0.0) || !std::isfinite(scale))
+  {
+    return side;
+  }
+  // In units of the scale: the covariance's entries neither underflow nor
+  // overflow whatever the coordinates' unit.
+  const double inverseScale = 1.0 / scale;
+  double cx = 0.0, cy = 0.0, cz = 0.0;
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    cx += dx[i];
+    cy += dy[i];
+    cz += dz[i];
+  }
+  const double toCentroid = 1.0 / static_cast<double>(count);
+  cx *= toCentroid;
+  cy *= toCentroid;
+  cz *= toCentroid;
+  double xx = 0.0, xy = 0.0, xz = 0.0, yy = 0.0, yz = 0.0, zz = 0.0;
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    const double x = (dx[i] - cx) * inverseScale, y = (dy[i] - cy) * inverseScale,
+                 z = (dz[i] - cz) * inverseScale;
+    xx += x * x;
+    xy += x * y;
+    xz += x * z;
+    yy += y * y;
+    yz += y * z;
+    zz += z * z;
+  }
+  // Inverse iteration through the adjugate (the inverse times the
+  // determinant; for a symmetric matrix its rows are cross products of the
+  // columns): no division, and where the points lie in a plane (the
+  // smallest eigenvalue 0) it maps everything onto that plane's normal.
+  const Eigen::Vector3d c0(xx, xy, xz), c1(xy, yy, yz), c2(xz, yz, zz);
+  Eigen::Matrix3d adjugate;
+  adjugate.row(0) = c1.cross(c2);
+  adjugate.row(1) = c2.cross(c0);
+  adjugate.row(2) = c0.cross(c1);
+  Eigen::Vector3d normal(side[0], side[1], side[2]);
+  for (int step = 0; step < PlaneIterations; ++step)
+  {
+    const Eigen::Vector3d next = adjugate * normal;
+    const double length = next.norm();
+    if (!(length > 0.0) || !std::isfinite(length))
+    {
+      return side;
+    }
+    normal = next / length;
+  }
+  if (normal.dot(Eigen::Vector3d(side[0], side[1], side[2])) < 0.0)
+  {
+    normal = -normal;
+  }
+  return Vector3{ { normal[0], normal[1], normal[2] } };
+}
 
 HeightJetFit FitHeightJet(const double* dx,
   const double* dy,

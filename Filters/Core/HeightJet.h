@@ -28,6 +28,17 @@ struct HeightJetFit
   double StandardError = std::numeric_limits<double>::quiet_NaN();
 };
 
+/// The normal of the least-squares plane of `count` neighbours at offsets
+/// (dx, dy, dz) (the smallest eigenvector of their covariance), turned to
+/// `side`'s side: the jet's plane. `scale` is the neighbourhood's radius.
+/// `side` itself where the neighbours do not determine a plane (on a line).
+Vector3 NeighborhoodPlaneNormal(const double* dx,
+  const double* dy,
+  const double* dz,
+  std::size_t count,
+  double scale,
+  const Vector3& side);
+
 /// The jet's unknowns: the height, its two slopes, three second, four
 /// third and five fourth derivatives' coefficients.
 constexpr int HeightJetUnknowns = 15;
