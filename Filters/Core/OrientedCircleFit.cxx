@@ -168,11 +168,7 @@ const OrientedCircleSumsOf<Order>& OrientedCircleAccumulatorOf<Order>::Sums()
   this->AddPending();
   // Each sum's eight banks, added in a fixed order.
   double totals[L::NumberOfEntries];
-  for (int e = 0; e < L::NumberOfEntries; ++e)
-  {
-    const double* b = &this->Banked.Banks[e * oriented::NumberOfBanks];
-    totals[e] = ((b[0] + b[1]) + (b[2] + b[3])) + ((b[4] + b[5]) + (b[6] + b[7]));
-  }
+  oriented::CombineBanks(this->Banked.Banks, L::NumberOfEntries, totals);
   OrientedCircleSumsOf<Order>& sums = this->Totals;
   std::copy_n(totals + L::PositionMatrix, sums.PositionMatrix.size(), sums.PositionMatrix.begin());
   std::copy_n(totals + L::PositionRight, sums.PositionRight.size(), sums.PositionRight.begin());

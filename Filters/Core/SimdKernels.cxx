@@ -36,6 +36,7 @@ using namespace binning;
 using ClassifyKernel =
   void (*)(const Frame&, const double*, const double*, const double*, std::size_t, Block&);
 using CombineKernel = void (*)(const double*, double*);
+using OrientedCombineKernel = void (*)(const double*, int, double*);
 using CircleKernel = void (*)(const double*, const double*, std::size_t, const double*, double*);
 using OrientedKernel = void (*)(const oriented::Frame&,
   const oriented::NeighborBatch&,
@@ -436,6 +437,7 @@ struct NamedKernel
   CircleKernel Circles;
   OrientedKernel Oriented;
   QuarticKernel Quartic;
+  OrientedCombineKernel OrientedCombine;
 };
 
 std::vector<NamedKernel> Kernels()
@@ -447,7 +449,8 @@ std::vector<NamedKernel> Kernels()
     &GatherShellScalar,
     &generic::CircleDistanceSums,
     &generic::AddOrientedNeighbors<3>,
-    &generic::AddOrientedNeighbors<4> } };
+    &generic::AddOrientedNeighbors<4>,
+    &generic::CombineOrientedBanks } };
 #ifdef PCURV_MULTIVERSION
   __builtin_cpu_init();
   if (__builtin_cpu_supports("avx2"))
@@ -459,7 +462,8 @@ std::vector<NamedKernel> Kernels()
       &GatherShellScalar,
       &avx2::CircleDistanceSums,
       &avx2::AddOrientedNeighbors<3>,
-      &avx2::AddOrientedNeighbors<4> });
+      &avx2::AddOrientedNeighbors<4>,
+      &avx2::CombineOrientedBanks });
   }
   if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") &&
     __builtin_cpu_supports("avx512vl") && __builtin_cpu_supports("avx512bw"))
@@ -471,7 +475,8 @@ std::vector<NamedKernel> Kernels()
       &avx512::GatherShell,
       &avx512::CircleDistanceSums,
       &avx512::AddOrientedNeighbors<3>,
-      &avx512::AddOrientedNeighbors<4> });
+      &avx512::AddOrientedNeighbors<4>,
+      &avx512::CombineOrientedBanks });
   }
 #endif
   return kernels;
@@ -701,6 +706,21 @@ bool AddNeighborsWith(const std::string& kernel,
   if (named)
   {
     named->Quartic(frame, neighbors, sums);
+  }
+  return named != nullptr;
+}
+
+void CombineBanks(const double* banks, int entries, double* totals)
+{
+  Best().OrientedCombine(banks, entries, totals);
+}
+
+bool CombineBanksWith(const std::string& kernel, const double* banks, int entries, double* totals)
+{
+  const NamedKernel* named = Named(kernel);
+  if (named)
+  {
+    named->OrientedCombine(banks, entries, totals);
   }
   return named != nullptr;
 }

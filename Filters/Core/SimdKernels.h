@@ -371,6 +371,14 @@ bool AddNeighborsWith(const std::string& kernel,
   const Frame& frame,
   const NeighborBatch& neighbors,
   QuarticSums& sums);
+
+/// totals[e] for e < entries: entry e's eight banks (banks[e * 8 + b], as
+/// in BankedSums) added as ((b0 + b1) + (b2 + b3)) + ((b4 + b5) + (b6 + b7)),
+/// the same operations on every instruction set.
+void CombineBanks(const double* banks, int entries, double* totals);
+
+/// CombineBanks with a named kernel (for tests); false when not available.
+bool CombineBanksWith(const std::string& kernel, const double* banks, int entries, double* totals);
 } // namespace oriented
 
 /// The instruction sets this build and this processor can use, widest last

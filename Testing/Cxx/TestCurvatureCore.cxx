@@ -263,6 +263,33 @@ void TestCombineKernelsAgree(Checks& checks)
     }
   }
   checks.Equal("combined banks differing from the documented order", differences, 0L);
+  // OrientedCircles' banks: every sum's eight, in the scalar tree's order
+  // (lengths that leave a tail after the groups of eight).
+  long orientedDifferences = 0;
+  for (const int entries : { 129, 264, 7, 1 })
+  {
+    std::vector<double> oriented(static_cast<std::size_t>(entries) * 8);
+    for (double& value : oriented)
+    {
+      value = random.Normal() * std::pow(10.0, static_cast<int>(12.0 * random.Uniform()) - 6);
+    }
+    std::vector<double> expected(entries);
+    for (int e = 0; e < entries; ++e)
+    {
+      const double* b = &oriented[static_cast<std::size_t>(e) * 8];
+      expected[e] = ((b[0] + b[1]) + (b[2] + b[3])) + ((b[4] + b[5]) + (b[6] + b[7]));
+    }
+    for (const std::string& kernel : AvailableKernels())
+    {
+      std::vector<double> totals(entries);
+      checks.True(
+        "kernel runs", oriented::CombineBanksWith(kernel, oriented.data(), entries, totals.data()));
+      orientedDifferences +=
+        std::memcmp(totals.data(), expected.data(), entries * sizeof(double)) == 0 ? 0 : 1;
+    }
+  }
+  checks.Equal(
+    "OrientedCircles' combined banks differing from the documented order", orientedDifferences, 0L);
 }
 
 /// The shell gather kernels: the same points, offsets, ids and count as
