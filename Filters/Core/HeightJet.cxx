@@ -1,5 +1,6 @@
 #include "HeightJet.h"
 
+#include "ScaledCovariance.h"
 #include "SmallLeastSquares.h"
 
 #include <cmath>
@@ -277,37 +278,12 @@ Vector3 NeighborhoodPlaneNormal(const double* dx,
   {
     return side;
   }
-  // In units of the scale: the covariance's entries neither underflow nor
-  // overflow whatever the coordinates' unit.
-  const double inverseScale = 1.0 / scale;
-  double cx = 0.0, cy = 0.0, cz = 0.0;
-  for (std::size_t i = 0; i < count; ++i)
-  {
-    cx += dx[i];
-    cy += dy[i];
-    cz += dz[i];
-  }
-  const double toCentroid = 1.0 / static_cast<double>(count);
-  cx *= toCentroid;
-  cy *= toCentroid;
-  cz *= toCentroid;
-  double xx = 0.0, xy = 0.0, xz = 0.0, yy = 0.0, yz = 0.0, zz = 0.0;
-  for (std::size_t i = 0; i < count; ++i)
-  {
-    const double x = (dx[i] - cx) * inverseScale, y = (dy[i] - cy) * inverseScale,
-                 z = (dz[i] - cz) * inverseScale;
-    xx += x * x;
-    xy += x * y;
-    xz += x * z;
-    yy += y * y;
-    yz += y * z;
-    zz += z * z;
-  }
+  const Eigen::Matrix3d covariance = ScaledCovariance(dx, dy, dz, count, 1.0 / scale);
   // Inverse iteration through the adjugate (the inverse times the
   // determinant; for a symmetric matrix its rows are cross products of the
   // columns): no division, and where the points lie in a plane (the
   // smallest eigenvalue 0) it maps everything onto that plane's normal.
-  const Eigen::Vector3d c0(xx, xy, xz), c1(xy, yy, yz), c2(xz, yz, zz);
+  const Eigen::Vector3d c0 = covariance.col(0), c1 = covariance.col(1), c2 = covariance.col(2);
   Eigen::Matrix3d adjugate;
   adjugate.row(0) = c1.cross(c2);
   adjugate.row(1) = c2.cross(c0);

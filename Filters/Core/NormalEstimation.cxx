@@ -2,6 +2,7 @@
 
 #include "WorkRunner.h"
 #include "OrientationGraph.h"
+#include "ScaledCovariance.h"
 #include "PointGrid.h"
 
 #include <Eigen/Dense>
@@ -338,32 +339,7 @@ bool FitPlane(const NeighborOffsets& offsets, double inverseRadius, double* norm
   const double* dx = offsets.Dx.data();
   const double* dy = offsets.Dy.data();
   const double* dz = offsets.Dz.data();
-  double mx = 0.0, my = 0.0, mz = 0.0;
-  for (std::size_t i = 0; i < count; ++i)
-  {
-    mx += dx[i] * inverseRadius;
-    my += dy[i] * inverseRadius;
-    mz += dz[i] * inverseRadius;
-  }
-  const double size = static_cast<double>(count);
-  mx /= size;
-  my /= size;
-  mz /= size;
-  double xx = 0.0, yx = 0.0, zx = 0.0, yy = 0.0, zy = 0.0, zz = 0.0;
-  for (std::size_t i = 0; i < count; ++i)
-  {
-    const double x = dx[i] * inverseRadius - mx;
-    const double y = dy[i] * inverseRadius - my;
-    const double z = dz[i] * inverseRadius - mz;
-    xx += x * x;
-    yx += y * x;
-    zx += z * x;
-    yy += y * y;
-    zy += z * y;
-    zz += z * z;
-  }
-  Eigen::Matrix3d covariance;
-  covariance << xx, yx, zx, yx, yy, zy, zx, zy, zz;
+  const Eigen::Matrix3d covariance = ScaledCovariance(dx, dy, dz, count, inverseRadius);
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
   solver.computeDirect(covariance);
   Eigen::Vector3d n = solver.eigenvectors().col(0);
