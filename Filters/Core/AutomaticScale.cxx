@@ -165,6 +165,32 @@ bool FitEitherOrder(QuarticCircleAccumulator& accumulator,
   result = Simplest(third, fourth);
   return true;
 }
+/// The nearest points whose squared distance is below `limit`, in their
+/// order (a shell's), into `out`; returns their count. Branch-free: which
+/// side of the limit a point falls on is not predictable.
+std::size_t KeepNearerThan(const NearestPoints& nearest, double limit, ShellPoints& out)
+{
+  const ShellPoints& from = nearest.Points;
+  if (out.Dx.size() < from.Count)
+  {
+    for (std::vector<double>* axis : { &out.Dx, &out.Dy, &out.Dz })
+    {
+      axis->resize(from.Count);
+    }
+    out.Ids.resize(from.Count);
+  }
+  std::size_t count = 0;
+  for (std::size_t i = 0; i < from.Count; ++i)
+  {
+    out.Dx[count] = from.Dx[i];
+    out.Dy[count] = from.Dy[i];
+    out.Dz[count] = from.Dz[i];
+    out.Ids[count] = from.Ids[i];
+    count += nearest.Squared[i] < limit;
+  }
+  out.Count = count;
+  return count;
+}
 } // namespace
 
 ScaleEstimate AutomaticScaleEstimator::Estimate(std::int64_t point,
@@ -287,13 +313,12 @@ void AutomaticScaleEstimator::PreferJet(const double* x,
   // grid has many such ties), in the grid's order (the same on every
   // process), from the nearest points FirstRadius gathered: they hold
   // every point as near as their JetCount-th.
-  const ShellPoints& nearest = scratch.Nearest;
-  if (!(scratch.NearestRadius > 0.0) || nearest.Count < static_cast<std::size_t>(JetCount))
+  const NearestPoints& nearest = scratch.Nearest;
+  if (!(nearest.Radius > 0.0) || nearest.Points.Count < static_cast<std::size_t>(JetCount))
   {
     return;
   }
-  const std::vector<double>& squared = scratch.NearestSquared;
-  const double limit = scratch.JetCountSquared;
+  const double limit = nearest.JetCountSquared;
   // Within the largest radius, or JetReach first radii where the first is
   // about the largest already.
   const double reach = std::max(JetReach * firstRadius, this->Rule.LargestRadius);
@@ -301,31 +326,22 @@ void AutomaticScaleEstimator::PreferJet(const double* x,
   {
     return;
   }
-  scratch.JetDx.resize(nearest.Count);
-  scratch.JetDy.resize(nearest.Count);
-  scratch.JetDz.resize(nearest.Count);
-  std::size_t count = 0;
-  int others = 0;
-  for (std::size_t i = 0; i < nearest.Count; ++i)
-  {
-    // Branch-free: which side of the limit a point falls on is not
-    // predictable.
-    scratch.JetDx[count] = nearest.Dx[i];
-    scratch.JetDy[count] = nearest.Dy[i];
-    scratch.JetDz[count] = nearest.Dz[i];
-    const bool kept = squared[i] <= limit;
-    count += kept;
-    others += kept && squared[i] > 0.0;
-  }
+  // As near as the limit or nearer (below the next number up).
+  ShellPoints& neighbors = scratch.Jet;
+  const std::size_t count = KeepNearerThan(nearest, std::nextafter(limit, HUGE_VAL), neighbors);
+  // The other points among them (the estimate's neighbour count).
+  const int others = static_cast<int>(std::count_if(nearest.Squared.begin(),
+    nearest.Squared.end(),
+    [limit](double squared) { return squared > 0.0 && squared <= limit; }));
   const double radius = std::sqrt(limit);
   // Over the neighbours' own plane: there the heights, and with them the
   // terms the quartic leaves out, are the smallest (a given normal, even
   // an exact one, tilts against an uneven neighbourhood).
   const TangentFrame plane = MakeTangentFrame(NeighborhoodPlaneNormal(
-    scratch.JetDx.data(), scratch.JetDy.data(), scratch.JetDz.data(), count, radius, frame.Normal));
-  const HeightJetFit jet = FitHeightJet(scratch.JetDx.data(),
-    scratch.JetDy.data(),
-    scratch.JetDz.data(),
+    neighbors.Dx.data(), neighbors.Dy.data(), neighbors.Dz.data(), count, radius, frame.Normal));
+  const HeightJetFit jet = FitHeightJet(neighbors.Dx.data(),
+    neighbors.Dy.data(),
+    neighbors.Dz.data(),
     count,
     plane,
     radius,
@@ -393,29 +409,29 @@ double AutomaticScaleEstimator::FirstRadius(const double* x, AutomaticScaleScrat
 {
   // k + 1: the point itself is found too.
   const int k = this->Rule.BaseCount + 1;
-  ShellPoints& nearest = scratch.Nearest;
-  scratch.NearestRadius = this->Grid.GatherNearest(x, std::max(k, JetCount), nearest);
-  if (!(scratch.NearestRadius > 0.0))
+  NearestPoints& nearest = scratch.Nearest;
+  const ShellPoints& points = nearest.Points;
+  nearest.Radius = this->Grid.GatherNearest(x, std::max(k, JetCount), nearest.Points);
+  if (!(nearest.Radius > 0.0))
   {
     return std::sqrt(this->Grid.SquaredDistanceToKth(x, k, scratch.Distances));
   }
-  std::vector<double>& squared = scratch.NearestSquared;
-  squared.resize(nearest.Count);
-  for (std::size_t i = 0; i < nearest.Count; ++i)
+  std::vector<double>& squared = nearest.Squared;
+  squared.resize(points.Count);
+  for (std::size_t i = 0; i < points.Count; ++i)
   {
     // As the grid's gathers compute it.
     squared[i] =
-      nearest.Dx[i] * nearest.Dx[i] + nearest.Dy[i] * nearest.Dy[i] + nearest.Dz[i] * nearest.Dz[i];
+      points.Dx[i] * points.Dx[i] + points.Dy[i] * points.Dy[i] + points.Dz[i] * points.Dz[i];
   }
   // Fewer points than k in the whole cloud: the farthest of them, as
   // SquaredDistanceToKth.
-  const std::size_t count = nearest.Count;
-  const std::size_t first = std::min(static_cast<std::size_t>(k), count);
-  const std::size_t jet = std::min(std::max(first, static_cast<std::size_t>(JetCount)), count);
-  const double radius = scratch.NearestRadius;
+  const std::size_t first = std::min(static_cast<std::size_t>(k), points.Count);
+  const std::size_t jet =
+    std::min(std::max(first, static_cast<std::size_t>(JetCount)), points.Count);
   const std::array<double, 2> kth =
-    SquaredDistanceRanks(squared, { first, jet }, radius * radius, scratch.Ranks);
-  scratch.JetCountSquared = kth[1];
+    SquaredDistanceRanks(squared, { first, jet }, nearest.Radius * nearest.Radius, nearest.Ranks);
+  nearest.JetCountSquared = kth[1];
   return std::sqrt(kth[0]);
 }
 
@@ -424,34 +440,16 @@ void AutomaticScaleEstimator::GatherLevel(const double* x,
   double radius,
   AutomaticScaleScratch& scratch) const
 {
-  // The nearest points hold every point within their radius.
-  if (!(inner == 0.0 && radius < scratch.NearestRadius))
+  // The nearest points hold every point within their radius, in
+  // GatherShell's order.
+  if (inner == 0.0 && radius < scratch.Nearest.Radius)
+  {
+    KeepNearerThan(scratch.Nearest, radius * radius, scratch.Shell);
+  }
+  else
   {
     this->Grid.GatherShell(x, inner, radius, scratch.Shell);
-    return;
   }
-  const ShellPoints& nearest = scratch.Nearest;
-  ShellPoints& shell = scratch.Shell;
-  if (shell.Dx.size() < nearest.Count)
-  {
-    for (std::vector<double>* axis : { &shell.Dx, &shell.Dy, &shell.Dz })
-    {
-      axis->resize(nearest.Count);
-    }
-    shell.Ids.resize(nearest.Count);
-  }
-  // GatherShell's test and order, branch-free as it is.
-  const double radiusSquared = radius * radius;
-  std::size_t count = 0;
-  for (std::size_t i = 0; i < nearest.Count; ++i)
-  {
-    shell.Dx[count] = nearest.Dx[i];
-    shell.Dy[count] = nearest.Dy[i];
-    shell.Dz[count] = nearest.Dz[i];
-    shell.Ids[count] = nearest.Ids[i];
-    count += scratch.NearestSquared[i] < radiusSquared;
-  }
-  shell.Count = count;
 }
 
 int AutomaticScaleEstimator::NormalFollowsSurface(std::int64_t point,

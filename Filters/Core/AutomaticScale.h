@@ -141,6 +141,18 @@ struct AnchorTable
   }
 };
 
+/// The nearest points of the point being estimated (FirstRadius): every
+/// point strictly within Radius (0: none gathered) in the grid's order,
+/// their squared distances, and that of the JetCount-th nearest.
+struct NearestPoints
+{
+  ShellPoints Points;
+  std::vector<double> Squared;
+  double Radius = 0.0;
+  double JetCountSquared = 0.0;
+  RankScratch Ranks;
+};
+
 /// A thread's reusable buffers for AutomaticScaleEstimator.
 struct AutomaticScaleScratch
 {
@@ -148,16 +160,9 @@ struct AutomaticScaleScratch
   QuarticCircleAccumulator QuarticSums;
   ShellPoints Shell;
   std::vector<double> Distances;
-  /// The nearest points of the point being estimated (FirstRadius): every
-  /// point strictly within NearestRadius (0: none gathered), with their
-  /// squared distances, and that of the JetCount-th nearest.
-  ShellPoints Nearest;
-  std::vector<double> NearestSquared;
-  double NearestRadius = 0.0;
-  double JetCountSquared = 0.0;
-  RankScratch Ranks;
+  NearestPoints Nearest;
   std::vector<OrientedCircleResult> Scales;
-  std::vector<double> JetDx, JetDy, JetDz;
+  ShellPoints Jet;
   AnchorCells::Around Anchors;
   std::vector<AnchorEstimate> NearbyAnchors;
 };
