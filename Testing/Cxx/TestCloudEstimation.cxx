@@ -714,6 +714,84 @@ void TestGatedThirdOrder(Checks& checks)
   }
 }
 
+/// The largest neighbour count among the valid points.
+int LargestNeighborCount(const Results& r)
+{
+  int largest = 0;
+  for (std::size_t i = 0; i < r.Valid.size(); ++i)
+  {
+    largest = r.Valid[i] ? std::max(largest, r.NeighborCount[i]) : largest;
+  }
+  return largest;
+}
+
+/// The longer ladder where the normals do not follow the surface
+/// (AutomaticScaleRule::WideLevels): with normals estimated from noisy
+/// positions the growth may go one radius further (about 4000 neighbours
+/// instead of 2000), and a noisy sphere, where no radius adds a bias, takes
+/// it and averages more of the noise out; with exact normals the fourth
+/// order's gate is on and the ladder keeps its eight radii. The same bits
+/// for any thread count, and the reported error still covers the error.
+void TestWideLadder(Checks& checks)
+{
+  std::vector<testing::SurfaceSample> samples = testing::Sample(testing::Sphere(1.0), 20000, 101);
+  const double spacing = std::sqrt(4.0 * 3.141592653589793 / samples.size());
+  testing::AddPositionNoise(samples, 0.5 * spacing, 102);
+  EstimationSettings own;
+  own.EstimateNormals = true;
+  SerialRunner serial;
+  ThreadRunner threads(3);
+  Results estimated(samples.size(), false), threaded(samples.size(), false);
+  std::vector<double> standardError(samples.size());
+  std::vector<unsigned char> trusted(samples.size());
+  CurvatureBuffers buffers = estimated.Buffers();
+  buffers.StandardError = standardError.data();
+  buffers.Trusted = trusted.data();
+  const EstimationSummary summary =
+    EstimateCloud(MakeCloud(samples), own, Collectives{}, serial, nullptr, buffers);
+  Estimate(samples, own, threaded, threads);
+  const GivenNormalsRun given(samples);
+  const ErrorCover cover = CoverOf(samples, estimated, standardError, 1.0);
+  const double error = MeanError(samples, estimated);
+  // Points off by a fifth of |k| (a few, where the noise tilts an
+  // estimated normal most): within their stated error, and not trusted.
+  int farUncovered = 0, farTrusted = 0;
+  for (std::size_t i = 0; i < samples.size(); ++i)
+  {
+    const double pointError =
+      std::max(std::fabs(estimated.Minimum[i] - samples[i].MinimumCurvature),
+        std::fabs(estimated.Maximum[i] - samples[i].MaximumCurvature));
+    const bool far = estimated.Valid[i] && pointError > 0.2;
+    farUncovered += far && pointError > 2.0 * standardError[i];
+    farTrusted += far && trusted[i];
+  }
+  std::printf("wide ladder: noisy sphere (0.5 h), estimated normals: fourth order %d, largest "
+              "count %d, mean |k - exact| R %.5f, within 2 SE %.3f, off by > 20 %% %d (beyond 2 "
+              "SE %d, trusted %d); exact normals: fourth order %d, largest count %d\n",
+    summary.FourthOrderFits ? 1 : 0,
+    LargestNeighborCount(estimated),
+    error,
+    cover.Share(),
+    cover.Far,
+    farUncovered,
+    farTrusted,
+    given.Summary.FourthOrderFits ? 1 : 0,
+    LargestNeighborCount(given.Serial));
+  checks.True("wide ladder: estimated normals, the fourth order off", !summary.FourthOrderFits);
+  checks.True("wide ladder: estimated normals, beyond eight radii's 2048 neighbours",
+    LargestNeighborCount(estimated) > 3000);
+  checks.True("wide ladder: exact normals, the fourth order on", given.Summary.FourthOrderFits);
+  checks.True("wide ladder: exact normals, within eight radii's 2048 neighbours",
+    LargestNeighborCount(given.Serial) < 3000);
+  // Eight radii gave 0.0102.
+  checks.True("wide ladder: error below its bound", error < 0.0085);
+  checks.True("wide ladder: points off by 20 % of |k| within 2 standard errors", farUncovered == 0);
+  checks.True("wide ladder: no trusted point off by 20 % of |k|", farTrusted == 0);
+  checks.True("wide ladder: at least 85 % within 2 standard errors",
+    cover.Share() >= 0.85 && cover.Valid > 0);
+  checks.True("wide ladder: 3 threads bit-identical to 1", estimated.BitIdentical(threaded));
+}
+
 /// CoordinateSteps of the samples' positions, over a grid of cells about
 /// two spacings wide (as the estimation's).
 std::array<double, 3> StepsOf(const std::vector<testing::SurfaceSample>& samples)
@@ -1868,6 +1946,7 @@ int main(int argc, char* argv[])
     { "TestClippedMean", TestClippedMean },
     { "TestFourthOrder", TestFourthOrder },
     { "TestGatedThirdOrder", TestGatedThirdOrder },
+    { "TestWideLadder", TestWideLadder },
     { "TestCoordinateSteps", TestCoordinateSteps },
     { "TestRoundedPositions", TestRoundedPositions },
     { "TestHeightJets", TestHeightJets },
