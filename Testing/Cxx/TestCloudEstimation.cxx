@@ -587,6 +587,30 @@ struct GivenNormalsRun
   EstimationSummary Summary;
 };
 
+/// A cloud estimated serially with `settings`, with the reported standard
+/// errors and the trust flags.
+struct ReportedRun
+{
+  ReportedRun(const std::vector<testing::SurfaceSample>& samples,
+    const EstimationSettings& settings)
+    : Out(samples.size(), false)
+    , StandardError(samples.size())
+    , Trusted(samples.size())
+  {
+    SerialRunner serial;
+    CurvatureBuffers buffers = this->Out.Buffers();
+    buffers.StandardError = this->StandardError.data();
+    buffers.Trusted = this->Trusted.data();
+    this->Summary =
+      EstimateCloud(MakeCloud(samples), settings, Collectives{}, serial, nullptr, buffers);
+  }
+
+  Results Out;
+  std::vector<double> StandardError;
+  std::vector<unsigned char> Trusted;
+  EstimationSummary Summary;
+};
+
 /// The fourth order beyond the first radius (AutomaticScaleRule::
 /// FourthOrder): on noisy clouds with exact normals the gate turns it on and
 /// the error falls well below the third order's alone (an ellipsoid and a
@@ -739,16 +763,13 @@ void TestWideLadder(Checks& checks)
   testing::AddPositionNoise(samples, 0.5 * spacing, 102);
   EstimationSettings own;
   own.EstimateNormals = true;
-  SerialRunner serial;
+  const ReportedRun run(samples, own);
+  const Results& estimated = run.Out;
+  const std::vector<double>& standardError = run.StandardError;
+  const std::vector<unsigned char>& trusted = run.Trusted;
+  const EstimationSummary& summary = run.Summary;
   ThreadRunner threads(3);
-  Results estimated(samples.size(), false), threaded(samples.size(), false);
-  std::vector<double> standardError(samples.size());
-  std::vector<unsigned char> trusted(samples.size());
-  CurvatureBuffers buffers = estimated.Buffers();
-  buffers.StandardError = standardError.data();
-  buffers.Trusted = trusted.data();
-  const EstimationSummary summary =
-    EstimateCloud(MakeCloud(samples), own, Collectives{}, serial, nullptr, buffers);
+  Results threaded(samples.size(), false);
   Estimate(samples, own, threaded, threads);
   const GivenNormalsRun given(samples);
   const ErrorCover cover = CoverOf(samples, estimated, standardError, 1.0);
@@ -1796,7 +1817,6 @@ void TestFlatWithGivenNormals(Checks& checks)
 /// fit's own standard error, reported before, covered about a fifth.
 void TestReportedError(Checks& checks)
 {
-  SerialRunner serial;
   auto torus = testing::Sample(testing::Torus(3.0, 1.0), 12000, 81);
   const double spacing =
     std::sqrt(4.0 * 3.141592653589793 * 3.141592653589793 * 3.0 / torus.size());
@@ -1805,14 +1825,11 @@ void TestReportedError(Checks& checks)
   {
     EstimationSettings settings;
     settings.EstimateNormals = estimate;
-    Results r(torus.size(), false);
-    std::vector<double> standardError(torus.size());
-    std::vector<unsigned char> trusted(torus.size());
-    CurvatureBuffers buffers = r.Buffers();
-    buffers.StandardError = standardError.data();
-    buffers.Trusted = trusted.data();
-    const EstimationSummary summary =
-      EstimateCloud(MakeCloud(torus), settings, Collectives{}, serial, nullptr, buffers);
+    const ReportedRun run(torus, settings);
+    const Results& r = run.Out;
+    const std::vector<double>& standardError = run.StandardError;
+    const std::vector<unsigned char>& trusted = run.Trusted;
+    const EstimationSummary& summary = run.Summary;
     std::vector<double> ratios;
     int valid = 0, covered = 0, trustedFar = 0, trustedCount = 0;
     const double largest = 1.0; // 1 / r, the torus's largest |k|
