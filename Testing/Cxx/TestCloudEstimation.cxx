@@ -764,33 +764,28 @@ void TestWideLadder(Checks& checks)
   EstimationSettings own;
   own.EstimateNormals = true;
   const ReportedRun run(samples, own);
-  const Results& estimated = run.Out;
-  const std::vector<double>& standardError = run.StandardError;
-  const std::vector<unsigned char>& trusted = run.Trusted;
-  const EstimationSummary& summary = run.Summary;
   ThreadRunner threads(3);
   Results threaded(samples.size(), false);
   Estimate(samples, own, threaded, threads);
   const GivenNormalsRun given(samples);
-  const ErrorCover cover = CoverOf(samples, estimated, standardError, 1.0);
-  const double error = MeanError(samples, estimated);
+  const ErrorCover cover = CoverOf(samples, run.Out, run.StandardError, 1.0);
+  const double error = MeanError(samples, run.Out);
   // Points off by a fifth of |k| (a few, where the noise tilts an
   // estimated normal most): within their stated error, and not trusted.
   int farUncovered = 0, farTrusted = 0;
   for (std::size_t i = 0; i < samples.size(); ++i)
   {
-    const double pointError =
-      std::max(std::fabs(estimated.Minimum[i] - samples[i].MinimumCurvature),
-        std::fabs(estimated.Maximum[i] - samples[i].MaximumCurvature));
-    const bool far = estimated.Valid[i] && pointError > 0.2;
-    farUncovered += far && pointError > 2.0 * standardError[i];
-    farTrusted += far && trusted[i];
+    const double pointError = std::max(std::fabs(run.Out.Minimum[i] - samples[i].MinimumCurvature),
+      std::fabs(run.Out.Maximum[i] - samples[i].MaximumCurvature));
+    const bool far = run.Out.Valid[i] && pointError > 0.2;
+    farUncovered += far && pointError > 2.0 * run.StandardError[i];
+    farTrusted += far && run.Trusted[i];
   }
   std::printf("wide ladder: noisy sphere (0.5 h), estimated normals: fourth order %d, largest "
               "count %d, mean |k - exact| R %.5f, within 2 SE %.3f, off by > 20 %% %d (beyond 2 "
               "SE %d, trusted %d); exact normals: fourth order %d, largest count %d\n",
-    summary.FourthOrderFits ? 1 : 0,
-    LargestNeighborCount(estimated),
+    run.Summary.FourthOrderFits ? 1 : 0,
+    LargestNeighborCount(run.Out),
     error,
     cover.Share(),
     cover.Far,
@@ -798,9 +793,9 @@ void TestWideLadder(Checks& checks)
     farTrusted,
     given.Summary.FourthOrderFits ? 1 : 0,
     LargestNeighborCount(given.Serial));
-  checks.True("wide ladder: estimated normals, the fourth order off", !summary.FourthOrderFits);
+  checks.True("wide ladder: estimated normals, the fourth order off", !run.Summary.FourthOrderFits);
   checks.True("wide ladder: estimated normals, beyond eight radii's 2048 neighbours",
-    LargestNeighborCount(estimated) > 3000);
+    LargestNeighborCount(run.Out) > 3000);
   checks.True("wide ladder: exact normals, the fourth order on", given.Summary.FourthOrderFits);
   checks.True("wide ladder: exact normals, within eight radii's 2048 neighbours",
     LargestNeighborCount(given.Serial) < 3000);
@@ -810,7 +805,7 @@ void TestWideLadder(Checks& checks)
   checks.True("wide ladder: no trusted point off by 20 % of |k|", farTrusted == 0);
   checks.True("wide ladder: at least 85 % within 2 standard errors",
     cover.Share() >= 0.85 && cover.Valid > 0);
-  checks.True("wide ladder: 3 threads bit-identical to 1", estimated.BitIdentical(threaded));
+  checks.True("wide ladder: 3 threads bit-identical to 1", run.Out.BitIdentical(threaded));
 }
 
 /// CoordinateSteps of the samples' positions, over a grid of cells about
