@@ -546,6 +546,10 @@ void PointCurvatureEstimator::FitDirections(const FitSettings& settings)
         candidate23[i] = FitEquations23(sums);
         needQuality = needQuality || (candidate12[i].Valid && candidate23[i].Valid);
         break;
+      case FitMode::OrientedCircles:
+        // Fits no half planes (OrientedCircleFit.h has its own estimator):
+        // every direction stays without a fit.
+        break;
     }
   }
 
