@@ -49,19 +49,23 @@ int main(int argc, char* argv[])
   {
     std::fprintf(stderr,
       "usage: %s <torus|sphere|cylinder|saddle|ellipsoid|plane|paraboloid|wave> <points> "
-      "<output.vtp|output.xyz> [seed] [noise in spacings] [--points-only] [--rounded]\n"
+      "<output.vtp|output.xyz> [seed] [noise in spacings] [--points-only] [--rounded] "
+      "[--tilted-normals]\n"
       "  (--points-only: a .xyz of x y z alone, as most scans come; --rounded: the\n"
-      "  positions rounded to a grid of that many spacings instead of the noise)\n",
+      "  positions rounded to a grid of that many spacings instead of the noise;\n"
+      "  --tilted-normals: each normal turned by about 0.05 rad at random, as\n"
+      "  estimated normals are off)\n",
       argv[0]);
     return EXIT_FAILURE;
   }
-  bool pointsOnly = false, rounded = false;
+  bool pointsOnly = false, rounded = false, tilted = false;
   int numbers = argc; // the optional numbers come before the flags
   for (int a = 4; a < argc; ++a)
   {
     const std::string flag = argv[a];
     pointsOnly = pointsOnly || flag == "--points-only";
     rounded = rounded || flag == "--rounded";
+    tilted = tilted || flag == "--tilted-normals";
     if (flag.rfind("--", 0) == 0)
     {
       numbers = std::min(numbers, a);
@@ -108,6 +112,10 @@ int main(int argc, char* argv[])
     {
       pcurv::testing::AddPositionNoise(samples, noise * spacing, seed + 2);
     }
+  }
+  if (tilted)
+  {
+    pcurv::testing::TiltNormals(samples, 0.05, seed + 3);
   }
   const std::string output = argv[3];
   if (output.size() > 4 && output.substr(output.size() - 4) == ".xyz")

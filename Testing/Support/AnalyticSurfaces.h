@@ -355,6 +355,21 @@ inline void AddPositionNoise(std::vector<SurfaceSample>& samples, double sigma, 
   }
 }
 
+/// Turns every normal by a random tangential vector (Gaussian, standard
+/// deviation `angle` radians along each tangent axis), as estimated
+/// normals are off: normals that no longer follow the surface as exact
+/// ones do (the automatic scale's fourth order stays off for them).
+inline void TiltNormals(std::vector<SurfaceSample>& samples, double angle, std::uint64_t seed)
+{
+  Random random(seed);
+  for (SurfaceSample& s : samples)
+  {
+    Vec tilt{ { angle * random.Normal(), angle * random.Normal(), angle * random.Normal() } };
+    tilt = Add(tilt, Scale(-Dot(tilt, s.Normal), s.Normal));
+    s.Normal = Unit(Add(s.Normal, tilt));
+  }
+}
+
 /// Rounds every coordinate to a multiple of `step` (a grid of that
 /// spacing), then shifts it by `offset` (as LAS files store positions: an
 /// offset plus integers times a scale).
