@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <limits>
@@ -49,6 +50,19 @@ struct AutomaticScaleRule
   /// a few neighbours round to one plane), so it floors their variance.
   std::array<double, 3> CoordinateStep{};
   SharingRule Sharing;
+
+  /// The last radius of a ladder of `levels` radii from TypicalRadius.
+  double LargestRadiusOf(int levels) const
+  {
+    return this->TypicalRadius * std::pow(2.0, 0.5 * (levels - 1));
+  }
+
+  /// A ladder of `levels` radii: Levels and the LargestRadius it reaches.
+  void SetLevels(int levels)
+  {
+    this->Levels = levels;
+    this->LargestRadius = this->LargestRadiusOf(levels);
+  }
 };
 
 /// The automatic scale's estimate at a point: the chosen radius's fit, the

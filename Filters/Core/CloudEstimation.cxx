@@ -55,13 +55,6 @@ void ChooseAdjustment(const EstimationSettings& settings,
     adjustment.MaximumSurroundingsThreshold * adjustment.LengthUnit;
 }
 
-/// The automatic scale's largest radius: its ladder's last, from the
-/// cloud's typical first radius.
-double LargestRadiusOf(double typicalRadius, int levels)
-{
-  return typicalRadius * std::pow(2.0, 0.5 * (levels - 1));
-}
-
 /// The thresholds for every point from the settings and, where automatic,
 /// from the cloud (global in a parallel run).
 NeighborhoodRule ChooseThresholds(const EstimationSettings& settings,
@@ -86,14 +79,15 @@ NeighborhoodRule ChooseThresholds(const EstimationSettings& settings,
     rule.AutomaticScale = true;
     rule.Automatic.Tolerance = settings.AutomaticScaleTolerance;
     const double base = TypicalRadius(cloud, processes, boxes, rule.Automatic.BaseCount, ranges);
-    rule.Automatic.LargestRadius = LargestRadiusOf(base, rule.Automatic.Levels);
     rule.Automatic.TypicalRadius = base;
+    rule.Automatic.SetLevels(rule.Automatic.Levels);
     rule.Radius = base; // reported as the used s: the typical first radius
     rule.PlaneDistance = 0.0;
     rule.CellRadius = 2.0 * base;
     // Which ladder a cloud gets is known only once the halo is there
     // (NormalsFollowTheSurface): the halo reaches the longer one's radius.
-    rule.Reach = LargestRadiusOf(base, std::max(rule.Automatic.Levels, rule.Automatic.WideLevels));
+    rule.Reach =
+      rule.Automatic.LargestRadiusOf(std::max(rule.Automatic.Levels, rule.Automatic.WideLevels));
     // Sharing pays where neighbourhoods are wide (four times the first
     // radius: 256 neighbours); smaller ones are cheap to fit.
     rule.Automatic.Sharing.MinimumRadius = 4.0 * base;
@@ -407,9 +401,7 @@ bool EstimateEveryPoint(CloudPoints cloud,
     summary.FourthOrderFits = rule.Automatic.FourthOrder;
     if (!rule.Automatic.FourthOrder)
     {
-      rule.Automatic.Levels = rule.Automatic.WideLevels;
-      rule.Automatic.LargestRadius =
-        LargestRadiusOf(rule.Automatic.TypicalRadius, rule.Automatic.Levels);
+      rule.Automatic.SetLevels(rule.Automatic.WideLevels);
     }
   }
   // With shared fits the anchors come first, and take most of the time.
