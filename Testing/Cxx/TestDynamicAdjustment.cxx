@@ -239,27 +239,32 @@ void TestVaryingDensity(Checks& checks)
   ladder->DynamicAdjustmentOn();
   ladder->SetAdjustmentConstantsToPreset(vtkPrincipalCurvatureEstimation::LADDER);
   const Result ladderResult = Run(ladder, clean, "DVA, banded ladder 375, p = 0.2 L");
-  const double best =
-    BestFixedRadius(checks, clean, { 0.3, 0.4, 0.5, 0.6, 0.75 }, { 0.025, 0.1, 0.2 }, "noise-free");
   checks.Below(
     "DVA (paper) beats the default fixed radius (noise-free)", paperResult.Error, defaultError);
   checks.Below(
     "DVA (ladder) beats the default fixed radius (noise-free)", ladderResult.Error, defaultError);
-  // Measured: the paper's targets 1.28x the best fixed radius (s = 0.5,
-  // p = s / 40, which leaves 3.5% of the points unestimated; 0.98x the best
-  // that estimates them all); the banded ladder 1.06x, every point estimated.
-  // The paper's constant count takes the sparse side's radius beyond what
-  // the curvature there allows; the ladder steps down to fewer neighbours.
-  checks.Below("DVA (ladder) within 10% of the best fixed radius (noise-free)",
-    ladderResult.Error,
-    1.1 * best);
   // Errors are means over the estimated points: the ladder's must be all.
   checks.Below(
     "DVA (ladder) leaves at most 0.1% unestimated (noise-free)", ladderResult.Unestimated, 0.001);
-  checks.Below(
-    "DVA (paper) within 1.4x of the best fixed radius (noise-free)", paperResult.Error, 1.4 * best);
   CheckCountBand(checks, paperResult, "paper, noise-free");
   CheckCountBand(checks, ladderResult, "ladder, noise-free");
+  if (!UnderSanitizers)
+  {
+    const double best = BestFixedRadius(
+      checks, clean, { 0.3, 0.4, 0.5, 0.6, 0.75 }, { 0.025, 0.1, 0.2 }, "noise-free");
+    // Measured: the paper's targets 1.28x the best fixed radius (s = 0.5,
+    // p = s / 40, which leaves 3.5% of the points unestimated; 0.98x the
+    // best that estimates them all); the banded ladder 1.06x, every point
+    // estimated. The paper's constant count takes the sparse side's radius
+    // beyond what the curvature there allows; the ladder steps down to
+    // fewer neighbours.
+    checks.Below("DVA (ladder) within 10% of the best fixed radius (noise-free)",
+      ladderResult.Error,
+      1.1 * best);
+    checks.Below("DVA (paper) within 1.4x of the best fixed radius (noise-free)",
+      paperResult.Error,
+      1.4 * best);
+  }
 
   std::printf("torus, density varying 10x, noise 0.5 spacing:\n");
   auto noisy = VaryingDensityTorus(0.5);
@@ -279,16 +284,19 @@ void TestVaryingDensity(Checks& checks)
   noisyLadder->DynamicAdjustmentOn();
   noisyLadder->SetAdjustmentConstantsToPreset(vtkPrincipalCurvatureEstimation::NOISY_LADDER);
   const Result noisyLadderResult = Run(noisyLadder, noisy, "DVA, banded ladder 1000, p = 0.6 L");
-  const double noisyBest =
-    BestFixedRadius(checks, noisy, { 0.6, 0.7, 0.8, 0.9, 1.0, 1.2 }, { 0.1, 0.15, 0.2 }, "noisy");
   checks.Below("DVA (ladder) beats the default fixed radius (noisy)",
     noisyLadderResult.Error,
     noisyDefaultError);
-  // Measured: 1.05x (1.04-1.08x over seeds, densities varying 5x to 20x,
-  // and noise of 1 spacing; docs/dynamic-adjustment.md).
-  checks.Below("DVA (ladder) within 10% of the best fixed radius (noisy)",
-    noisyLadderResult.Error,
-    1.1 * noisyBest);
+  if (!UnderSanitizers)
+  {
+    const double noisyBest =
+      BestFixedRadius(checks, noisy, { 0.6, 0.7, 0.8, 0.9, 1.0, 1.2 }, { 0.1, 0.15, 0.2 }, "noisy");
+    // Measured: 1.05x (1.04-1.08x over seeds, densities varying 5x to 20x,
+    // and noise of 1 spacing; docs/dynamic-adjustment.md).
+    checks.Below("DVA (ladder) within 10% of the best fixed radius (noisy)",
+      noisyLadderResult.Error,
+      1.1 * noisyBest);
+  }
   checks.Below(
     "DVA (ladder) leaves at most 0.1% unestimated (noisy)", noisyLadderResult.Unestimated, 0.001);
   CheckCountBand(checks, thickResult, "paper's counts, noisy");
@@ -378,6 +386,10 @@ void TestThreadsAndScale(Checks& checks)
 int main()
 {
   Checks checks;
+  if (UnderSanitizers)
+  {
+    std::printf("under sanitizers: the sweeps of fixed radii are left out\n");
+  }
   TestStateMachine(checks);
   TestConstantSetters(checks);
   TestVaryingDensity(checks);

@@ -10,6 +10,23 @@
 #include <cstdio>
 #include <cstdlib>
 
+/// Whether the tests run under AddressSanitizer (Scripts/sanitize.sh). There
+/// the tests that are studies as well (sweeps of settings to compare with)
+/// leave the sweeps out: they exercise no code the single runs do not, and
+/// the sanitizers make them several times slower. The unsanitized run
+/// checks them.
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool UnderSanitizers = true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+constexpr bool UnderSanitizers = true;
+#else
+constexpr bool UnderSanitizers = false;
+#endif
+#else
+constexpr bool UnderSanitizers = false;
+#endif
+
 class Checks
 {
 public:
