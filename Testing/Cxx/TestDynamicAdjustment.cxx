@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <initializer_list>
 #include <vector>
@@ -95,6 +96,15 @@ void TestConstantSetters(Checks& checks)
       filter->GetSwitchLengths()[i] == fresh->GetSwitchLengths()[i];
   }
   checks.True("the paper's constants are the defaults", same);
+}
+
+/// Whether to compare with sweeps of fixed radii: a study as well as a
+/// test, run once (not under the sanitizers, which make it several times
+/// slower, nor where PCURV_SKIP_SWEEPS is set: the second registration, on
+/// the portable kernels, whose results the other tests compare already).
+bool RunSweeps()
+{
+  return !UnderSanitizers && std::getenv("PCURV_SKIP_SWEEPS") == nullptr;
 }
 
 /// A torus whose density falls tenfold from the +x side to the -x side.
@@ -248,7 +258,7 @@ void TestVaryingDensity(Checks& checks)
     "DVA (ladder) leaves at most 0.1% unestimated (noise-free)", ladderResult.Unestimated, 0.001);
   CheckCountBand(checks, paperResult, "paper, noise-free");
   CheckCountBand(checks, ladderResult, "ladder, noise-free");
-  if (!UnderSanitizers)
+  if (RunSweeps())
   {
     const double best = BestFixedRadius(
       checks, clean, { 0.3, 0.4, 0.5, 0.6, 0.75 }, { 0.025, 0.1, 0.2 }, "noise-free");
@@ -287,7 +297,7 @@ void TestVaryingDensity(Checks& checks)
   checks.Below("DVA (ladder) beats the default fixed radius (noisy)",
     noisyLadderResult.Error,
     noisyDefaultError);
-  if (!UnderSanitizers)
+  if (RunSweeps())
   {
     const double noisyBest =
       BestFixedRadius(checks, noisy, { 0.6, 0.7, 0.8, 0.9, 1.0, 1.2 }, { 0.1, 0.15, 0.2 }, "noisy");
@@ -386,9 +396,9 @@ void TestThreadsAndScale(Checks& checks)
 int main()
 {
   Checks checks;
-  if (UnderSanitizers)
+  if (!RunSweeps())
   {
-    std::printf("under sanitizers: the sweeps of fixed radii are left out\n");
+    std::printf("the sweeps of fixed radii are left out (sanitizers or PCURV_SKIP_SWEEPS)\n");
   }
   TestStateMachine(checks);
   TestConstantSetters(checks);
