@@ -526,6 +526,15 @@ void TestCubicTerms(Checks& checks)
 /// How the reported standard errors cover the errors max(|dk_min|, |dk_max|)
 /// of the valid points: how many are valid, within twice their error and
 /// off by more than a fifth of `largest`, and the median error / error.
+/// A point's error: the larger of its two principal curvatures' errors.
+double PointError(const Results& r,
+  const std::vector<testing::SurfaceSample>& samples,
+  std::size_t i)
+{
+  return std::max(std::fabs(r.Minimum[i] - samples[i].MinimumCurvature),
+    std::fabs(r.Maximum[i] - samples[i].MaximumCurvature));
+}
+
 struct ErrorCover
 {
   int Valid = 0, Covered = 0, Far = 0;
@@ -548,8 +557,7 @@ ErrorCover CoverOf(const std::vector<testing::SurfaceSample>& samples,
   {
     if (r.Valid[i])
     {
-      const double pointError = std::max(std::fabs(r.Minimum[i] - samples[i].MinimumCurvature),
-        std::fabs(r.Maximum[i] - samples[i].MaximumCurvature));
+      const double pointError = PointError(r, samples, i);
       ++cover.Valid;
       cover.Covered += pointError <= 2.0 * standardError[i];
       cover.Far += pointError > 0.2 * largest;
@@ -775,8 +783,7 @@ void TestWideLadder(Checks& checks)
   int farUncovered = 0, farTrusted = 0;
   for (std::size_t i = 0; i < samples.size(); ++i)
   {
-    const double pointError = std::max(std::fabs(run.Out.Minimum[i] - samples[i].MinimumCurvature),
-      std::fabs(run.Out.Maximum[i] - samples[i].MaximumCurvature));
+    const double pointError = PointError(run.Out, samples, i);
     const bool far = run.Out.Valid[i] && pointError > 0.2;
     farUncovered += far && pointError > 2.0 * run.StandardError[i];
     farTrusted += far && run.Trusted[i];
@@ -1203,8 +1210,7 @@ void TestHeightJetsLittleNoise(Checks& checks)
     int off = 0;
     for (std::size_t i = 0; i < samples.size(); ++i)
     {
-      const double error = std::max(std::fabs(r.Minimum[i] - samples[i].MinimumCurvature),
-        std::fabs(r.Maximum[i] - samples[i].MaximumCurvature));
+      const double error = PointError(r, samples, i);
       off += r.Valid[i] && error > 0.2 / radius;
     }
     std::printf("height jets: sphere with noise 0.001 h (seed %d): jets at %lld points, %d valid "
@@ -1834,8 +1840,7 @@ void TestReportedError(Checks& checks)
       {
         continue;
       }
-      const double error = std::max(std::fabs(r.Minimum[i] - torus[i].MinimumCurvature),
-        std::fabs(r.Maximum[i] - torus[i].MaximumCurvature));
+      const double error = PointError(r, torus, i);
       ++valid;
       covered += error <= 2.0 * standardError[i] ? 1 : 0;
       ratios.push_back(error / standardError[i]);
@@ -1912,8 +1917,7 @@ void TestSharedFits(Checks& checks)
     const double* d = &shared.MaximumDirection[3 * i];
     aligned += std::fabs(testing::Dot({ { d[0], d[1], d[2] } }, torus[i].MaximumDirection)) >
       std::cos(10.0 * 3.141592653589793 / 180.0);
-    const double error = std::max(std::fabs(shared.Minimum[i] - torus[i].MinimumCurvature),
-      std::fabs(shared.Maximum[i] - torus[i].MaximumCurvature));
+    const double error = PointError(shared, torus, i);
     covered += error <= 2.0 * standardError[i];
   }
   checks.True("shared fits: maximum direction within 10 degrees at 95 % of the points",

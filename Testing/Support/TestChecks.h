@@ -15,14 +15,13 @@
 /// leave the sweeps out: they exercise no code the single runs do not, and
 /// the sanitizers make them several times slower. The unsanitized run
 /// checks them.
-#if defined(__SANITIZE_ADDRESS__)
-constexpr bool UnderSanitizers = true;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-constexpr bool UnderSanitizers = true;
-#else
-constexpr bool UnderSanitizers = false;
+#if defined(__has_feature)
+#if __has_feature(address_sanitizer) // clang's way of saying it
+#define PCURV_ADDRESS_SANITIZER
 #endif
+#endif
+#if defined(__SANITIZE_ADDRESS__) || defined(PCURV_ADDRESS_SANITIZER) // GCC's, clang's
+constexpr bool UnderSanitizers = true;
 #else
 constexpr bool UnderSanitizers = false;
 #endif
