@@ -2,7 +2,11 @@
 and settings, so that a refactoring can be checked to leave the results
 bit-identical: run it before and after, and compare the two listings.
 
-    pvpython Scripts/output_digest.py CLOUD.vtp [CLOUD.vtp ...] > digest.txt
+    pvpython Scripts/output_digest.py CLOUD.(vtp|bin) [...] > digest.txt
+
+A .bin is a cloud of the shared accuracy suite (little-endian float64 rows
+of x y z nx ny nz and eight more columns). Every cloud is also run without
+its normals (the normals estimated), and through the normals filter alone.
 
 Needs the wrapped Python package on PYTHONPATH (the build's
 lib/python3.X/site-packages). One line per (cloud, setting, array): the
@@ -12,11 +16,14 @@ SHA-256 of the array's raw values, with the array's type and shape.
 import hashlib
 import sys
 
+import numpy
+
 from vtkmodules.vtkCommonDataModel import vtkPolyData
 from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
-from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
+from vtkmodules.vtkCommonCore import vtkPoints
 
-from principal_curvatures import vtkPrincipalCurvatureEstimation
+from principal_curvatures import vtkPointCloudNormalEstimation, vtkPrincipalCurvatureEstimation
 
 
 def configure_default(f):
@@ -99,16 +106,54 @@ def damaged(cloud):
     return copy
 
 
-VARIANTS = [("", lambda cloud: cloud), ("scaled", scaled), ("damaged", damaged)]
+def without_normals(cloud):
+    """The positions alone: the filter estimates the normals."""
+    copy = vtkPolyData()
+    copy.DeepCopy(cloud)
+    copy.GetPointData().SetNormals(None)
+    return copy
 
 
-def digest_lines(path):
+VARIANTS = [("", lambda cloud: cloud), ("scaled", scaled), ("damaged", damaged),
+            ("positions", without_normals)]
+
+
+def read_cloud(path):
+    if path.endswith(".bin"):
+        data = numpy.fromfile(path, dtype="<f8").reshape(-1, 14)
+        cloud = vtkPolyData()
+        points = vtkPoints()
+        points.SetData(numpy_to_vtk(numpy.ascontiguousarray(data[:, 0:3]), deep=True))
+        cloud.SetPoints(points)
+        normals = numpy_to_vtk(numpy.ascontiguousarray(data[:, 3:6]), deep=True)
+        normals.SetName("Normals")
+        cloud.GetPointData().SetNormals(normals)
+        return cloud
     reader = vtkXMLPolyDataReader()
     reader.SetFileName(path)
     reader.Update()
+    return reader.GetOutput()
+
+
+def array_lines(label, name, point_data):
+    for i in range(point_data.GetNumberOfArrays()):
+        array = point_data.GetArray(i)
+        values = vtk_to_numpy(array)
+        digest = hashlib.sha256(values.tobytes()).hexdigest()[:16]
+        yield "%s %s %s %s %s %s" % (
+            label, name, array.GetName(), values.dtype, values.shape, digest)
+
+
+def digest_lines(path):
+    cloud = read_cloud(path)
     for variant, make in VARIANTS:
-        for line in digest_variant(path.split("/")[-1] + variant, make(reader.GetOutput())):
+        for line in digest_variant(path.split("/")[-1] + variant, make(cloud)):
             yield line
+    normals = vtkPointCloudNormalEstimation()
+    normals.SetInputData(without_normals(cloud))
+    normals.Update()
+    for line in array_lines(path.split("/")[-1], "normals_filter", normals.GetOutput().GetPointData()):
+        yield line
 
 
 def digest_variant(label, cloud):
@@ -117,13 +162,8 @@ def digest_variant(label, cloud):
         f.SetInputData(cloud)
         configure(f)
         f.Update()
-        pd = f.GetOutput().GetPointData()
-        for i in range(pd.GetNumberOfArrays()):
-            array = pd.GetArray(i)
-            values = vtk_to_numpy(array)
-            digest = hashlib.sha256(values.tobytes()).hexdigest()[:16]
-            yield "%s %s %s %s %s %s" % (
-                label, name, array.GetName(), values.dtype, values.shape, digest)
+        for line in array_lines(label, name, f.GetOutput().GetPointData()):
+            yield line
         yield "%s %s used s=%r p=%r L=%r unestimated=%d" % (
             label, name, f.GetUsedSurroundingsThreshold(),
             f.GetUsedPlaneDistanceThreshold(), f.GetUsedLengthUnit(),
