@@ -19,7 +19,6 @@
 #include "vtkPointSet.h"
 #include "vtkPolyData.h"
 #include "vtkPoints.h"
-#include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
 
 #include "vtkAlgorithm.h"
@@ -280,10 +279,9 @@ vtkNew<vtkCellArray> MakeVertexCells(vtkIdType numberOfPoints)
 
 struct RunnerFunctor
 {
-  const WorkRunner::Work& Run;
-  vtkSMPThreadLocal<EstimationScratch> Scratch;
+  const RangeWork& Run;
 
-  void operator()(vtkIdType begin, vtkIdType end) { this->Run(begin, end, this->Scratch.Local()); }
+  void operator()(vtkIdType begin, vtkIdType end) { this->Run(begin, end); }
 };
 } // namespace
 
@@ -361,9 +359,9 @@ void AlgorithmProgress::Pass()
   }
 }
 
-void SMPToolsRunner::RunParallel(std::int64_t count, std::int64_t grain, const Work& work)
+void SMPToolsRunner::RunParallel(std::int64_t count, std::int64_t grain, const RangeWork& work)
 {
-  RunnerFunctor functor{ work, {} };
+  RunnerFunctor functor{ work };
   std::string backend = vtkSMPTools::GetBackend();
   if (backend == "Sequential" && !std::getenv("VTK_SMP_BACKEND_IN_USE"))
   {
@@ -373,7 +371,7 @@ void SMPToolsRunner::RunParallel(std::int64_t count, std::int64_t grain, const W
     [&]() { vtkSMPTools::For(0, count, grain, functor); });
 }
 
-void SMPToolsRunner::For(std::int64_t count, std::int64_t grain, const Work& work)
+void SMPToolsRunner::For(std::int64_t count, std::int64_t grain, const RangeWork& work)
 {
   if (!this->Progress)
   {

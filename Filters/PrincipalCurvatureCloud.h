@@ -124,7 +124,7 @@ auto RunPassingProgress(AlgorithmProgress& progress, Estimate&& estimate)
   return done.get();
 }
 
-/// The core's work items on vtkSMPTools threads, each with its own scratch:
+/// The core's work items on vtkSMPTools threads:
 /// all cores unless the user chose otherwise (ParaView's bundled VTK
 /// defaults to the sequential backend; STDThread is used then, unless a
 /// backend was requested through the environment). With `progress`, the
@@ -138,10 +138,10 @@ public:
     , Progress(progress)
   {
   }
-  void For(std::int64_t count, std::int64_t grain, const Work& work) override;
+  void For(std::int64_t count, std::int64_t grain, const RangeWork& work) override;
 
 private:
-  void RunParallel(std::int64_t count, std::int64_t grain, const Work& work);
+  void RunParallel(std::int64_t count, std::int64_t grain, const RangeWork& work);
 
   int MaximumThreads;
   AlgorithmProgress* Progress;

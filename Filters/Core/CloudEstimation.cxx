@@ -1,6 +1,7 @@
 #include "CloudEstimation.h"
 #include "ItemEstimation.h"
 #include "ResultWriter.h"
+#include "ScratchPool.h"
 
 #include <algorithm>
 #include <atomic>
@@ -14,7 +15,6 @@ namespace
 {
 constexpr double NaN = std::numeric_limits<double>::quiet_NaN();
 /// Points (or cells) per range of a parallel grid build.
-constexpr std::int64_t GridBuildGrain = 1 << 15;
 
 /// The adjustment's target counts within [1, 1e6] (NaN: 1): a count outside
 /// it has no meaning, and beyond the int range it could not be reported in
@@ -65,7 +65,6 @@ NeighborhoodRule ChooseThresholds(const EstimationSettings& settings,
   WorkRunner& runner,
   EstimationSummary& summary)
 {
-  const ParallelRanges ranges = RangesOf(runner, GridBuildGrain);
   NeighborhoodRule rule;
   rule.KNearest = settings.Neighborhood == NeighborhoodMode::KNearest;
   rule.K = settings.NumberOfNeighbors;
@@ -78,7 +77,7 @@ NeighborhoodRule ChooseThresholds(const EstimationSettings& settings,
   {
     rule.AutomaticScale = true;
     rule.Automatic.Tolerance = settings.AutomaticScaleTolerance;
-    const double base = TypicalRadius(cloud, processes, boxes, rule.Automatic.BaseCount, ranges);
+    const double base = TypicalRadius(cloud, processes, boxes, rule.Automatic.BaseCount, &runner);
     rule.Automatic.TypicalRadius = base;
     rule.Automatic.SetLevels(rule.Automatic.Levels);
     rule.Radius = base; // reported as the used s: the typical first radius
@@ -113,7 +112,7 @@ NeighborhoodRule ChooseThresholds(const EstimationSettings& settings,
   const bool needsTypicalRadius =
     rule.Adjusted ? settings.AutomaticLengthUnit : (settings.AutomaticThresholds || rule.KNearest);
   const double typicalRadius =
-    needsTypicalRadius ? TypicalRadius(cloud, processes, boxes, typicalCount, ranges) : 0.0;
+    needsTypicalRadius ? TypicalRadius(cloud, processes, boxes, typicalCount, &runner) : 0.0;
   rule.CellRadius = typicalRadius;
   if (rule.Adjusted)
   {
@@ -370,10 +369,7 @@ bool EstimateEveryPoint(CloudPoints cloud,
     RemoveRepeatedHalo(cloud);
   }
   PointGrid grid;
-  grid.Build(cloud.Coordinates.data(),
-    cloud.GetNumberOfPoints(),
-    lattice,
-    RangesOf(run.Runner, GridBuildGrain));
+  grid.Build(cloud.Coordinates.data(), cloud.GetNumberOfPoints(), lattice, &run.Runner);
   ProcessingOrder order;
   if (rule.Adjusted)
   {
@@ -418,10 +414,14 @@ bool EstimateEveryPoint(CloudPoints cloud,
   std::vector<unsigned char> jetMarks(rule.AutomaticScale ? cloud.GetNumberOfPoints() : 0, 0);
   points.MarkJetsIn(rule.AutomaticScale ? jetMarks.data() : nullptr);
   ItemEstimator anchorEstimator(order, points, anchorProgress);
+  ScratchPool<EstimationScratch> scratches;
   run.Runner.For(static_cast<std::int64_t>(anchors.Points.size()),
     64,
-    [&](std::int64_t begin, std::int64_t end, EstimationScratch& scratch)
-    { anchorEstimator.EstimateAnchors(begin, end, anchors, scratch); });
+    [&](std::int64_t begin, std::int64_t end)
+    {
+      const ScratchPool<EstimationScratch>::Lease scratch(scratches);
+      anchorEstimator.EstimateAnchors(begin, end, anchors, *scratch);
+    });
   StageProgress progress(run.Monitor,
     run.NormalsShare + anchorShare,
     1.0 - run.NormalsShare - anchorShare,
@@ -434,8 +434,11 @@ bool EstimateEveryPoint(CloudPoints cloud,
   {
     run.Runner.For(order.GetNumberOfItems(),
       rule.Adjusted ? 1 : 1024,
-      [&](std::int64_t begin, std::int64_t end, EstimationScratch& scratch)
-      { estimator.Estimate(begin, end, scratch); });
+      [&](std::int64_t begin, std::int64_t end)
+      {
+        const ScratchPool<EstimationScratch>::Lease scratch(scratches);
+        estimator.Estimate(begin, end, *scratch);
+      });
   }
   // Every process stops, or none: the steps after this one are collective.
   if (!run.Processes.Min(progress.Stopped() || anchorProgress.Stopped() ? 0 : 1))

@@ -22,6 +22,7 @@
 #include "OrientedCircleFit.h"
 #include "PointGrid.h"
 #include "PrincipalCurvatureCore.h"
+#include "Progress.h"
 #include "WorkRunner.h"
 
 #include <array>

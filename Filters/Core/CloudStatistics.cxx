@@ -662,7 +662,7 @@ double TypicalRadius(const CloudPoints& cloud,
   const Collectives& processes,
   const CloudBoxes& boxes,
   int k,
-  const ParallelRanges& ranges)
+  WorkRunner* runner)
 {
   const std::int64_t globalCount = boxes.GlobalCount;
   if (globalCount < 2)
@@ -692,7 +692,7 @@ double TypicalRadius(const CloudPoints& cloud,
   std::vector<double> scratch;
   auto sampleRadii = [&](const CloudPoints& searched)
   {
-    grid.Build(searched.Coordinates.data(), searched.GetNumberOfPoints(), lattice, ranges);
+    grid.Build(searched.Coordinates.data(), searched.GetNumberOfPoints(), lattice, runner);
     std::vector<double> radii;
     for (const std::int64_t i : sample)
     {

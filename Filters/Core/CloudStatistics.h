@@ -182,12 +182,12 @@ bool InSpacingSample(const double x[3],
 /// point: a radius holding about k neighbours at a typical point. When
 /// distributed, the sample's queries also see a halo of the other pieces
 /// (on a copy: `cloud` is not changed). The grid it searches is built in
-/// `ranges` where given.
+/// `runner` where given.
 double TypicalRadius(const CloudPoints& cloud,
   const Collectives& processes,
   const CloudBoxes& boxes,
   int k,
-  const ParallelRanges& ranges = nullptr);
+  WorkRunner* runner = nullptr);
 
 /// The lattice every process uses for a query radius: the grid box and the
 /// global count, cells of half the radius (a query then visits at most

@@ -13,15 +13,28 @@
 #include "CloudStatistics.h"
 #include "DynamicAdjustment.h"
 #include "PointGrid.h"
+#include "Progress.h"
 #include "ResultWriter.h"
 #include "SharedFits.h"
-#include "WorkRunner.h"
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace pcurv
 {
+
+/// A thread's reusable buffers for the estimation's work items.
+struct EstimationScratch
+{
+  PointCurvatureEstimator Estimator;
+  OrientedCircleEstimator OrientedEstimator;
+  AutomaticScaleScratch Automatic;
+  DynamicAdjustment Adjustment;
+  std::vector<double> Distances;
+  NeighborOffsets Neighbors;
+  std::vector<std::pair<double, std::int64_t>> Ranked;
+};
 
 /// How neighbourhoods and thresholds are chosen for every point.
 struct NeighborhoodRule

@@ -1,5 +1,6 @@
 #include "NormalEstimation.h"
 
+#include "Progress.h"
 #include "WorkRunner.h"
 #include "OrientationGraph.h"
 #include "ScaledCovariance.h"
@@ -79,7 +80,7 @@ public:
     coordinates.resize(static_cast<std::size_t>(3 * this->Size()));
     runner.For(this->Size(),
       65536,
-      [&](std::int64_t begin, std::int64_t end, EstimationScratch&)
+      [&](std::int64_t begin, std::int64_t end)
       {
         for (std::int64_t p = begin; p < end; ++p)
         {
@@ -203,7 +204,7 @@ void OrderedCloud::SortByCell(WorkRunner& runner)
   std::vector<std::int64_t> cellOf(n);
   runner.For(n,
     65536,
-    [&](std::int64_t begin, std::int64_t end, EstimationScratch&)
+    [&](std::int64_t begin, std::int64_t end)
     {
       for (std::int64_t i = begin; i < end; ++i)
       {
@@ -217,7 +218,7 @@ void OrderedCloud::SortByCell(WorkRunner& runner)
   { return PrecedesInCell(coordinates, a, b); };
   runner.For(cells,
     65536,
-    [&](std::int64_t begin, std::int64_t end, EstimationScratch&)
+    [&](std::int64_t begin, std::int64_t end)
     {
       for (std::int64_t c = begin; c < end; ++c)
       {
@@ -241,7 +242,7 @@ void OrderedCloud::CopyInOrder(WorkRunner& runner)
   }
   runner.For(n,
     65536,
-    [&](std::int64_t begin, std::int64_t end, EstimationScratch&)
+    [&](std::int64_t begin, std::int64_t end)
     {
       for (std::int64_t p = begin; p < end; ++p)
       {
@@ -972,7 +973,7 @@ SampleNeighborhoods::SampleNeighborhoods(const CloudPoints& cloud,
   std::vector<std::int32_t> slotOf(n);
   runner.For(n,
     65536,
-    [&](std::int64_t begin, std::int64_t end, EstimationScratch&)
+    [&](std::int64_t begin, std::int64_t end)
     {
       for (std::int64_t i = begin; i < end; ++i)
       {
@@ -1045,7 +1046,7 @@ bool QuickTypicalRadius(const CloudPoints& cloud,
   std::vector<unsigned char> sampled(cloud.NumberOfOwnPoints);
   runner.For(cloud.NumberOfOwnPoints,
     65536,
-    [&](std::int64_t begin, std::int64_t end, EstimationScratch&)
+    [&](std::int64_t begin, std::int64_t end)
     {
       for (std::int64_t i = begin; i < end; ++i)
       {
@@ -1159,7 +1160,7 @@ NormalSummary EstimateNormals(CloudPoints& cloud,
   fits.Neighbors.Assign(n * usable.GraphNeighbors, n - 1);
   runner.For(n,
     1024,
-    [&](std::int64_t begin, std::int64_t end, EstimationScratch&)
+    [&](std::int64_t begin, std::int64_t end)
     {
       if (progress && progress->Stopped())
       {

@@ -10,7 +10,7 @@ void DropRepeatedEdges(PlaneFits& fits, WorkRunner& runner)
   std::vector<unsigned char> repeated(static_cast<std::size_t>(fits.Neighbors.Size()), 0);
   runner.For(n,
     4096,
-    [&](std::int64_t begin, std::int64_t end, EstimationScratch&)
+    [&](std::int64_t begin, std::int64_t end)
     {
       fits.Neighbors.Visit(
         [&](const auto* ids)
@@ -31,7 +31,7 @@ void DropRepeatedEdges(PlaneFits& fits, WorkRunner& runner)
     });
   runner.For(fits.Neighbors.Size(),
     1 << 16,
-    [&](std::int64_t begin, std::int64_t end, EstimationScratch&)
+    [&](std::int64_t begin, std::int64_t end)
     {
       for (std::int64_t i = begin; i < end; ++i)
       {

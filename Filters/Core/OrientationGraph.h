@@ -169,7 +169,7 @@ private:
     };
     runner.For(Blocks,
       1,
-      [&](std::int64_t begin, std::int64_t end, EstimationScratch&)
+      [&](std::int64_t begin, std::int64_t end)
       {
         for (std::int64_t block = begin; block < end; ++block)
         {
@@ -203,7 +203,7 @@ private:
     this->Entries.resize(static_cast<std::size_t>(this->Start[n]));
     runner.For(Blocks,
       1,
-      [&](std::int64_t begin, std::int64_t end, EstimationScratch&)
+      [&](std::int64_t begin, std::int64_t end)
       {
         for (std::int64_t block = begin; block < end; ++block)
         {

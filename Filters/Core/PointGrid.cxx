@@ -97,21 +97,13 @@ void CellStarts::Clear()
 void PointGrid::Build(const double* coordinates,
   std::int64_t count,
   const GridLattice& lattice,
-  const ParallelRanges& ranges)
+  WorkRunner* runner,
+  std::int64_t grain)
 {
   // Each range writes entries of its own: the same grid on any number of
   // threads.
-  const auto inRanges = [&ranges](std::int64_t n, const RangeWork& work)
-  {
-    if (ranges)
-    {
-      ranges(n, work);
-    }
-    else
-    {
-      work(0, n);
-    }
-  };
+  const auto inRanges = [runner, grain](std::int64_t n, const RangeWork& work)
+  { RunRanges(runner, n, grain, work); };
   this->Lattice = lattice;
   this->Ids.clear();
   for (std::vector<double>& axis : this->Sorted)

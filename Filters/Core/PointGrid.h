@@ -22,6 +22,7 @@
 #define PointGrid_h
 
 #include "IndexList.h"
+#include "WorkRunner.h"
 
 #include <algorithm>
 #include <array>
@@ -165,23 +166,21 @@ inline bool PrecedesInCell(const double* coordinates, std::int64_t a, std::int64
   return PointPrecedes(coordinates + 3 * a, a, coordinates + 3 * b, b);
 }
 
-/// Work on the items [begin, end) of a range.
-using RangeWork = std::function<void(std::int64_t begin, std::int64_t end)>;
-/// Calls the work on ranges that together cover [0, count) once, possibly
-/// on several threads at a time.
-using ParallelRanges = std::function<void(std::int64_t count, const RangeWork& work)>;
+/// Points or cells per range when a grid is built on several threads.
+constexpr std::int64_t GridBuildGrain = 1 << 15;
 
 class PointGrid
 {
 public:
   /// Builds the grid over `count` points (xyz triplets, all finite) on the
   /// given lattice; only the cells spanned by these points are stored. Its
-  /// passes over the points and the cells run in `ranges` where given (the
-  /// same grid on any number of threads).
+  /// passes over the points and the cells run in `runner` where given, in
+  /// ranges of `grain` (the same grid on any number of threads).
   void Build(const double* coordinates,
     std::int64_t count,
     const GridLattice& lattice,
-    const ParallelRanges& ranges = nullptr);
+    WorkRunner* runner = nullptr,
+    std::int64_t grain = GridBuildGrain);
 
   std::int64_t GetNumberOfPoints() const { return static_cast<std::int64_t>(this->Ids.size()); }
   double GetCellSize() const { return this->Lattice.CellSize; }

@@ -1,55 +1,23 @@
 #include "WorkRunner.h"
 
-#include <algorithm>
-
 namespace pcurv
 {
 
-StageProgress::StageProgress(ProgressMonitor* monitor,
-  double first,
-  double share,
-  std::int64_t items)
-  : Monitor(monitor)
-  , First(first)
-  , Share(share)
-  , Items(std::max<std::int64_t>(items, 1))
+void SerialRunner::For(std::int64_t count, std::int64_t, const RangeWork& work)
 {
+  work(0, count);
 }
 
-bool StageProgress::Advance(std::int64_t done)
+void RunRanges(WorkRunner* runner, std::int64_t count, std::int64_t grain, const RangeWork& work)
 {
-  if (!this->Monitor || done <= 0)
+  if (runner)
   {
-    return !this->Stopped();
+    runner->For(count, grain, work);
   }
-  const std::int64_t reached = this->Done.fetch_add(done, std::memory_order_relaxed) + done;
-  return this->Reach(static_cast<double>(reached) / static_cast<double>(this->Items));
-}
-
-bool StageProgress::Reach(double fraction)
-{
-  if (this->Monitor &&
-    !this->Monitor->Continue(this->First + this->Share * std::min(std::max(fraction, 0.0), 1.0)))
+  else
   {
-    this->Stop.store(true, std::memory_order_relaxed);
+    work(0, count);
   }
-  return !this->Stopped();
-}
-
-ParallelRanges RangesOf(WorkRunner& runner, std::int64_t grain)
-{
-  return [&runner, grain](std::int64_t count, const RangeWork& work)
-  {
-    runner.For(count,
-      grain,
-      [&work](std::int64_t begin, std::int64_t end, EstimationScratch&) { work(begin, end); });
-  };
-}
-
-void SerialRunner::For(std::int64_t count, std::int64_t, const Work& work)
-{
-  EstimationScratch scratch;
-  work(0, count, scratch);
 }
 
 } // namespace pcurv

@@ -1581,6 +1581,19 @@ void TestClippedMean(Checks& checks)
     inside >= 0.95 * torus.size() && clip <= 0.625 * 1.1);
 }
 
+/// Ranges of `grain` items, taken last to first on the calling thread.
+class BackwardsRunner : public WorkRunner
+{
+public:
+  void For(std::int64_t count, std::int64_t grain, const RangeWork& work) override
+  {
+    for (std::int64_t end = count; end > 0; end -= std::min(end, grain))
+    {
+      work(std::max<std::int64_t>(0, end - grain), end);
+    }
+  }
+};
+
 /// A grid over a sparse cloud with a patch thousands of times denser: the
 /// fine query finds exactly the points within the radius (as the plain one
 /// and brute force do), a shell gathers the same points from an inner radius
@@ -1611,17 +1624,9 @@ void TestDenseCells(Checks& checks)
   // taken last to first: the same order, the same shells.
   ThreadRunner threads(3);
   PointGrid threaded, backwards;
-  threaded.Build(xyz.data(), n, lattice, RangesOf(threads, 7));
-  backwards.Build(xyz.data(),
-    n,
-    lattice,
-    [](std::int64_t count, const RangeWork& work)
-    {
-      for (std::int64_t end = count; end > 0; end -= std::min<std::int64_t>(end, 5))
-      {
-        work(std::max<std::int64_t>(0, end - 5), end);
-      }
-    });
+  threaded.Build(xyz.data(), n, lattice, &threads, 7);
+  BackwardsRunner last_to_first;
+  backwards.Build(xyz.data(), n, lattice, &last_to_first, 5);
   bool sameOrder = true;
   for (const PointGrid* other : { &threaded, &backwards })
   {

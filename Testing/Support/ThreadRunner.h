@@ -2,7 +2,7 @@
  * @file ThreadRunner.h
  * @brief A WorkRunner on plain threads, for the tests and benchmarks of the
  * core (the filter uses VTK's SMP tools): ranges of `grain` items handed out
- * to the threads in turn, each thread with its own scratch.
+ * to the threads in turn.
  */
 #ifndef ThreadRunner_h
 #define ThreadRunner_h
@@ -27,7 +27,7 @@ public:
   {
   }
 
-  void For(std::int64_t count, std::int64_t grain, const Work& work) override
+  void For(std::int64_t count, std::int64_t grain, const RangeWork& work) override
   {
     std::vector<std::thread> pool;
     for (int t = 0; t < this->Threads; ++t)
@@ -35,10 +35,9 @@ public:
       pool.emplace_back(
         [&, t]()
         {
-          EstimationScratch scratch;
           for (std::int64_t begin = t * grain; begin < count; begin += this->Threads * grain)
           {
-            work(begin, std::min(count, begin + grain), scratch);
+            work(begin, std::min(count, begin + grain));
           }
         });
     }
