@@ -16,9 +16,9 @@
 // that share of them into a blob 50 times smaller (dense cells). For
 // instruction counts, run it under valgrind --tool=callgrind with --runs 1.
 #include "AnalyticSurfaces.h"
-#include "CloudEstimation.h"
+#include "Estimation/CloudEstimation.h"
 #include "ThreadRunner.h"
-#include "NormalEstimation.h"
+#include "Normals/NormalEstimation.h"
 
 #include <time.h>
 

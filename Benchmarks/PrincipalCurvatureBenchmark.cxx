@@ -18,8 +18,8 @@
 // CSV (one measurement a line) for plot_benchmark.py.
 #include "AnalyticClouds.h"
 #include "BenchmarkReport.h"
-#include "PointGrid.h"
-#include "PrincipalCurvatureCore.h"
+#include "Neighbors/PointGrid.h"
+#include "Fits/PrincipalCurvatureCore.h"
 #include "vtkPrincipalCurvatureEstimation.h"
 #ifdef PCURV_WITH_CGAL
 #include "CgalJetPeer.h"

@@ -1,4 +1,4 @@
-#include "FileInput.h"
+#include "FileFormats/FileInput.h"
 
 #include <algorithm>
 #include <cctype>

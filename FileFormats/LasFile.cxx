@@ -1,4 +1,4 @@
-#include "LasFile.h"
+#include "FileFormats/LasFile.h"
 
 #include <algorithm>
 #include <cerrno>

@@ -10,7 +10,7 @@
 #ifndef pcurv_LasFile_h
 #define pcurv_LasFile_h
 
-#include "FileInput.h"
+#include "FileFormats/FileInput.h"
 
 #include <cstdint>
 #include <string>

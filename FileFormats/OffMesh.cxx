@@ -1,4 +1,4 @@
-#include "OffMesh.h"
+#include "FileFormats/OffMesh.h"
 
 #include <algorithm>
 #include <charconv>

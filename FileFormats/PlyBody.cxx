@@ -1,4 +1,4 @@
-#include "PlyBody.h"
+#include "FileFormats/PlyBody.h"
 
 #include <algorithm>
 #include <charconv>

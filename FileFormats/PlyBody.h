@@ -3,7 +3,7 @@
 #ifndef pcurv_PlyBody_h
 #define pcurv_PlyBody_h
 
-#include "PlyFile.h"
+#include "FileFormats/PlyFile.h"
 
 #include <cstdint>
 #include <cstdio>

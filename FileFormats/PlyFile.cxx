@@ -1,6 +1,6 @@
-#include "PlyFile.h"
+#include "FileFormats/PlyFile.h"
 
-#include "PlyBody.h"
+#include "FileFormats/PlyBody.h"
 
 #include <algorithm>
 #include <cctype>

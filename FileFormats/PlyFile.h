@@ -8,7 +8,7 @@
 #ifndef pcurv_PlyFile_h
 #define pcurv_PlyFile_h
 
-#include "FileInput.h"
+#include "FileFormats/FileInput.h"
 
 #include <cstdint>
 #include <string>

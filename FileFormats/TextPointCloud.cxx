@@ -1,6 +1,6 @@
-#include "TextPointCloud.h"
+#include "FileFormats/TextPointCloud.h"
 
-#include "FileInput.h"
+#include "FileFormats/FileInput.h"
 
 #include <algorithm>
 #include <cctype>

@@ -8,8 +8,8 @@
 #ifndef PrincipalCurvatureCloud_h
 #define PrincipalCurvatureCloud_h
 
-#include "CloudEstimation.h"
-#include "CloudStatistics.h"
+#include "Estimation/CloudEstimation.h"
+#include "Cloud/CloudStatistics.h"
 
 #include <atomic>
 #include <chrono>

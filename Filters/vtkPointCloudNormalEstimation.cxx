@@ -1,6 +1,6 @@
 #include "vtkPointCloudNormalEstimation.h"
 
-#include "CloudEstimation.h"
+#include "Estimation/CloudEstimation.h"
 #include "PrincipalCurvatureCloud.h"
 
 #include "vtkDoubleArray.h"

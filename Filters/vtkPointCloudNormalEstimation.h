@@ -18,7 +18,7 @@
  *
  * The same numbers for any number of threads or MPI processes: points are
  * handled in an order that depends only on the coordinates. The numeric
- * work is pcurv::EstimateCloudNormals (Filters/Core); vtkPrincipalCurvatureEstimation
+ * work is pcurv::EstimateCloudNormals (Core/); vtkPrincipalCurvatureEstimation
  * runs the same estimation when its input has no normals.
  *
  * @sa vtkPrincipalCurvatureEstimation vtkPCANormalEstimation
@@ -85,7 +85,7 @@ protected:
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
-  // Defaults: pcurv::NormalSettings (Filters/Core/NormalEstimation.h).
+  // Defaults: pcurv::NormalSettings (Core/Normals/NormalEstimation.h).
   int NumberOfNeighbors;
   int Orientation;
   double Viewpoint[3];

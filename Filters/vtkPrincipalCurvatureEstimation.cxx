@@ -1,6 +1,6 @@
 #include "vtkPrincipalCurvatureEstimation.h"
 
-#include "CloudEstimation.h"
+#include "Estimation/CloudEstimation.h"
 #include "PrincipalCurvatureCloud.h"
 
 #include "vtkDataArray.h"

@@ -440,7 +440,7 @@ protected:
     bool& estimate);
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
-  // Defaults: pcurv::EstimationSettings (Filters/Core/CloudEstimation.h),
+  // Defaults: pcurv::EstimationSettings (Core/Estimation/CloudEstimation.h),
   // copied by the constructor.
   int FitMode;
   int NeighborhoodMode;

@@ -1,6 +1,6 @@
 #include "PointCloudReaderSupport.h"
 
-#include "TextPointCloud.h"
+#include "FileFormats/TextPointCloud.h"
 
 #include "vtkAlgorithm.h"
 #include "vtkCellArray.h"

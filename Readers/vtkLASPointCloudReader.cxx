@@ -1,6 +1,6 @@
 #include "vtkLASPointCloudReader.h"
 
-#include "LasFile.h"
+#include "FileFormats/LasFile.h"
 #include "PointCloudReaderSupport.h"
 
 #include "vtkDataArray.h"

@@ -30,15 +30,15 @@
  * is then empty and GetErrorCode() is set. RequestData still succeeds, as in
  * vtkTextPointCloudReader.
  *
- * The parsing is pcurv::las (Filters/Core/LasFile.h), free of VTK.
+ * The parsing is pcurv::las (FileFormats/LasFile.h), free of VTK.
  */
 #ifndef vtkLASPointCloudReader_h
 #define vtkLASPointCloudReader_h
 
 #include "vtkPolyDataAlgorithm.h"
-#include "vtkPrincipalCurvatureFiltersModule.h" // for export macro
+#include "vtkPrincipalCurvatureReadersModule.h" // for export macro
 
-class VTKPRINCIPALCURVATUREFILTERS_EXPORT vtkLASPointCloudReader : public vtkPolyDataAlgorithm
+class VTKPRINCIPALCURVATUREREADERS_EXPORT vtkLASPointCloudReader : public vtkPolyDataAlgorithm
 {
 public:
   static vtkLASPointCloudReader* New();

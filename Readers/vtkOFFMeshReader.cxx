@@ -13,7 +13,7 @@
 #include "vtkPolyData.h"
 #include "vtkPolyDataNormals.h"
 
-#include "OffMesh.h"
+#include "FileFormats/OffMesh.h"
 #include "PointCloudReaderSupport.h"
 
 #include <algorithm>

@@ -13,7 +13,7 @@
  * this reader. A file without faces gives its vertices, one vertex cell
  * each, and no normals (the curvature filter then estimates them).
  *
- * The parsing is pcurv::ParseOffMesh (Filters/Core/OffMesh.h, no VTK), which
+ * The parsing is pcurv::ParseOffMesh (FileFormats/OffMesh.h, no VTK), which
  * has the accepted syntax. A bad file (not OFF, binary OFF, missing or
  * malformed counts, vertices or faces, an index out of range) is one
  * vtkErrorMacro naming the file, the line and what is wrong; the output is
@@ -25,9 +25,9 @@
 #define vtkOFFMeshReader_h
 
 #include "vtkPolyDataAlgorithm.h"
-#include "vtkPrincipalCurvatureFiltersModule.h" // for export macro
+#include "vtkPrincipalCurvatureReadersModule.h" // for export macro
 
-class VTKPRINCIPALCURVATUREFILTERS_EXPORT vtkOFFMeshReader : public vtkPolyDataAlgorithm
+class VTKPRINCIPALCURVATUREREADERS_EXPORT vtkOFFMeshReader : public vtkPolyDataAlgorithm
 {
 public:
   static vtkOFFMeshReader* New();

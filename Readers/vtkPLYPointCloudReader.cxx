@@ -1,6 +1,6 @@
 #include "vtkPLYPointCloudReader.h"
 
-#include "PlyFile.h"
+#include "FileFormats/PlyFile.h"
 #include "PointCloudReaderSupport.h"
 
 #include "vtkDataArray.h"

@@ -26,7 +26,7 @@
  * are), a truncated body or a value that is not a number of its type (the
  * element and record). The output is then empty and GetErrorCode() is set.
  *
- * The parsing is pcurv::ply (Filters/Core/PlyFile.h), free of VTK.
+ * The parsing is pcurv::ply (FileFormats/PlyFile.h), free of VTK.
  *
  * @sa vtkPLYReader vtkLASPointCloudReader
  */
@@ -34,9 +34,9 @@
 #define vtkPLYPointCloudReader_h
 
 #include "vtkPolyDataAlgorithm.h"
-#include "vtkPrincipalCurvatureFiltersModule.h" // for export macro
+#include "vtkPrincipalCurvatureReadersModule.h" // for export macro
 
-class VTKPRINCIPALCURVATUREFILTERS_EXPORT vtkPLYPointCloudReader : public vtkPolyDataAlgorithm
+class VTKPRINCIPALCURVATUREREADERS_EXPORT vtkPLYPointCloudReader : public vtkPolyDataAlgorithm
 {
 public:
   static vtkPLYPointCloudReader* New();

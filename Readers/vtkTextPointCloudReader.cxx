@@ -14,7 +14,7 @@
 #include "vtkUnsignedCharArray.h"
 
 #include "PointCloudReaderSupport.h"
-#include "TextPointCloud.h"
+#include "FileFormats/TextPointCloud.h"
 
 #include <string>
 #include <utility>

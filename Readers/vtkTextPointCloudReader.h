@@ -56,7 +56,7 @@
  * FileFormatError, ...). RequestData still returns success, so that the
  * pipeline adds no second, unhelpful message; check the point count or the
  * error code. The parsing itself is pcurv::ParseTextCloud
- * (Filters/Core/TextPointCloud.h, no VTK).
+ * (FileFormats/TextPointCloud.h, no VTK).
  *
  * NaN or infinite numbers are numbers: a point with such a coordinate is
  * kept, with one warning for all of them naming the first line (the
@@ -71,12 +71,12 @@
 #define vtkTextPointCloudReader_h
 
 #include "vtkPolyDataAlgorithm.h"
-#include "vtkPrincipalCurvatureFiltersModule.h" // for export macro
+#include "vtkPrincipalCurvatureReadersModule.h" // for export macro
 
 #include <cstddef> // for std::size_t
 #include <vector>  // for the lines of WarnAboutNonFinitePositions
 
-class VTKPRINCIPALCURVATUREFILTERS_EXPORT vtkTextPointCloudReader : public vtkPolyDataAlgorithm
+class VTKPRINCIPALCURVATUREREADERS_EXPORT vtkTextPointCloudReader : public vtkPolyDataAlgorithm
 {
 public:
   static vtkTextPointCloudReader* New();

@@ -1,4 +1,4 @@
-#include "CloudStatistics.h"
+#include "Cloud/CloudStatistics.h"
 
 #include <algorithm>
 #include <numeric>

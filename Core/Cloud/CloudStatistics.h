@@ -15,8 +15,8 @@
 #ifndef CloudStatistics_h
 #define CloudStatistics_h
 
-#include "PointGrid.h"
-#include "RealBuffer.h"
+#include "Neighbors/PointGrid.h"
+#include "Common/RealBuffer.h"
 
 #include <array>
 #include <cstdint>

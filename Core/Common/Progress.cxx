@@ -1,4 +1,4 @@
-#include "Progress.h"
+#include "Common/Progress.h"
 
 #include <algorithm>
 

@@ -1,4 +1,4 @@
-#include "WorkRunner.h"
+#include "Common/WorkRunner.h"
 
 namespace pcurv
 {

@@ -1,7 +1,7 @@
-#include "CloudEstimation.h"
-#include "ItemEstimation.h"
-#include "ResultWriter.h"
-#include "ScratchPool.h"
+#include "Estimation/CloudEstimation.h"
+#include "Estimation/ItemEstimation.h"
+#include "Estimation/ResultWriter.h"
+#include "Common/ScratchPool.h"
 
 #include <algorithm>
 #include <atomic>

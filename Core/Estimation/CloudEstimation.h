@@ -16,14 +16,14 @@
 #ifndef CloudEstimation_h
 #define CloudEstimation_h
 
-#include "CloudStatistics.h"
-#include "DynamicAdjustment.h"
-#include "NormalEstimation.h"
-#include "OrientedCircleFit.h"
-#include "PointGrid.h"
-#include "PrincipalCurvatureCore.h"
-#include "Progress.h"
-#include "WorkRunner.h"
+#include "Cloud/CloudStatistics.h"
+#include "Scale/DynamicAdjustment.h"
+#include "Normals/NormalEstimation.h"
+#include "Fits/OrientedCircleFit.h"
+#include "Neighbors/PointGrid.h"
+#include "Fits/PrincipalCurvatureCore.h"
+#include "Common/Progress.h"
+#include "Common/WorkRunner.h"
 
 #include <array>
 #include <atomic>

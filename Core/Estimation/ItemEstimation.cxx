@@ -1,4 +1,4 @@
-#include "ItemEstimation.h"
+#include "Estimation/ItemEstimation.h"
 
 #include <algorithm>
 #include <array>

@@ -9,13 +9,13 @@
 #ifndef ItemEstimation_h
 #define ItemEstimation_h
 
-#include "AutomaticScale.h"
-#include "CloudStatistics.h"
-#include "DynamicAdjustment.h"
-#include "PointGrid.h"
-#include "Progress.h"
-#include "ResultWriter.h"
-#include "SharedFits.h"
+#include "Scale/AutomaticScale.h"
+#include "Cloud/CloudStatistics.h"
+#include "Scale/DynamicAdjustment.h"
+#include "Neighbors/PointGrid.h"
+#include "Common/Progress.h"
+#include "Estimation/ResultWriter.h"
+#include "Scale/SharedFits.h"
 
 #include <cstdint>
 #include <utility>

@@ -1,4 +1,4 @@
-#include "ResultWriter.h"
+#include "Estimation/ResultWriter.h"
 
 #include <cmath>
 #include <vector>

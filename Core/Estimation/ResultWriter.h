@@ -8,7 +8,7 @@
 #ifndef ResultWriter_h
 #define ResultWriter_h
 
-#include "CloudEstimation.h"
+#include "Estimation/CloudEstimation.h"
 
 #include <algorithm>
 #include <cstdint>

@@ -1,7 +1,7 @@
-#include "HeightJet.h"
+#include "Fits/HeightJet.h"
 
-#include "ScaledCovariance.h"
-#include "SmallLeastSquares.h"
+#include "Common/ScaledCovariance.h"
+#include "Common/SmallLeastSquares.h"
 
 #include <cmath>
 

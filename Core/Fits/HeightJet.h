@@ -11,7 +11,7 @@
 #ifndef HeightJet_h
 #define HeightJet_h
 
-#include "PrincipalCurvatureCore.h"
+#include "Fits/PrincipalCurvatureCore.h"
 
 #include <cstddef>
 #include <limits>

@@ -1,6 +1,6 @@
-#include "OrientedCircleFit.h"
+#include "Fits/OrientedCircleFit.h"
 
-#include "SmallLeastSquares.h"
+#include "Common/SmallLeastSquares.h"
 
 #include <Eigen/Dense>
 

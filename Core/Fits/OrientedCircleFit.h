@@ -35,8 +35,8 @@
 #ifndef OrientedCircleFit_h
 #define OrientedCircleFit_h
 
-#include "PrincipalCurvatureCore.h"
-#include "SimdKernels.h"
+#include "Fits/PrincipalCurvatureCore.h"
+#include "Kernels/SimdKernels.h"
 
 #include <algorithm>
 #include <array>

@@ -1,4 +1,4 @@
-#include "PrincipalCurvatureCore.h"
+#include "Fits/PrincipalCurvatureCore.h"
 
 #include <Eigen/Dense>
 

@@ -22,7 +22,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "SimdKernels.h"
+#include "Kernels/SimdKernels.h"
 
 namespace pcurv
 {

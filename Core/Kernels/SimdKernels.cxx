@@ -1,4 +1,4 @@
-#include "SimdKernels.h"
+#include "Kernels/SimdKernels.h"
 
 // No fused multiply-adds: with them (AVX-512 implies FMA) the kernels would
 // round differently from each other and from processors without FMA.

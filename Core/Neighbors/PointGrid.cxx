@@ -1,6 +1,6 @@
-#include "PointGrid.h"
+#include "Neighbors/PointGrid.h"
 
-#include "SimdKernels.h"
+#include "Kernels/SimdKernels.h"
 
 #include <limits>
 

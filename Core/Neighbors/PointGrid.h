@@ -21,8 +21,8 @@
 #ifndef PointGrid_h
 #define PointGrid_h
 
-#include "IndexList.h"
-#include "WorkRunner.h"
+#include "Common/IndexList.h"
+#include "Common/WorkRunner.h"
 
 #include <algorithm>
 #include <array>

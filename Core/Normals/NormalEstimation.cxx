@@ -1,10 +1,10 @@
-#include "NormalEstimation.h"
+#include "Normals/NormalEstimation.h"
 
-#include "Progress.h"
-#include "WorkRunner.h"
-#include "OrientationGraph.h"
-#include "ScaledCovariance.h"
-#include "PointGrid.h"
+#include "Common/Progress.h"
+#include "Common/WorkRunner.h"
+#include "Normals/OrientationGraph.h"
+#include "Common/ScaledCovariance.h"
+#include "Neighbors/PointGrid.h"
 
 #include <Eigen/Dense>
 

@@ -14,7 +14,7 @@
 #ifndef NormalEstimation_h
 #define NormalEstimation_h
 
-#include "CloudStatistics.h"
+#include "Cloud/CloudStatistics.h"
 
 #include <array>
 #include <cstdint>

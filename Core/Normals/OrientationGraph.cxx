@@ -1,4 +1,4 @@
-#include "OrientationGraph.h"
+#include "Normals/OrientationGraph.h"
 
 namespace pcurv
 {

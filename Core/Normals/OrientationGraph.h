@@ -8,8 +8,8 @@
 #ifndef OrientationGraph_h
 #define OrientationGraph_h
 
-#include "IndexList.h"
-#include "WorkRunner.h"
+#include "Common/IndexList.h"
+#include "Common/WorkRunner.h"
 
 #include <algorithm>
 #include <cmath>

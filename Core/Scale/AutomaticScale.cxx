@@ -1,6 +1,6 @@
-#include "AutomaticScale.h"
+#include "Scale/AutomaticScale.h"
 
-#include "HeightJet.h"
+#include "Fits/HeightJet.h"
 
 #include <algorithm>
 #include <array>

@@ -8,10 +8,10 @@
 #ifndef AutomaticScale_h
 #define AutomaticScale_h
 
-#include "CloudStatistics.h"
-#include "OrientedCircleFit.h"
-#include "PointGrid.h"
-#include "SharedFits.h"
+#include "Cloud/CloudStatistics.h"
+#include "Fits/OrientedCircleFit.h"
+#include "Neighbors/PointGrid.h"
+#include "Scale/SharedFits.h"
 
 #include <algorithm>
 #include <array>

@@ -1,4 +1,4 @@
-#include "DynamicAdjustment.h"
+#include "Scale/DynamicAdjustment.h"
 
 #include <algorithm>
 #include <cmath>

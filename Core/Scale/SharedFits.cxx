@@ -1,4 +1,4 @@
-#include "SharedFits.h"
+#include "Scale/SharedFits.h"
 
 #include <Eigen/Dense>
 

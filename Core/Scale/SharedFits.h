@@ -22,8 +22,8 @@
 #ifndef SharedFits_h
 #define SharedFits_h
 
-#include "OrientedCircleFit.h"
-#include "PointGrid.h"
+#include "Fits/OrientedCircleFit.h"
+#include "Neighbors/PointGrid.h"
 
 #include <cstdint>
 #include <functional>

@@ -2,9 +2,9 @@
 // clouds, results independent of the runner's threads and of the cloud's
 // unit, the summary, and the stop request.
 #include "AnalyticSurfaces.h"
-#include "CloudEstimation.h"
-#include "HeightJet.h"
-#include "OrientationGraph.h"
+#include "Estimation/CloudEstimation.h"
+#include "Fits/HeightJet.h"
+#include "Normals/OrientationGraph.h"
 #include "ThreadRunner.h"
 #include "TestChecks.h"
 

@@ -1,9 +1,9 @@
 // Tests of the numeric core alone (no VTK): frame, half-plane binning,
 // circle fits, sine fit and the per-point estimator.
 #include "AnalyticSurfaces.h"
-#include "OrientedCircleFit.h"
-#include "SimdKernels.h"
-#include "PrincipalCurvatureCore.h"
+#include "Fits/OrientedCircleFit.h"
+#include "Kernels/SimdKernels.h"
+#include "Fits/PrincipalCurvatureCore.h"
 #include "TestChecks.h"
 
 #include <algorithm>

@@ -3,7 +3,7 @@
 // without position noise, against a sweep of fixed radii; scale freedom and
 // independence from the thread count.
 #include "AnalyticClouds.h"
-#include "DynamicAdjustment.h"
+#include "Scale/DynamicAdjustment.h"
 #include "TestChecks.h"
 #include "vtkPrincipalCurvatureEstimation.h"
 

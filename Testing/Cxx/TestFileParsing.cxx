@@ -2,9 +2,9 @@
 // bad input with its message, the column layout, the NaN policy, and the
 // tests that tell other formats sharing the .xyz extension apart. Fast and
 // small, so that the sanitizer builds run it too.
-#include "OffMesh.h"
+#include "FileFormats/OffMesh.h"
 #include "TestChecks.h"
-#include "TextPointCloud.h"
+#include "FileFormats/TextPointCloud.h"
 
 #include <cstdint>
 #include <cstring>

@@ -29,11 +29,11 @@
 // with max >= min, an invalid one NaN curvatures; the summary's count of
 // unestimated points matches the flags.
 // LAS and PLY files (first bytes 251 and 252): FuzzReaders.cxx.
-#include "CloudEstimation.h"
-#include "DynamicAdjustment.h"
+#include "Estimation/CloudEstimation.h"
+#include "Scale/DynamicAdjustment.h"
 #include "FuzzReaders.h"
-#include "PointGrid.h"
-#include "PrincipalCurvatureCore.h"
+#include "Neighbors/PointGrid.h"
+#include "Fits/PrincipalCurvatureCore.h"
 
 #include <algorithm>
 #include <cmath>

@@ -3,8 +3,8 @@
 // never a crash, a hang or undefined behaviour. The first byte chooses the
 // parser: even a text cloud (.pts rules when its second bit is set), odd an
 // OFF mesh.
-#include "OffMesh.h"
-#include "TextPointCloud.h"
+#include "FileFormats/OffMesh.h"
+#include "FileFormats/TextPointCloud.h"
 
 #include <cstdint>
 #include <cstdio>

@@ -8,8 +8,8 @@
 //   them (AddressSanitizer) whatever the body holds.
 #include "FuzzReaders.h"
 
-#include "LasFile.h"
-#include "PlyFile.h"
+#include "FileFormats/LasFile.h"
+#include "FileFormats/PlyFile.h"
 
 #include <cstdio>
 #include <cstdlib>

@@ -6,8 +6,8 @@
 //   ReplayReaderSeeds SEED...
 #include "FuzzReaders.h"
 
-#include "LasFile.h"
-#include "PlyFile.h"
+#include "FileFormats/LasFile.h"
+#include "FileFormats/PlyFile.h"
 
 #include <cstdio>
 #include <cstdlib>

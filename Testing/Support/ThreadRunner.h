@@ -7,7 +7,7 @@
 #ifndef ThreadRunner_h
 #define ThreadRunner_h
 
-#include "WorkRunner.h"
+#include "Common/WorkRunner.h"
 
 #include <algorithm>
 #include <cstdint>

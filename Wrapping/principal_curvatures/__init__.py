@@ -13,12 +13,15 @@ Needs the VTK that ParaView bundles (run it in pvpython or pvbatch).
 import vtkmodules.vtkCommonExecutionModel  # noqa: F401
 
 from .vtkPrincipalCurvatureFilters import (  # noqa: F401
-    vtkLASPointCloudReader,
-    vtkPLYPointCloudReader,
     vtkPointCloudNormalEstimation,
     vtkPrincipalCurvatureEstimation,
+)
+from .vtkPrincipalCurvatureReaders import (  # noqa: F401
+    vtkLASPointCloudReader,
+    vtkOFFMeshReader,
+    vtkPLYPointCloudReader,
     vtkTextPointCloudReader,
 )
 
-__all__ = ["vtkLASPointCloudReader", "vtkPLYPointCloudReader", "vtkPointCloudNormalEstimation",
-           "vtkPrincipalCurvatureEstimation", "vtkTextPointCloudReader"]
+__all__ = ["vtkLASPointCloudReader", "vtkOFFMeshReader", "vtkPLYPointCloudReader",
+           "vtkPointCloudNormalEstimation", "vtkPrincipalCurvatureEstimation", "vtkTextPointCloudReader"]
