@@ -16,6 +16,7 @@
 // that share of them into a blob 50 times smaller (dense cells). For
 // instruction counts, run it under valgrind --tool=callgrind with --runs 1.
 #include "AnalyticSurfaces.h"
+#include "Cloud/CloudStatistics.h"
 #include "Estimation/CloudEstimation.h"
 #include "ThreadRunner.h"
 #include "Normals/NormalEstimation.h"

@@ -1,7 +1,10 @@
 #include "Estimation/CloudEstimation.h"
-#include "Estimation/ItemEstimation.h"
-#include "Estimation/ResultWriter.h"
+#include "Cloud/CloudStatistics.h"
+#include "Cloud/Halo.h"
 #include "Common/ScratchPool.h"
+#include "Estimation/ItemEstimation.h"
+#include "Estimation/ResultStore.h"
+#include "Normals/NormalEstimation.h"
 
 #include <algorithm>
 #include <atomic>
@@ -355,7 +358,7 @@ bool EstimateEveryPoint(CloudPoints cloud,
   const CloudBoxes& boxes,
   const EstimationSettings& settings,
   const EstimationRun& run,
-  const ResultWriter& writer,
+  const ResultStore& writer,
   EstimationSummary& summary)
 {
   const GridLattice lattice = GlobalLattice(boxes, rule.CellRadius);
@@ -495,7 +498,7 @@ EstimationSummary EstimateCloud(CloudPoints cloud,
 
   const std::int64_t numberOfPoints = cloud.GetNumberOfInputPoints();
   std::vector<std::uint8_t> reasons(numberOfPoints, 0);
-  const ResultWriter writer(out, reasons.data(), settings.MinimumPointsPerDirection);
+  const ResultStore writer(out, reasons.data(), settings.MinimumPointsPerDirection);
   for (std::int64_t i = 0; i < numberOfPoints; ++i)
   {
     if (!cloud.FiniteInput[i])

@@ -94,7 +94,7 @@ PointEstimator::PointEstimator(const CloudPoints& cloud,
   const PointGrid& grid,
   const NeighborhoodRule& rule,
   const FitSettings& settings,
-  const ResultWriter& out)
+  const ResultStore& out)
   : Cloud(cloud)
   , Grid(grid)
   , Rule(rule)
@@ -237,11 +237,11 @@ void PointEstimator::EstimateAutomaticPoint(std::int64_t point, EstimationScratc
 }
 
 /// The anchors around the point whose fits the sharing rule lets it blend
-/// (AutomaticScaleEstimator::FromAnchors).
+/// (AnchorTable::EstimateAt).
 bool PointEstimator::EstimateFromAnchors(std::int64_t point, EstimationScratch& scratch)
 {
   const SharedEstimate shared =
-    this->Automatic.FromAnchors(point, *this->Anchors, scratch.Automatic);
+    this->Anchors->EstimateAt(this->Cloud, point, this->Rule.Automatic.Sharing, scratch.Shared);
   if (!shared.Curvature.Valid)
   {
     return false;

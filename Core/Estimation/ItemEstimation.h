@@ -9,12 +9,13 @@
 #ifndef ItemEstimation_h
 #define ItemEstimation_h
 
-#include "Scale/AutomaticScale.h"
-#include "Cloud/CloudStatistics.h"
-#include "Scale/DynamicAdjustment.h"
-#include "Neighbors/PointGrid.h"
+#include "Cloud/CloudPoints.h"
 #include "Common/Progress.h"
-#include "Estimation/ResultWriter.h"
+#include "Estimation/ResultStore.h"
+#include "Fits/PrincipalCurvatureCore.h"
+#include "Neighbors/PointGrid.h"
+#include "Scale/AutomaticScale.h"
+#include "Scale/DynamicAdjustment.h"
 #include "Scale/SharedFits.h"
 
 #include <cstdint>
@@ -30,6 +31,7 @@ struct EstimationScratch
   PointCurvatureEstimator Estimator;
   OrientedCircleEstimator OrientedEstimator;
   AutomaticScaleScratch Automatic;
+  SharedFitScratch Shared;
   DynamicAdjustment Adjustment;
   std::vector<double> Distances;
   NeighborOffsets Neighbors;
@@ -110,7 +112,7 @@ public:
     const PointGrid& grid,
     const NeighborhoodRule& rule,
     const FitSettings& settings,
-    const ResultWriter& out);
+    const ResultStore& out);
 
   /// The anchors of shared fits, estimated already: where `shareable`, the
   /// other points look for anchors' fits to take, and those that took them
@@ -168,7 +170,7 @@ private:
   const PointGrid& Grid;
   NeighborhoodRule Rule;
   FitSettings Settings;
-  const ResultWriter& Out;
+  const ResultStore& Out;
   AutomaticScaleEstimator Automatic;
   const AnchorTable* Anchors = nullptr; // the anchors, estimated already
   bool Shareable = false;               // some anchor's fit may be shared

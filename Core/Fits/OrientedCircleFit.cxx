@@ -1,4 +1,5 @@
 #include "Fits/OrientedCircleFit.h"
+#include "Fits/PrincipalCurvatureCore.h"
 
 #include "Common/SmallLeastSquares.h"
 

@@ -35,7 +35,7 @@
 #ifndef OrientedCircleFit_h
 #define OrientedCircleFit_h
 
-#include "Fits/PrincipalCurvatureCore.h"
+#include "Fits/FitResults.h"
 #include "Kernels/SimdKernels.h"
 
 #include <algorithm>
@@ -166,53 +166,6 @@ private:
 };
 using OrientedCircleAccumulator = OrientedCircleAccumulatorOf<3>;
 using QuarticCircleAccumulator = OrientedCircleAccumulatorOf<4>;
-
-/// The surface the combined fit describes, a height over the query
-/// normal's tangent frame (MakeTangentFrame of that normal, not stored) in
-/// units of the scale (u, v along V0, W0):
-/// h = e + tu u + tv v + ((C + A) u^2 + 2 B u v + (C - A) v^2) / 2
-///   + c30 u^3 + c21 u^2 v + c12 u v^2 + c03 v^3
-///   + c40 u^4 + c31 u^3 v + c22 u^2 v^2 + c13 u v^3 + c04 v^4,
-/// with Coefficients (C, A, B, tu, tv, c30, c21, c12, c03, 2 e, c40, c31,
-/// c22, c13, c04), C, A, B in the paper's sign; the quartic ones are 0 for
-/// a fit of the third order.
-struct FittedSurface
-{
-  static constexpr int FirstQuarticCoefficient = 10;
-  std::array<double, 15> Coefficients{};
-  double InverseScale = 0.0;
-  /// The positions' noise variance, in units of the scale squared.
-  double NoiseVariance = 0.0;
-};
-
-/// What the fit of some sums gives: the curvatures (output sign, in
-/// 1/length after `inverseScale`), the positions-only fit's standard error
-/// of them (the automatic scale compares radii by it: the positions' rows
-/// are independent, the neighbours' estimated normals are not), and two
-/// errors that no covariance shows, both in 1/length: how far the
-/// positions-only fit's curvatures lie from the combined ones
-/// (|d offset| + |d amplitude| of the sine), and the second-order error of
-/// fitting in a frame tilted by the query normal's error (the fitted
-/// tilt's square times the largest |curvature|), which the first-order tilt
-/// unknowns leave.
-struct OrientedCircleResult
-{
-  PointCurvature Curvature;
-  /// The order of the surface's terms fitted: 3 or 4.
-  int Order = 3;
-  double StandardError = 0.0;
-  /// The combined fit's own standard error of the curvatures (1/length),
-  /// from its covariance: what telling a fit of the third order from one of
-  /// the fourth compares (AutomaticScale), not what the scale grows by.
-  double CombinedStandardError = 0.0;
-  /// Whether CombinedStandardError is the combined fit's own (a fit with
-  /// `combinedError`, made where the normals follow the surface).
-  bool CombinedCovariance = false;
-  double PositionsDiscrepancy = 0.0;
-  double TiltBias = 0.0;
-  /// The fitted surface, for evaluating it elsewhere (SharedFits.h).
-  FittedSurface Surface;
-};
 
 /// The standard error reported for `chosen`, 1/length: it covers what the
 /// positions' covariance leaves out (OrientedCircleResult) and, where the

@@ -22,38 +22,11 @@
 #include <cstdint>
 #include <vector>
 
+#include "Fits/FitResults.h"
 #include "Kernels/SimdKernels.h"
 
 namespace pcurv
 {
-
-/// Number of half planes around the normal (the paper's 16 directions).
-constexpr int NumberOfDirections = 16;
-
-/// The three osculating-circle fits of the paper, and one beyond it.
-enum class FitMode : int
-{
-  Previous = 0, ///< eigenvector of the smallest eigenvalue of B (Seibert et al.)
-  New01 = 1,    ///< closed form from equations (2) and (3)
-  New02 = 2,    ///< better of the closed forms from (1)+(2) and (2)+(3)
-  /// Every neighbour's circle, from its position and its normal, fitted by
-  /// the sine at the neighbours' own angles (OrientedCircleFit.h).
-  OrientedCircles = 3
-};
-
-using Vector3 = std::array<double, 3>;
-
-/// Orthonormal frame at a query point: normal n, first direction v0, w0 = n x v0.
-struct TangentFrame
-{
-  Vector3 Normal;
-  Vector3 V0;
-  Vector3 W0;
-};
-
-/// Builds the frame; `unitNormal` must have length 1. v0 is n x e normalised,
-/// with e the coordinate axis least aligned with n (deterministic, stable).
-TangentFrame MakeTangentFrame(const Vector3& unitNormal);
 
 /// Running sums of one direction from which the CGA matrix B is formed:
 ///   B = [a b c; b d e; c e f], a = sum h^2, b = -sum h, c = -1/2 sum h D,
@@ -131,70 +104,11 @@ struct SineFit
 SineFit FitSine(const std::array<double, NumberOfDirections>& curvature,
   const std::array<bool, NumberOfDirections>& valid);
 
-/// Everything estimated at one point, output sign.
-/// Why a point has no estimate (None where it has one).
-enum class UnestimatedReason : std::uint8_t
-{
-  None = 0,
-  /// A coordinate is NaN or infinite.
-  BadCoordinate,
-  /// The normal is zero or not finite (given so, or not determinable).
-  NoNormal,
-  /// Fewer neighbours than a fit needs.
-  TooFewNeighbors,
-  /// The neighbours do not surround the point: too few directions, or
-  /// directions within half a turn.
-  TooFewDirections,
-  /// OrientedCircles: the neighbourhood reaches across the surface
-  /// (neighbours with opposing normals on another level).
-  ReachesAcross,
-  /// Any other failure of the fit (a singular system, a result beyond the
-  /// double range).
-  FitFailed,
-  Count
-};
-
-struct PointCurvature
-{
-  bool Valid = false;
-  double MinimumCurvature = 0.0;
-  double MaximumCurvature = 0.0;
-  Vector3 MinimumDirection{ { 0.0, 0.0, 0.0 } };
-  Vector3 MaximumDirection{ { 0.0, 0.0, 0.0 } };
-  /// FitMode::OrientedCircles: the unit normal of the fitted surface, to
-  /// which the directions are tangent (zero with the paper's fits, whose
-  /// directions are tangent to the given normal).
-  Vector3 FittedNormal{ { 0.0, 0.0, 0.0 } };
-  int NeighborCount = 0;
-  int ValidDirections = 0;
-  double SineFitRms = 0.0;
-  /// Set where the fit knows better than UnestimatedReasonOf can tell.
-  UnestimatedReason Reason = UnestimatedReason::None;
-};
-
-/// Why `r` has no estimate: its own reason, else told by its counts.
-UnestimatedReason UnestimatedReasonOf(const PointCurvature& r, int minimumPointsPerDirection);
-
 /// Converts a sine fit (paper sign) in the frame into output-sign principal
 /// curvatures and directions.
 void PrincipalCurvaturesFromSine(const SineFit& fit,
   const TangentFrame& frame,
   PointCurvature& out);
-
-/// Settings of the per-point estimate that do not change between points.
-struct FitSettings
-{
-  FitMode Mode = FitMode::New01;
-  int MinimumPointsPerDirection = 3;
-  /// A direction's points must reach this far along it, as a fraction of
-  /// the neighbourhood's size: points bunched near the query point (as
-  /// where there is no surface around it, e.g. points on a line) do not
-  /// determine a circle. Default 0.5.
-  double MinimumDirectionExtent = 0.5;
-  /// OrientedCircles: a point is not estimated when more of its neighbours
-  /// than this fraction have a normal opposing its own.
-  double MaximumOpposingFraction = 0.05;
-};
 
 /**
  * Estimates the principal curvatures at one point from its neighbours.

@@ -4,6 +4,8 @@
 #include "Common/WorkRunner.h"
 #include "Normals/OrientationGraph.h"
 #include "Common/ScaledCovariance.h"
+#include "Cloud/CloudPoints.h"
+#include "Cloud/CloudStatistics.h"
 #include "Neighbors/PointGrid.h"
 
 #include <Eigen/Dense>

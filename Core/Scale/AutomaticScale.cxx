@@ -490,29 +490,6 @@ int AutomaticScaleEstimator::NormalFollowsSurface(std::int64_t point,
   return tilt <= NormalTiltAllowance * displacement ? 1 : 0;
 }
 
-SharedEstimate AutomaticScaleEstimator::FromAnchors(std::int64_t point,
-  const AnchorTable& anchors,
-  AutomaticScaleScratch& scratch) const
-{
-  const double* x = &this->Cloud.Coordinates[3 * point];
-  std::vector<AnchorEstimate>& nearby = scratch.NearbyAnchors;
-  // Points in the grid's order mostly share their cell with the one
-  // before: the anchors around it, with their frames, are made once.
-  if (anchors.Cells.AnchorsAround(x, scratch.Anchors))
-  {
-    nearby.clear();
-    for (const std::int64_t position : scratch.Anchors.Anchors)
-    {
-      const std::int64_t anchor = anchors.Points[position];
-      const double* n = &this->Cloud.Normals[3 * anchor];
-      nearby.push_back(AnchorEstimate{ &anchors.Fits[position],
-        &this->Cloud.Coordinates[3 * anchor],
-        MakeTangentFrame({ { n[0], n[1], n[2] } }) });
-    }
-  }
-  return EstimateFromAnchors(nearby, x, &this->Cloud.Normals[3 * point], this->Rule.Sharing);
-}
-
 bool AutomaticScaleEstimator::AgreesWithSmaller(const OrientedCircleResult& candidate,
   const std::vector<OrientedCircleResult>& smaller,
   double tolerance)

@@ -2,16 +2,16 @@
  * @file AutomaticScale.h
  * @brief NeighborhoodMode::Automatic with OrientedCircles: per point, the
  * largest neighbourhood whose estimate agrees with those of the smaller
- * ones (Lepski's rule), and the anchors of shared fits (SharedFits.h) that
- * serve the points near them. No VTK.
+ * ones (Lepski's rule). The anchors of shared fits, which serve the points
+ * near them, are in SharedFits.h. No VTK.
  */
 #ifndef AutomaticScale_h
 #define AutomaticScale_h
 
-#include "Cloud/CloudStatistics.h"
+#include "Cloud/CloudPoints.h"
 #include "Fits/OrientedCircleFit.h"
 #include "Neighbors/PointGrid.h"
-#include "Scale/SharedFits.h"
+#include "Scale/AutomaticScaleRule.h"
 
 #include <algorithm>
 #include <array>
@@ -24,47 +24,6 @@
 namespace pcurv
 {
 
-/// NeighborhoodMode::Automatic: the radii tried at each point and the rule
-/// that picks one (AutomaticScaleEstimator).
-struct AutomaticScaleRule
-{
-  int BaseCount = 16;       // the first radius holds this many neighbours
-  int Levels = 8;           // radii base 2^(i/2), i < Levels: about 2000 neighbours at most
-  double Precision = 1e-3;  // a standard error this small (times the curvature) ends the growth
-  int MinimumCount = 12;    // fewer neighbours give no estimate to compare
-  double Tolerance = 2.0;   // standard errors two estimates may differ by
-  double LargestRadius = 0; // no radius beyond this (a length)
-  double TypicalRadius = 0; // the cloud's typical first radius (a length)
-  bool ShareFits = false;   // points near an anchor take its fit (SharedFits.h)
-  bool FourthOrder = false; // wide radii fit the surface's fourth order too
-  /// Levels where the normals do not follow the surface (FourthOrder
-  /// false): one radius more, about 4000 neighbours. Estimated normals are
-  /// about as uncertain as the positions, so the ladder's band (the
-  /// positions' standard error) is the estimate's own and shows the bias
-  /// of a wider radius; where the normals follow the surface the combined
-  /// fit is far more precise than that band, which hides the bias a wider
-  /// radius adds.
-  int WideLevels = 9;
-  /// The coordinates' lattice step per axis (CoordinateSteps; 0: none):
-  /// rounding to it is noise the positions' residual need not show (where
-  /// a few neighbours round to one plane), so it floors their variance.
-  std::array<double, 3> CoordinateStep{};
-  SharingRule Sharing;
-
-  /// The last radius of a ladder of `levels` radii from TypicalRadius.
-  double LargestRadiusOf(int levels) const
-  {
-    return this->TypicalRadius * std::pow(2.0, 0.5 * (levels - 1));
-  }
-
-  /// A ladder of `levels` radii: Levels and the LargestRadius it reaches.
-  void SetLevels(int levels)
-  {
-    this->Levels = levels;
-    this->LargestRadius = this->LargestRadiusOf(levels);
-  }
-};
-
 /// The automatic scale's estimate at a point: the chosen radius's fit, the
 /// radius (NaN when none was kept) and the reported standard error.
 struct ScaleEstimate
@@ -74,93 +33,6 @@ struct ScaleEstimate
   double Error = std::numeric_limits<double>::quiet_NaN();
   /// The estimate is a height jet's (AutomaticScaleEstimator::PreferJet).
   bool Jet = false;
-};
-
-/// The anchors of a run with shared fits (SharedFits.h): which points they
-/// are, in the grid's order, and their estimates once the first pass made
-/// them. Own anchors are output; halo anchors serve own points near them.
-struct AnchorTable
-{
-  AnchorCells Cells;
-  std::vector<std::int64_t> Points;
-  std::vector<AnchorFit> Fits;     // by position in Points
-  std::vector<unsigned char> Kept; // by cloud point: 1 for the anchors in Points
-
-  bool IsAnchor(std::int64_t point) const { return this->Kept[point] != 0; }
-
-  /// Chooses the anchors (every eligible point of the cloud takes part, so
-  /// each cell's choice is the same on every process) and keeps those an
-  /// own point may ask for: in the cells around an own point's. Asks
-  /// `keepGoing()` now and then; false when it said to stop.
-  template<typename Eligible>
-  bool Choose(const CloudPoints& cloud,
-    const PointGrid& grid,
-    const GridLattice& lattice,
-    double cellSide,
-    const Eligible& eligible,
-    const std::function<bool()>& keepGoing)
-  {
-    const std::int64_t count = cloud.GetNumberOfPoints();
-    // The grid's order keeps a cell's points together.
-    const auto inGridOrder = [&](std::int64_t j) { return grid.GetSortedId(j); };
-    if (!this->Cells.Build(cloud.Coordinates.data(),
-          cloud.Normals.data(),
-          count,
-          inGridOrder,
-          lattice.Origin.data(),
-          cellSide,
-          eligible,
-          keepGoing))
-    {
-      return false;
-    }
-    std::vector<unsigned char>& needed = this->Kept;
-    needed.assign(static_cast<std::size_t>(count), 0);
-    if (count == cloud.NumberOfOwnPoints)
-    {
-      this->Cells.MarkEveryAnchor(needed); // no halo: every anchor is an own point
-    }
-    else
-    {
-      std::vector<std::int64_t> own;
-      own.reserve(static_cast<std::size_t>(cloud.NumberOfOwnPoints));
-      for (std::int64_t j = 0; j < count; ++j)
-      {
-        if (cloud.IsOwn(grid.GetSortedId(j)))
-        {
-          own.push_back(grid.GetSortedId(j));
-        }
-      }
-      if (!this->Cells.MarkAnchorsAround(
-            static_cast<std::int64_t>(own.size()),
-            [&](std::int64_t j) { return own[static_cast<std::size_t>(j)]; },
-            needed,
-            keepGoing))
-      {
-        return false;
-      }
-    }
-    for (std::int64_t j = 0; j < grid.GetNumberOfPoints(); ++j)
-    {
-      const std::int64_t point = grid.GetSortedId(j);
-      if (needed[point])
-      {
-        this->Points.push_back(point);
-      }
-    }
-    this->Cells.NumberAnchors(this->Points);
-    this->Fits.resize(this->Points.size());
-    return true;
-  }
-
-  /// Whether any anchor's fit may be shared (none on a noise-free cloud,
-  /// where every radius is small): else the second pass skips the lookup.
-  bool AnyShareable(const SharingRule& rule) const
-  {
-    return std::any_of(this->Fits.begin(),
-      this->Fits.end(),
-      [&](const AnchorFit& fit) { return fit.Valid && fit.Radius >= rule.MinimumRadius; });
-  }
 };
 
 /// The nearest points of the point being estimated (FirstRadius): every
@@ -185,8 +57,6 @@ struct AutomaticScaleScratch
   NearestPoints Nearest;
   std::vector<OrientedCircleResult> Scales;
   ShellPoints Jet;
-  AnchorCells::Around Anchors;
-  std::vector<AnchorEstimate> NearbyAnchors;
 };
 
 /// Estimates points of a cloud with the automatic scale; one instance is
@@ -229,13 +99,6 @@ public:
   /// normal is off by its own error, several times more. 1: it follows,
   /// 0: it does not, -1: no fit there.
   int NormalFollowsSurface(std::int64_t point, AutomaticScaleScratch& scratch) const;
-
-  /// The point's estimate from the anchors around it (in the cells' fixed
-  /// order: the same on every process) that the sharing rule lets it blend;
-  /// not valid where none does.
-  SharedEstimate FromAnchors(std::int64_t point,
-    const AnchorTable& anchors,
-    AutomaticScaleScratch& scratch) const;
 
 private:
   /// Replaces `estimate` by the height jet of the JetCount nearest

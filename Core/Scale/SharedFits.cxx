@@ -1,4 +1,6 @@
 #include "Scale/SharedFits.h"
+#include "Fits/OrientedCircleFit.h"
+#include "Fits/PrincipalCurvatureCore.h"
 
 #include <Eigen/Dense>
 
@@ -441,6 +443,31 @@ bool AnchorCells::MarkAnchorsAround(std::int64_t count,
     }
   }
   return true;
+}
+
+SharedEstimate AnchorTable::EstimateAt(const CloudPoints& cloud,
+  std::int64_t point,
+  const SharingRule& rule,
+  SharedFitScratch& scratch) const
+{
+  const AnchorTable& anchors = *this;
+  const double* x = &cloud.Coordinates[3 * point];
+  std::vector<AnchorEstimate>& nearby = scratch.NearbyAnchors;
+  // Points in the grid's order mostly share their cell with the one
+  // before: the anchors around it, with their frames, are made once.
+  if (anchors.Cells.AnchorsAround(x, scratch.Anchors))
+  {
+    nearby.clear();
+    for (const std::int64_t position : scratch.Anchors.Anchors)
+    {
+      const std::int64_t anchor = anchors.Points[position];
+      const double* n = &cloud.Normals[3 * anchor];
+      nearby.push_back(AnchorEstimate{ &anchors.Fits[position],
+        &cloud.Coordinates[3 * anchor],
+        MakeTangentFrame({ { n[0], n[1], n[2] } }) });
+    }
+  }
+  return EstimateFromAnchors(nearby, x, &cloud.Normals[3 * point], rule);
 }
 
 } // namespace pcurv

@@ -22,9 +22,12 @@
 #ifndef SharedFits_h
 #define SharedFits_h
 
-#include "Fits/OrientedCircleFit.h"
+#include "Cloud/CloudPoints.h"
+#include "Fits/FitResults.h"
 #include "Neighbors/PointGrid.h"
+#include "Scale/AutomaticScaleRule.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <functional>
 #include <unordered_map>
@@ -33,27 +36,6 @@
 
 namespace pcurv
 {
-
-/// When a point may take an anchor's fit instead of its own.
-struct SharingRule
-{
-  /// The lattice's cell side, in units of the cloud's typical radius of
-  /// the automatic scale's first level.
-  double CellFactor = 2.0;
-  /// The point's distance from the anchor at most this fraction of the
-  /// anchor's radius.
-  double OffsetFraction = 0.15;
-  /// Only anchors whose radius is at least this (a length) are shared:
-  /// small radii cost little, and there the circles' exactness on a sphere
-  /// or a cylinder beats any polynomial surface evaluated off its centre.
-  double MinimumRadius = 0.0;
-  /// The point's normal within this cosine of the fitted surface's there.
-  double MinimumNormalCosine = 0.866;
-  /// The point's height off the fitted surface within this many noise
-  /// standard deviations (and a hundredth of the anchor's radius): a point
-  /// on another sheet does not share.
-  double HeightDeviations = 4.0;
-};
 
 /// What a point near an anchor uses of the anchor's estimate (kept for
 /// every anchor until the cloud is done; the rest of the estimate is
@@ -251,6 +233,109 @@ private:
   const double* Coordinates = nullptr;
   const double* Normals = nullptr;
   std::unordered_map<CellKey, std::int64_t, CellHash> Anchors;
+};
+
+/// A thread's reusable buffers for the estimates from anchors.
+struct SharedFitScratch
+{
+  AnchorCells::Around Anchors;
+  std::vector<AnchorEstimate> NearbyAnchors;
+};
+
+/// The anchors of a run with shared fits (SharedFits.h): which points they
+/// are, in the grid's order, and their estimates once the first pass made
+/// them. Own anchors are output; halo anchors serve own points near them.
+struct AnchorTable
+{
+  AnchorCells Cells;
+  std::vector<std::int64_t> Points;
+  std::vector<AnchorFit> Fits;     // by position in Points
+  std::vector<unsigned char> Kept; // by cloud point: 1 for the anchors in Points
+
+  bool IsAnchor(std::int64_t point) const { return this->Kept[point] != 0; }
+
+  /// Chooses the anchors (every eligible point of the cloud takes part, so
+  /// each cell's choice is the same on every process) and keeps those an
+  /// own point may ask for: in the cells around an own point's. Asks
+  /// `keepGoing()` now and then; false when it said to stop.
+  template<typename Eligible>
+  bool Choose(const CloudPoints& cloud,
+    const PointGrid& grid,
+    const GridLattice& lattice,
+    double cellSide,
+    const Eligible& eligible,
+    const std::function<bool()>& keepGoing)
+  {
+    const std::int64_t count = cloud.GetNumberOfPoints();
+    // The grid's order keeps a cell's points together.
+    const auto inGridOrder = [&](std::int64_t j) { return grid.GetSortedId(j); };
+    if (!this->Cells.Build(cloud.Coordinates.data(),
+          cloud.Normals.data(),
+          count,
+          inGridOrder,
+          lattice.Origin.data(),
+          cellSide,
+          eligible,
+          keepGoing))
+    {
+      return false;
+    }
+    std::vector<unsigned char>& needed = this->Kept;
+    needed.assign(static_cast<std::size_t>(count), 0);
+    if (count == cloud.NumberOfOwnPoints)
+    {
+      this->Cells.MarkEveryAnchor(needed); // no halo: every anchor is an own point
+    }
+    else
+    {
+      std::vector<std::int64_t> own;
+      own.reserve(static_cast<std::size_t>(cloud.NumberOfOwnPoints));
+      for (std::int64_t j = 0; j < count; ++j)
+      {
+        if (cloud.IsOwn(grid.GetSortedId(j)))
+        {
+          own.push_back(grid.GetSortedId(j));
+        }
+      }
+      if (!this->Cells.MarkAnchorsAround(
+            static_cast<std::int64_t>(own.size()),
+            [&](std::int64_t j) { return own[static_cast<std::size_t>(j)]; },
+            needed,
+            keepGoing))
+      {
+        return false;
+      }
+    }
+    for (std::int64_t j = 0; j < grid.GetNumberOfPoints(); ++j)
+    {
+      const std::int64_t point = grid.GetSortedId(j);
+      if (needed[point])
+      {
+        this->Points.push_back(point);
+      }
+    }
+    this->Cells.NumberAnchors(this->Points);
+    this->Fits.resize(this->Points.size());
+    return true;
+  }
+
+  /// Whether any anchor's fit may be shared (none on a noise-free cloud,
+  /// where every radius is small): else the second pass skips the lookup.
+  /// The estimate of point `point` of `cloud` (the cloud the table was
+  /// chosen on) from the anchors around it (in the cells' fixed order: the
+  /// same on every process) that the sharing rule lets it blend; not valid
+  /// where none does.
+  SharedEstimate EstimateAt(const CloudPoints& cloud,
+    std::int64_t point,
+    const SharingRule& rule,
+    SharedFitScratch& scratch) const;
+
+  bool AnyShareable(const SharingRule& rule) const
+  {
+    return std::any_of(this->Fits.begin(),
+      this->Fits.end(),
+      [&](const AnchorFit& fit) { return fit.Valid && fit.Radius >= rule.MinimumRadius; });
+  }
 };
 
 } // namespace pcurv

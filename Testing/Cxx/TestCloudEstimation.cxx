@@ -2,8 +2,10 @@
 // clouds, results independent of the runner's threads and of the cloud's
 // unit, the summary, and the stop request.
 #include "AnalyticSurfaces.h"
+#include "Cloud/CloudStatistics.h"
 #include "Estimation/CloudEstimation.h"
 #include "Fits/HeightJet.h"
+#include "Neighbors/PointGrid.h"
 #include "Normals/OrientationGraph.h"
 #include "ThreadRunner.h"
 #include "TestChecks.h"

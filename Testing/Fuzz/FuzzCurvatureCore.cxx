@@ -29,6 +29,7 @@
 // with max >= min, an invalid one NaN curvatures; the summary's count of
 // unestimated points matches the flags.
 // LAS and PLY files (first bytes 251 and 252): FuzzReaders.cxx.
+#include "Cloud/CloudStatistics.h"
 #include "Estimation/CloudEstimation.h"
 #include "Scale/DynamicAdjustment.h"
 #include "FuzzReaders.h"

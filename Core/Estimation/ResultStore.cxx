@@ -1,4 +1,5 @@
-#include "Estimation/ResultWriter.h"
+#include "Estimation/ResultStore.h"
+#include "Cloud/CloudStatistics.h"
 
 #include <cmath>
 #include <vector>
@@ -41,7 +42,7 @@ constexpr RealBuffer CurvatureBuffers::*Scalars[] = { &CurvatureBuffers::Minimum
 
 } // namespace
 
-void ResultWriter::Store(std::int64_t i,
+void ResultStore::Store(std::int64_t i,
   const PointCurvature& r,
   double s,
   double p,
@@ -88,14 +89,14 @@ void ResultWriter::Store(std::int64_t i,
     static_cast<std::uint8_t>(UnestimatedReasonOf(r, this->MinimumPointsPerDirection));
 }
 
-void ResultWriter::StoreUnestimated(std::int64_t i, UnestimatedReason reason) const
+void ResultStore::StoreUnestimated(std::int64_t i, UnestimatedReason reason) const
 {
   PointCurvature none;
   none.Reason = reason;
   this->Store(i, none, NaN, NaN);
 }
 
-void ResultWriter::Prefetch(std::int64_t i) const
+void ResultStore::Prefetch(std::int64_t i) const
 {
   for (const auto member : Scalars)
   {
@@ -142,7 +143,7 @@ void ToInputUnit(const CurvatureBuffers& out, std::int64_t numberOfPoints, const
   }
 }
 
-void ResultWriter::Copy(std::int64_t from, std::int64_t to) const
+void ResultStore::Copy(std::int64_t from, std::int64_t to) const
 {
   for (const auto member : Scalars)
   {

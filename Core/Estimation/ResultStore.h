@@ -1,14 +1,15 @@
 /**
- * @file ResultWriter.h
+ * @file ResultStore.h
  * @brief Where an estimation's per-point results go: the working length
- * unit and the way back to the input's, the writer of each point's
- * results into the caller's buffers, and the passes over all of them at
- * the end (unit, clipped mean, counts, trust). No VTK.
+ * unit and the way back to the input's, the store of each point's results
+ * into the caller's buffers (it fills memory, it writes no file), and the
+ * passes over all of them at the end (unit, clipped mean, counts, trust).
+ * No VTK.
  */
-#ifndef ResultWriter_h
-#define ResultWriter_h
+#ifndef ResultStore_h
+#define ResultStore_h
 
-#include "Estimation/CloudEstimation.h"
+#include "Estimation/CurvatureOutputs.h"
 
 #include <algorithm>
 #include <cstdint>
@@ -16,6 +17,8 @@
 
 namespace pcurv
 {
+
+class Collectives;
 
 /// The filter's working length unit (lengths multiplied by Scale, a power
 /// of two) and the way back to the input's: the only place lengths and
@@ -33,13 +36,13 @@ struct WorkingUnit
   double ToInputLength(double length) const { return length / this->Scale; }
 };
 
-/// Writes one point's results into the caller's buffers (each point by
+/// Stores one point's results in the caller's buffers (each point by
 /// exactly one thread), in the working unit until ToInputUnit.
-class ResultWriter
+class ResultStore
 {
 public:
   /// `reasons`: one per input point, why it has no estimate.
-  ResultWriter(const CurvatureBuffers& out, std::uint8_t* reasons, int minimumPointsPerDirection)
+  ResultStore(const CurvatureBuffers& out, std::uint8_t* reasons, int minimumPointsPerDirection)
     : Out(out)
     , Reasons(reasons)
     , MinimumPointsPerDirection(minimumPointsPerDirection)

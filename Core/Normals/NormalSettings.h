@@ -1,0 +1,54 @@
+/**
+ * @file NormalSettings.h
+ * @brief What the normal estimation is asked (neighbors, orientation) and
+ * what it reports. No VTK.
+ */
+#ifndef NormalSettings_h
+#define NormalSettings_h
+
+#include <array>
+#include <cstdint>
+
+namespace pcurv
+{
+
+/// How the sign of each connected part's normals is chosen.
+enum class NormalOrientation : int
+{
+  /// Away from the part's inside: for a closed part (its normals sum to
+  /// about zero) the sign for which the normals point away from its
+  /// centroid on the whole; an open part whose normals share a side (a
+  /// height field, an aerial scan, a bowl) points up (+z) on the whole,
+  /// unless its normals are about horizontal (a wall), where the centroid
+  /// decides again.
+  Outward = 0,
+  /// Each normal towards Viewpoint (where the scanner was), point by point.
+  TowardsViewpoint = 1,
+  /// Each normal with a positive component along Axis, point by point.
+  AlongAxis = 2
+};
+
+struct NormalSettings
+{
+  /// Neighbours of the PCA plane fit (the point itself not counted).
+  int NumberOfNeighbors = 30;
+  /// Nearest neighbours each point is joined to in the orientation graph.
+  int GraphNeighbors = 8;
+  NormalOrientation Orientation = NormalOrientation::Outward;
+  std::array<double, 3> Viewpoint{ { 0.0, 0.0, 0.0 } };
+  std::array<double, 3> Axis{ { 0.0, 0.0, 1.0 } };
+};
+
+struct NormalSummary
+{
+  /// Connected parts of the orientation graph (Outward only).
+  std::int64_t Components = 0;
+  /// Points with too few neighbours for a plane (their normal is zero).
+  std::int64_t Undetermined = 0;
+  /// The progress monitor asked to stop: the normals are incomplete.
+  bool Aborted = false;
+};
+
+} // namespace pcurv
+
+#endif

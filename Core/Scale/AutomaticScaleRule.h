@@ -1,0 +1,79 @@
+/**
+ * @file AutomaticScaleRule.h
+ * @brief The constants of the automatic scale and of shared fits, as the
+ * estimation chooses them for a cloud. No VTK.
+ */
+#ifndef AutomaticScaleRule_h
+#define AutomaticScaleRule_h
+
+#include <array>
+#include <cmath>
+
+namespace pcurv
+{
+
+/// When a point may take an anchor's fit instead of its own.
+struct SharingRule
+{
+  /// The lattice's cell side, in units of the cloud's typical radius of
+  /// the automatic scale's first level.
+  double CellFactor = 2.0;
+  /// The point's distance from the anchor at most this fraction of the
+  /// anchor's radius.
+  double OffsetFraction = 0.15;
+  /// Only anchors whose radius is at least this (a length) are shared:
+  /// small radii cost little, and there the circles' exactness on a sphere
+  /// or a cylinder beats any polynomial surface evaluated off its centre.
+  double MinimumRadius = 0.0;
+  /// The point's normal within this cosine of the fitted surface's there.
+  double MinimumNormalCosine = 0.866;
+  /// The point's height off the fitted surface within this many noise
+  /// standard deviations (and a hundredth of the anchor's radius): a point
+  /// on another sheet does not share.
+  double HeightDeviations = 4.0;
+};
+
+/// NeighborhoodMode::Automatic: the radii tried at each point and the rule
+/// that picks one (AutomaticScaleEstimator).
+struct AutomaticScaleRule
+{
+  int BaseCount = 16;       // the first radius holds this many neighbours
+  int Levels = 8;           // radii base 2^(i/2), i < Levels: about 2000 neighbours at most
+  double Precision = 1e-3;  // a standard error this small (times the curvature) ends the growth
+  int MinimumCount = 12;    // fewer neighbours give no estimate to compare
+  double Tolerance = 2.0;   // standard errors two estimates may differ by
+  double LargestRadius = 0; // no radius beyond this (a length)
+  double TypicalRadius = 0; // the cloud's typical first radius (a length)
+  bool ShareFits = false;   // points near an anchor take its fit (SharedFits.h)
+  bool FourthOrder = false; // wide radii fit the surface's fourth order too
+  /// Levels where the normals do not follow the surface (FourthOrder
+  /// false): one radius more, about 4000 neighbours. Estimated normals are
+  /// about as uncertain as the positions, so the ladder's band (the
+  /// positions' standard error) is the estimate's own and shows the bias
+  /// of a wider radius; where the normals follow the surface the combined
+  /// fit is far more precise than that band, which hides the bias a wider
+  /// radius adds.
+  int WideLevels = 9;
+  /// The coordinates' lattice step per axis (CoordinateSteps; 0: none):
+  /// rounding to it is noise the positions' residual need not show (where
+  /// a few neighbours round to one plane), so it floors their variance.
+  std::array<double, 3> CoordinateStep{};
+  SharingRule Sharing;
+
+  /// The last radius of a ladder of `levels` radii from TypicalRadius.
+  double LargestRadiusOf(int levels) const
+  {
+    return this->TypicalRadius * std::pow(2.0, 0.5 * (levels - 1));
+  }
+
+  /// A ladder of `levels` radii: Levels and the LargestRadius it reaches.
+  void SetLevels(int levels)
+  {
+    this->Levels = levels;
+    this->LargestRadius = this->LargestRadiusOf(levels);
+  }
+};
+
+} // namespace pcurv
+
+#endif
