@@ -1,6 +1,9 @@
 #include "vtkPrincipalCurvatureEstimation.h"
 
 #include "Estimation/CloudEstimation.h"
+#include "CurvatureArrays.h"
+#include "EstimationReport.h"
+#include "NormalsChoice.h"
 #include "PrincipalCurvatureCloud.h"
 
 #include "vtkDataArray.h"
@@ -62,116 +65,6 @@ static_assert(vtkPrincipalCurvatureEstimation::PAPER_CONSTANTS ==
 
 namespace
 {
-template<typename ArrayT>
-vtkSmartPointer<ArrayT> NewArray(const char* name, int components, vtkIdType tuples)
-{
-  auto array = vtkSmartPointer<ArrayT>::New();
-  array->SetName(name);
-  array->SetNumberOfComponents(components);
-  array->SetNumberOfTuples(tuples);
-  return array;
-}
-
-/// A float (`single`) or double array, and the core's buffer on it.
-vtkSmartPointer<vtkDataArray> NewRealArray(const char* name,
-  int components,
-  vtkIdType tuples,
-  bool single,
-  pcurv::RealBuffer& buffer)
-{
-  if (single)
-  {
-    auto array = NewArray<vtkFloatArray>(name, components, tuples);
-    buffer = pcurv::RealBuffer(array->GetPointer(0));
-    return array;
-  }
-  auto array = NewArray<vtkDoubleArray>(name, components, tuples);
-  buffer = pcurv::RealBuffer(array->GetPointer(0));
-  return array;
-}
-
-/// The output arrays, and the core's view of them: the real ones float
-/// with `single` (the core rounds each value once as it writes it: no
-/// double copy of the output is ever held), double otherwise.
-struct CurvatureArrays
-{
-  /// Each array, and whether it is a diagnostic one.
-  std::vector<std::pair<vtkSmartPointer<vtkDataArray>, bool>> InOrder;
-  pcurv::CurvatureBuffers Buffers;
-  bool Single = false;
-
-  CurvatureArrays(vtkIdType n, bool adjusted, bool standardError, bool display, bool single)
-    : Single(single)
-  {
-    pcurv::CurvatureBuffers& b = this->Buffers;
-    b.Minimum = this->AddReal("Minimum_Curvature", 1, n);
-    b.Maximum = this->AddReal("Maximum_Curvature", 1, n);
-    b.Mean = this->AddReal("Mean_Curvature", 1, n);
-    b.Gauss = this->AddReal("Gauss_Curvature", 1, n);
-    b.MinimumDirection = this->AddReal("Minimum_Curvature_Direction", 3, n);
-    b.MaximumDirection = this->AddReal("Maximum_Curvature_Direction", 3, n);
-    b.Valid = this->Add<vtkUnsignedCharArray>("Curvature_Valid", 1, n);
-    b.NeighborCount = this->Add<vtkIntArray>("Neighbor_Count", 1, n, true);
-    b.ValidDirections = this->Add<vtkIntArray>("Valid_Direction_Count", 1, n, true);
-    b.SineFitRms = this->AddReal("Sine_Fit_RMS", 1, n, true);
-    b.Surroundings = this->AddReal("Surroundings_Threshold", 1, n, true);
-    b.PlaneDistance = this->AddReal("Plane_Distance_Threshold", 1, n, true);
-    // With the dynamic adjustment only: the neighbour count it aimed at for
-    // the point, to compare with Neighbor_Count.
-    b.TargetCount =
-      adjusted ? this->Add<vtkIntArray>("Target_Neighbor_Count", 1, n, true) : nullptr;
-    b.ShapeIndex = this->AddReal("Shape_Index", 1, n);
-    b.Curvedness = this->AddReal("Curvedness", 1, n);
-    // For display; derived from Mean_Curvature, so left out (and not
-    // computed) with the diagnostics when the output is to be small.
-    b.ClippedMean = display ? this->AddReal("Mean_Curvature_Clipped", 1, n) : nullptr;
-    // With the fits that give one: the standard error of the curvatures.
-    b.StandardError =
-      standardError ? this->AddReal("Curvature_Standard_Error", 1, n, true) : nullptr;
-    // With the same fits: 1 where the curvatures are within their stated
-    // error of the cloud's scale (not a diagnostic: what a user filters by).
-    b.Trusted =
-      standardError ? this->Add<vtkUnsignedCharArray>("Curvature_Trusted", 1, n) : nullptr;
-    // With the same fits: the normal their directions are tangent to.
-    b.FittedNormal = standardError ? this->AddReal("Fitted_Normal", 3, n) : nullptr;
-  }
-
-  /// A float or double array (Single), as the core's buffer.
-  pcurv::RealBuffer AddReal(const char* name,
-    int components,
-    vtkIdType tuples,
-    bool diagnostic = false)
-  {
-    pcurv::RealBuffer buffer;
-    this->InOrder.emplace_back(
-      NewRealArray(name, components, tuples, this->Single, buffer), diagnostic);
-    return buffer;
-  }
-
-  template<typename ArrayT>
-  typename ArrayT::ValueType* Add(const char* name,
-    int components,
-    vtkIdType tuples,
-    bool diagnostic = false)
-  {
-    auto array = NewArray<ArrayT>(name, components, tuples);
-    this->InOrder.emplace_back(array, diagnostic);
-    return array->GetPointer(0);
-  }
-
-  /// Adds the arrays to `pd`, the diagnostic ones only with `diagnostics`.
-  void AddTo(vtkPointData* pd, bool diagnostics) const
-  {
-    for (const auto& entry : this->InOrder)
-    {
-      if (!entry.second || diagnostics)
-      {
-        pd->AddArray(entry.first);
-      }
-    }
-  }
-};
-
 /// The filter's settings for the core.
 pcurv::EstimationSettings CoreSettings(vtkPrincipalCurvatureEstimation* self)
 {
@@ -202,90 +95,6 @@ pcurv::EstimationSettings CoreSettings(vtkPrincipalCurvatureEstimation* self)
   std::copy_n(self->GetViewpoint(), 3, settings.Normals.Viewpoint.begin());
   std::copy_n(self->GetOrientationAxis(), 3, settings.Normals.Axis.begin());
   return settings;
-}
-
-/// The counts of unestimated points, by reason, in the output's field data;
-/// a warning when most of the cloud has no estimate.
-void ReportUnestimated(vtkPrincipalCurvatureEstimation* self,
-  const pcurv::EstimationSummary& summary,
-  const pcurv::Collectives& processes,
-  vtkPolyData* output)
-{
-  // Counts of the whole cloud, also in a parallel run: field data shows in
-  // the Information panel, which would otherwise show one piece's.
-  std::vector<std::int64_t> counts(
-    summary.UnestimatedByReason.begin(), summary.UnestimatedByReason.end());
-  counts.push_back(output->GetNumberOfPoints());
-  if (processes.IsDistributed())
-  {
-    processes.Sum(counts);
-  }
-  const std::int64_t total = counts.back();
-  std::int64_t unestimated = 0;
-  std::string byReason;
-  for (int reason = 1; reason < static_cast<int>(pcurv::UnestimatedReason::Count); ++reason)
-  {
-    const char* name = pcurv::UnestimatedReasonName(static_cast<pcurv::UnestimatedReason>(reason));
-    vtkNew<vtkIdTypeArray> count;
-    count->SetName((std::string("Unestimated_") + name).c_str());
-    count->InsertNextValue(counts[reason]);
-    output->GetFieldData()->AddArray(count);
-    unestimated += counts[reason];
-    if (counts[reason] > 0)
-    {
-      byReason += (byReason.empty() ? "" : ", ") + std::to_string(counts[reason]) + " " + name;
-    }
-  }
-  vtkNew<vtkIdTypeArray> all;
-  all->SetName("Unestimated_Points");
-  all->InsertNextValue(unestimated);
-  output->GetFieldData()->AddArray(all);
-  // Some unestimated points are normal on real scans (their borders, stray
-  // points): only a failure of most of the cloud is worth a pop-up.
-  if (2 * unestimated > total)
-  {
-    vtkWarningWithObjectMacro(self,
-      << unestimated << " of " << total << " points could not be estimated (" << byReason
-      << "); they have Curvature_Valid = 0 and NaN curvatures. See the "
-         "Unestimated_* field data, and docs/output-arrays.md for what helps.");
-  }
-}
-
-/// Float coordinates keep 24 bits: at magnitude M neighbouring floats lie
-/// up to M 2^-23 apart. A georeferenced scan (UTM metres, 1e5 to 1e7) in
-/// float is rounded to centimetres or decimetres, which is noise of that
-/// size to every fit; a warning with the numbers, when the rounding exceeds
-/// a hundredth of the point spacing (noise the estimate starts to show).
-/// `radius` holds about `count` neighbours at a typical point.
-void WarnOnCoarseCoordinates(vtkPrincipalCurvatureEstimation* self,
-  vtkPointSet* input,
-  double radius,
-  int count)
-{
-  vtkPoints* points = input->GetPoints();
-  if (!points || points->GetDataType() != VTK_FLOAT || !(radius > 0.0) || count <= 0)
-  {
-    return;
-  }
-  double bounds[6];
-  points->GetBounds(bounds);
-  double magnitude = 0.0;
-  for (const double b : bounds)
-  {
-    magnitude = std::isfinite(b) ? std::max(magnitude, std::fabs(b)) : magnitude;
-  }
-  const double resolution = magnitude > 0.0 ? std::ldexp(1.0, std::ilogb(magnitude) - 23) : 0.0;
-  const double spacing = radius / std::sqrt(count / vtkMath::Pi());
-  if (resolution > 0.01 * spacing)
-  {
-    vtkWarningWithObjectMacro(self,
-      "The input's coordinates are stored as float: at their magnitude ("
-        << magnitude << ") neighbouring floats are up to " << resolution << " apart, "
-        << resolution / spacing << " times the point spacing (about " << spacing
-        << "). The positions are rounded as if by noise of that size, and the curvatures "
-           "degrade. Keep the coordinates in double (the plugin's PLY, LAS and text readers "
-           "do), or subtract an offset before converting them to float.");
-  }
 }
 
 } // namespace
@@ -365,7 +174,7 @@ int vtkPrincipalCurvatureEstimation::RequestData(vtkInformation*,
     normals = nullptr;
   }
 
-  CurvatureArrays arrays(numberOfPoints,
+  pcurv::output::CurvatureArrays arrays(numberOfPoints,
     this->DynamicAdjustment,
     this->FitMode == ORIENTED_CIRCLES,
     this->DiagnosticArrays,
@@ -373,7 +182,7 @@ int vtkPrincipalCurvatureEstimation::RequestData(vtkInformation*,
   vtkSmartPointer<vtkDataArray> estimatedNormals;
   if (this->UsedEstimatedNormals)
   {
-    estimatedNormals = NewRealArray(
+    estimatedNormals = pcurv::output::NewRealArray(
       "Normals", 3, numberOfPoints, this->SinglePrecisionOutput, arrays.Buffers.Normals);
   }
   pcurv::AlgorithmProgress progress(this, "Principal curvatures");
@@ -416,8 +225,8 @@ int vtkPrincipalCurvatureEstimation::RequestData(vtkInformation*,
   this->FourthOrderFits = summary.FourthOrderFits;
   pcurv::CopyGeometry(input, output);
   arrays.AddTo(output->GetPointData(), this->DiagnosticArrays);
-  ReportUnestimated(this, summary, processes, output);
-  WarnOnCoarseCoordinates(this,
+  pcurv::report::ReportUnestimated(this, summary, processes, output);
+  pcurv::report::WarnOnCoarseCoordinates(this,
     input,
     summary.UsedSurroundingsThreshold,
     settings.Neighborhood == pcurv::NeighborhoodMode::Automatic &&
@@ -498,70 +307,6 @@ void vtkPrincipalCurvatureEstimation::SetAdjustmentConstantsToPreset(int preset)
     this, pcurv::AdjustmentConstants(static_cast<pcurv::AdjustmentPreset>(preset)));
 }
 
-namespace
-{
-/// The array is meant as normals: the normals attribute, or a name that
-/// says so ("Normals", "normal", "Normals_PCA"...). Colours, RGB or any other
-/// 3-component array are not.
-bool NamedLikeNormals(vtkDataArray* array, vtkPointSet* input)
-{
-  if (!array)
-  {
-    return false;
-  }
-  if (array == input->GetPointData()->GetNormals())
-  {
-    return true;
-  }
-  std::string name = array->GetName() ? array->GetName() : "";
-  std::transform(
-    name.begin(), name.end(), name.begin(), [](unsigned char c) { return std::tolower(c); });
-  return name.find("normal") != std::string::npos;
-}
-
-/// Why `normals` (3 components) cannot be normals, or empty: an integer
-/// type (colours), all zero, or lengths that vary like colours do (normals
-/// scaled alike, even by 1e-170, are fine: they are normalised).
-std::string NotNormalsReason(vtkDataArray* normals)
-{
-  if (normals->GetDataType() != VTK_FLOAT && normals->GetDataType() != VTK_DOUBLE)
-  {
-    return std::string("is of type ") + normals->GetDataTypeAsString() +
-      ", as colours are; normals are floating-point";
-  }
-  const vtkIdType count = normals->GetNumberOfTuples();
-  const vtkIdType stride = std::max<vtkIdType>(1, count / 4096);
-  std::vector<double> lengths;
-  for (vtkIdType i = 0; i < count; i += stride)
-  {
-    double n[3];
-    normals->GetTuple(i, n);
-    // Scaled by the largest component first: lengths of 1e-170 do not
-    // underflow, nor 1e170 overflow.
-    const double largest = std::max({ std::fabs(n[0]), std::fabs(n[1]), std::fabs(n[2]) });
-    const double length =
-      largest > 0.0 ? largest * std::hypot(n[0] / largest, n[1] / largest, n[2] / largest) : 0.0;
-    if (length > 0.0 && std::isfinite(length))
-    {
-      lengths.push_back(length);
-    }
-  }
-  if (lengths.empty())
-  {
-    return "has no non-zero finite vector (all normals zero)";
-  }
-  std::sort(lengths.begin(), lengths.end());
-  const double low = lengths[lengths.size() / 10], high = lengths[lengths.size() * 9 / 10];
-  const double median = lengths[lengths.size() / 2];
-  if (high > 2.0 * low && (median < 0.5 || median > 2.0))
-  {
-    return "has lengths from " + std::to_string(low) + " to " + std::to_string(high) +
-      " (10th to 90th percentile), as colours or other data have; normals have one length";
-  }
-  return "";
-}
-} // namespace
-
 vtkDataArray* vtkPrincipalCurvatureEstimation::ChooseNormals(vtkInformationVector** inputVector,
   vtkPointSet* input,
   bool& estimate)
@@ -596,10 +341,11 @@ vtkDataArray* vtkPrincipalCurvatureEstimation::ChooseNormals(vtkInformationVecto
   {
     // ParaView's default choice is the first 3-component array, such as a
     // PLY's RGB: in automatic mode such an array is not taken for normals.
-    if (chosen && this->NormalsSource == AUTOMATIC_NORMALS && !NamedLikeNormals(chosen, input) &&
+    if (chosen && this->NormalsSource == AUTOMATIC_NORMALS &&
+      !pcurv::normals_choice::NamedLikeNormals(chosen, input) &&
       chosen->GetNumberOfComponents() == 3)
     {
-      const std::string reason = NotNormalsReason(chosen);
+      const std::string reason = pcurv::normals_choice::NotNormalsReason(chosen);
       if (!reason.empty())
       {
         vtkWarningMacro("The array '" << (chosen->GetName() ? chosen->GetName() : "") << "' "
@@ -631,7 +377,7 @@ bool vtkPrincipalCurvatureEstimation::CheckNormals(vtkDataArray* normals, vtkIdT
                                         << " tuples; 3 components per point are required.");
     return false;
   }
-  const std::string reason = NotNormalsReason(normals);
+  const std::string reason = pcurv::normals_choice::NotNormalsReason(normals);
   if (!reason.empty())
   {
     vtkErrorMacro("The array '" << name << "' chosen as normals " << reason
