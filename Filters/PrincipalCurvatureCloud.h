@@ -8,8 +8,10 @@
 #ifndef PrincipalCurvatureCloud_h
 #define PrincipalCurvatureCloud_h
 
-#include "Estimation/CloudEstimation.h"
-#include "Cloud/CloudStatistics.h"
+#include "Cloud/Collectives.h"
+#include "Common/Progress.h"
+#include "Common/WorkRunner.h"
+#include "Cloud/CloudPoints.h"
 
 #include <atomic>
 #include <chrono>

@@ -29,6 +29,7 @@ vtkPointCloudNormalEstimation::vtkPointCloudNormalEstimation()
   this->Orientation = static_cast<int>(defaults.Orientation);
   std::copy_n(defaults.Viewpoint.data(), 3, this->Viewpoint);
   std::copy_n(defaults.Axis.data(), 3, this->Axis);
+  this->NumberOfThreads = static_cast<int>(PCURV_DEFAULT("NumberOfThreads"));
 }
 
 int vtkPointCloudNormalEstimation::FillInputPortInformation(int, vtkInformation* info)

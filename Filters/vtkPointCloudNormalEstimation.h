@@ -85,12 +85,12 @@ protected:
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
-  // Defaults: pcurv::NormalSettings (Core/Normals/NormalEstimation.h).
+  // Defaults: Core/Settings/SettingsTable.h, through pcurv::NormalSettings.
   int NumberOfNeighbors;
   int Orientation;
   double Viewpoint[3];
   double Axis[3];
-  int NumberOfThreads = 0;
+  int NumberOfThreads;
   vtkIdType NumberOfParts = 0;
   vtkIdType NumberOfUndeterminedNormals = 0;
 

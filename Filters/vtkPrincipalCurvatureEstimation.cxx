@@ -122,6 +122,14 @@ vtkPrincipalCurvatureEstimation::vtkPrincipalCurvatureEstimation()
   this->MaximumSurroundingsFactor = defaults.MaximumSurroundingsFactor;
   this->AdjustmentBlockLength = defaults.AdjustmentBlockLength;
   this->NormalNeighbors = defaults.Normals.NumberOfNeighbors;
+  this->NormalOrientation = static_cast<int>(defaults.Normals.Orientation);
+  std::copy_n(defaults.Normals.Viewpoint.data(), 3, this->Viewpoint);
+  std::copy_n(defaults.Normals.Axis.data(), 3, this->OrientationAxis);
+  // The settings the core does not see.
+  this->NumberOfThreads = static_cast<int>(PCURV_DEFAULT("NumberOfThreads"));
+  this->SinglePrecisionOutput = PCURV_DEFAULT("SinglePrecisionOutput") != 0;
+  this->DiagnosticArrays = PCURV_DEFAULT("DiagnosticArrays") != 0;
+  this->NormalsSource = static_cast<int>(PCURV_DEFAULT("NormalsSource"));
   // Default to the active normals, as vtkGlyph3D does, so that plain C++
   // users need not call SetInputArrayToProcess.
   this->SetInputArrayToProcess(

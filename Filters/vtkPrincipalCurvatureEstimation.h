@@ -440,8 +440,8 @@ protected:
     bool& estimate);
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
-  // Defaults: pcurv::EstimationSettings (Core/Estimation/CloudEstimation.h),
-  // copied by the constructor.
+  // Defaults: Core/Settings/SettingsTable.h, through
+  // pcurv::EstimationSettings, copied by the constructor.
   int FitMode;
   int NeighborhoodMode;
   bool AutomaticThresholds;
@@ -451,10 +451,10 @@ protected:
   double PlaneDistanceRatio;
   int MinimumPointsPerDirection;
   double AutomaticScaleTolerance;
-  bool ShareFits = true;
-  int NumberOfThreads = 0;
-  bool SinglePrecisionOutput = false;
-  bool DiagnosticArrays = true;
+  bool ShareFits;
+  int NumberOfThreads;
+  bool SinglePrecisionOutput;
+  bool DiagnosticArrays;
   bool DynamicAdjustment;
   bool AutomaticLengthUnit;
   double LengthUnit;
@@ -464,10 +464,10 @@ protected:
   double SwitchLengths[3];
   double MaximumSurroundingsFactor;
   double AdjustmentBlockLength;
-  int NormalsSource = AUTOMATIC_NORMALS;
-  int NormalOrientation = OUTWARD;
-  double Viewpoint[3] = { 0.0, 0.0, 0.0 };
-  double OrientationAxis[3] = { 0.0, 0.0, 1.0 };
+  int NormalsSource;
+  int NormalOrientation;
+  double Viewpoint[3];
+  double OrientationAxis[3];
   int NormalNeighbors;
   bool UsedEstimatedNormals = false;
 

@@ -138,6 +138,10 @@ def plain_vtk_messages():
 # Command line
 
 
+# The --orientation names and the filter's.
+ORIENTATIONS = {"outward": "Outward", "viewpoint": "Towards Viewpoint", "axis": "Along Axis"}
+
+
 def parse_arguments(argv):
     """The command line, checked for contradictions."""
     parser = argparse.ArgumentParser(
@@ -165,14 +169,18 @@ def parse_arguments(argv):
                              "normals attribute, or an array named like normals, or else estimated normals)")
     parser.add_argument("--estimate-normals", action="store_true",
                         help="estimate the normals even if the input has some")
-    parser.add_argument("--orientation", choices=["outward", "viewpoint", "axis"], default="outward",
-                        help="how estimated normals are signed: outward (default; up where a part's inside "
-                             "cannot be told), towards --viewpoint, or along --axis")
-    parser.add_argument("--viewpoint", type=float, nargs=3, metavar=("X", "Y", "Z"), default=[0.0, 0.0, 0.0],
-                        help="where the scanner was, with --orientation viewpoint (default: the origin)")
-    parser.add_argument("--axis", type=float, nargs=3, metavar=("X", "Y", "Z"), default=[0.0, 0.0, 1.0],
-                        help="the direction estimated normals point along, with --orientation axis (default: +z)")
-    parser.add_argument("--threads", type=int, default=0, metavar="T", help="at most T threads (default 0: all cores)")
+    # Settings without a value given keep the filter's defaults
+    # (Core/Settings/SettingsTable.h, docs/settings.md).
+    parser.add_argument("--orientation", choices=sorted(ORIENTATIONS),
+                        help="how estimated normals are signed: outward (up where a part's inside cannot be "
+                             "told), towards --viewpoint, or along --axis (default: the filter's NormalOrientation)")
+    parser.add_argument("--viewpoint", type=float, nargs=3, metavar=("X", "Y", "Z"),
+                        help="where the scanner was, with --orientation viewpoint (default: the filter's Viewpoint)")
+    parser.add_argument("--axis", type=float, nargs=3, metavar=("X", "Y", "Z"),
+                        help="the direction estimated normals point along, with --orientation axis (default: the "
+                             "filter's OrientationAxis)")
+    parser.add_argument("--threads", type=int, metavar="T",
+                        help="at most T threads, 0 for all cores (default: the filter's NumberOfThreads)")
     parser.add_argument("--single-precision", action="store_true",
                         help="write the output arrays as float, not double; in a .ply or .csv the points too, "
                              "where float keeps them to a millionth of the cloud's size")
@@ -202,7 +210,7 @@ def parse_arguments(argv):
         arguments.fit_mode = "New01" if arguments.dynamic_adjustment else "OrientedCircles"
     if arguments.dynamic_adjustment and (arguments.radius or arguments.k_nearest or arguments.neighbors):
         parser.error("--dynamic-adjustment replaces --neighbors, --k-nearest and --radius")
-    if arguments.threads < 0:
+    if arguments.threads is not None and arguments.threads < 0:
         parser.error("--threads must be 0 (all cores) or positive")
     if arguments.progress is None:
         arguments.progress = sys.stderr.isatty()
@@ -456,13 +464,16 @@ def choose_normals(source, requested):
 
 def configure_normals(curvatures, arguments, normals):
     """Sets where the normals come from; returns how the summary names them."""
-    orientation = {"outward": "Outward", "viewpoint": "Towards Viewpoint", "axis": "Along Axis"}
-    curvatures.NormalOrientation = orientation[arguments.orientation]
-    curvatures.Viewpoint = arguments.viewpoint
-    curvatures.OrientationAxis = arguments.axis
+    if arguments.orientation is not None:
+        curvatures.NormalOrientation = ORIENTATIONS[arguments.orientation]
+    if arguments.viewpoint is not None:
+        curvatures.Viewpoint = arguments.viewpoint
+    if arguments.axis is not None:
+        curvatures.OrientationAxis = arguments.axis
     if arguments.estimate_normals or normals is None:
         curvatures.NormalsSource = "Estimated"
-        return "estimated (%s)" % arguments.orientation
+        named = {text: name for name, text in ORIENTATIONS.items()}
+        return "estimated (%s)" % named[curvatures.NormalOrientation.GetData()]
     curvatures.Normals = ["POINTS", normals]
     # A named array must be normals: an error, not a silent estimate.
     curvatures.NormalsSource = "Input Array" if arguments.normals else "Automatic"
@@ -513,12 +524,12 @@ class Progress:
             sys.stderr.flush()
         self.stage = None
 
-# The dynamic adjustment's constants (docs/dynamic-adjustment.md), as the
-# filter's presets give them (Testing/Python/TestSettingsAgree.py checks):
-# the paper's, and the banded ladder measured on clouds of varying density.
+# The dynamic adjustment's constants by --dynamic-adjustment name: the
+# paper's are the filter's defaults; the banded ladders as the filter's
+# presets give them (docs/dynamic-adjustment.md; TestSettingsAgree.py checks
+# them against vtkPrincipalCurvatureEstimation::SetAdjustmentConstantsToPreset).
 ADJUSTMENTS = {
-    "paper": {"TargetNeighborCounts": [375, 750, 1500], "TargetPlaneDistances": [0.1, 0.05, 0.025],
-              "SwitchLengths": [2, 1, 4]},
+    "paper": {},
     "ladder": {"TargetNeighborCounts": [375, 750, 1500], "TargetPlaneDistances": [0.2, 0.2, 0.2],
                "SwitchLengths": [4.5, 3.2, 7.2]},
     "noisy-ladder": {"TargetNeighborCounts": [1000, 2000, 4000], "TargetPlaneDistances": [0.6, 0.6, 0.6],
@@ -529,7 +540,8 @@ ADJUSTMENTS = {
 def configure(curvatures, arguments):
     """Sets the filter's properties from the command line."""
     curvatures.FitMode = arguments.fit_mode
-    curvatures.NumberOfThreads = arguments.threads
+    if arguments.threads is not None:
+        curvatures.NumberOfThreads = arguments.threads
     curvatures.SinglePrecisionOutput = int(arguments.single_precision)
     curvatures.DiagnosticArrays = int(not arguments.no_diagnostics)
     fixed = arguments.neighbors or arguments.k_nearest or arguments.radius

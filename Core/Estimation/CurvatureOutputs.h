@@ -8,7 +8,7 @@
 
 #include "Common/RealBuffer.h"
 #include "Fits/FitResults.h"
-#include "Normals/NormalSettings.h"
+#include "Normals/NormalSummary.h"
 
 #include <array>
 #include <cstdint>

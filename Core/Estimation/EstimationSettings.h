@@ -6,6 +6,7 @@
 #ifndef EstimationSettings_h
 #define EstimationSettings_h
 
+#include "Settings/SettingsTable.h"
 #include "Fits/FitResults.h"
 #include "Normals/NormalSettings.h"
 #include "Scale/DynamicAdjustment.h"
@@ -29,42 +30,42 @@ enum class NeighborhoodMode : int
 /// defaults here are the filter's defaults.
 struct EstimationSettings
 {
-  FitMode Mode = FitMode::OrientedCircles;
-  NeighborhoodMode Neighborhood = NeighborhoodMode::Automatic;
+  FitMode Mode = static_cast<FitMode>(PCURV_DEFAULT("FitMode"));
+  NeighborhoodMode Neighborhood = static_cast<NeighborhoodMode>(PCURV_DEFAULT("NeighborhoodMode"));
   /// s and p derived from the cloud (s: median distance to the
   /// NumberOfNeighbors-th neighbour; p = PlaneDistanceRatio s).
-  bool AutomaticThresholds = true;
-  int NumberOfNeighbors = 375;
-  double SurroundingsThreshold = 1.0;  ///< s when not automatic
-  double PlaneDistanceThreshold = 0.1; ///< p when not automatic
-  double PlaneDistanceRatio = 0.1;     ///< p / s when automatic or k nearest
-  int MinimumPointsPerDirection = 3;
+  bool AutomaticThresholds = PCURV_DEFAULT("AutomaticThresholds") != 0;
+  int NumberOfNeighbors = static_cast<int>(PCURV_DEFAULT("NumberOfNeighbors"));
+  double SurroundingsThreshold = PCURV_DEFAULT("SurroundingsThreshold");   ///< s when not automatic
+  double PlaneDistanceThreshold = PCURV_DEFAULT("PlaneDistanceThreshold"); ///< p, not automatic
+  double PlaneDistanceRatio = PCURV_DEFAULT("PlaneDistanceRatio"); ///< p / s: automatic, k nearest
+  int MinimumPointsPerDirection = static_cast<int>(PCURV_DEFAULT("MinimumPointsPerDirection"));
   /// OrientedCircles: a point whose neighbours' normals oppose its own for
   /// more than this fraction of them is not estimated (the neighbourhood
   /// reaches across the surface).
   double MaximumOpposingFraction = 0.05;
   /// NeighborhoodMode::Automatic: how many standard errors the estimates of
   /// two radii may differ by for the larger to be kept.
-  double AutomaticScaleTolerance = 2.0;
+  double AutomaticScaleTolerance = PCURV_DEFAULT("AutomaticScaleTolerance");
   /// NeighborhoodMode::Automatic: a point near an anchor point whose
   /// neighbourhood is wide takes the anchor's fitted surface, evaluated at
   /// its own position, instead of gathering nearly the same neighbours
   /// again (SharedFits.h). Off: every point fits its own.
-  bool ShareFits = true;
+  bool ShareFits = PCURV_DEFAULT("ShareFits") != 0;
 
   /// The paper's dynamic variable adjustment instead of the above.
-  bool DynamicAdjustment = false;
+  bool DynamicAdjustment = PCURV_DEFAULT("DynamicAdjustment") != 0;
   /// L derived from the cloud: InitialSurroundingsThreshold L then holds
   /// about the first target count at a typical point.
-  bool AutomaticLengthUnit = true;
-  double LengthUnit = 1.0; ///< L when not automatic
+  bool AutomaticLengthUnit = PCURV_DEFAULT("AutomaticLengthUnit") != 0;
+  double LengthUnit = PCURV_DEFAULT("LengthUnit"); ///< L when not automatic
   /// The initial s, target counts, target plane distances and switch
   /// lengths (lengths in units of L). The paper's constants by default.
   AdjustmentSettings Adjustment;
   /// s never exceeds this times the initial s.
-  double MaximumSurroundingsFactor = 4.0;
+  double MaximumSurroundingsFactor = PCURV_DEFAULT("MaximumSurroundingsFactor");
   /// Side of an adjustment block, in units of L.
-  double AdjustmentBlockLength = 8.0;
+  double AdjustmentBlockLength = PCURV_DEFAULT("AdjustmentBlockLength");
 
   /// Estimate the normals (NormalEstimation.h) instead of using the
   /// cloud's; they are written to CurvatureBuffers::Normals.

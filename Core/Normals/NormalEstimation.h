@@ -15,6 +15,7 @@
 #define NormalEstimation_h
 
 #include "Normals/NormalSettings.h"
+#include "Normals/NormalSummary.h"
 
 #include <vector>
 

@@ -1,10 +1,12 @@
 /**
  * @file NormalSettings.h
- * @brief What the normal estimation is asked (neighbors, orientation) and
- * what it reports. No VTK.
+ * @brief What the normal estimation is asked: neighbors, orientation.
+ * No VTK.
  */
 #ifndef NormalSettings_h
 #define NormalSettings_h
+
+#include "Settings/SettingsTable.h"
 
 #include <array>
 #include <cstdint>
@@ -31,22 +33,13 @@ enum class NormalOrientation : int
 struct NormalSettings
 {
   /// Neighbours of the PCA plane fit (the point itself not counted).
-  int NumberOfNeighbors = 30;
+  int NumberOfNeighbors = static_cast<int>(PCURV_DEFAULT("NormalNeighbors"));
   /// Nearest neighbours each point is joined to in the orientation graph.
   int GraphNeighbors = 8;
-  NormalOrientation Orientation = NormalOrientation::Outward;
-  std::array<double, 3> Viewpoint{ { 0.0, 0.0, 0.0 } };
-  std::array<double, 3> Axis{ { 0.0, 0.0, 1.0 } };
-};
-
-struct NormalSummary
-{
-  /// Connected parts of the orientation graph (Outward only).
-  std::int64_t Components = 0;
-  /// Points with too few neighbours for a plane (their normal is zero).
-  std::int64_t Undetermined = 0;
-  /// The progress monitor asked to stop: the normals are incomplete.
-  bool Aborted = false;
+  NormalOrientation Orientation =
+    static_cast<NormalOrientation>(PCURV_DEFAULT("NormalOrientation"));
+  std::array<double, 3> Viewpoint = PCURV_DEFAULT3("Viewpoint");
+  std::array<double, 3> Axis = PCURV_DEFAULT3("OrientationAxis");
 };
 
 } // namespace pcurv

@@ -9,6 +9,7 @@
 #define Orientation_h
 
 #include "Normals/NormalSettings.h"
+#include "Normals/NormalSummary.h"
 
 #include <vector>
 

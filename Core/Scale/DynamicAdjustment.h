@@ -21,6 +21,8 @@
 #ifndef DynamicAdjustment_h
 #define DynamicAdjustment_h
 
+#include "Settings/SettingsTable.h"
+
 #include <array>
 
 namespace pcurv
@@ -28,13 +30,15 @@ namespace pcurv
 
 struct AdjustmentSettings
 {
-  double LengthUnit = 1.0;                   ///< L, multiplies every length below
-  double InitialSurroundingsThreshold = 4.0; ///< s at the start, in units of L
-  std::array<double, 3> TargetNeighborCounts{ { 375.0, 750.0, 1500.0 } };
-  std::array<double, 3> TargetPlaneDistances{ { 0.1, 0.05, 0.025 } }; ///< in units of L
+  double LengthUnit = 1.0; ///< L, multiplies every length below
+  double InitialSurroundingsThreshold =
+    PCURV_DEFAULT("InitialSurroundingsThreshold"); ///< s at the start, in units of L
+  std::array<double, 3> TargetNeighborCounts = PCURV_DEFAULT3("TargetNeighborCounts");
+  std::array<double, 3> TargetPlaneDistances =
+    PCURV_DEFAULT3("TargetPlaneDistances"); ///< units of L
   /// Switch to the second combination below SwitchLengths[0], to the third
   /// below SwitchLengths[1]; step back one above SwitchLengths[2] (units of L).
-  std::array<double, 3> SwitchLengths{ { 2.0, 1.0, 4.0 } };
+  std::array<double, 3> SwitchLengths = PCURV_DEFAULT3("SwitchLengths");
   /// s never grows beyond this (units of L; the paper has no bound): in a
   /// region far sparser than the targets it would otherwise grow without
   /// limit, and a parallel run must know how far a query can reach.

@@ -1,7 +1,10 @@
-"""The settings are defined once, in the numeric core (pcurv::EstimationSettings,
-pcurv::AdjustmentConstants), and read by the filter; the places that cannot
-include C++ are checked against it here:
+"""The settings are defined once, in the table of Core/Settings/SettingsTable.h
+(printed as JSON by PrintSettingsTable); the core's settings take their
+defaults from it, and the filters theirs from the core's. Checked here:
 
+- each filter's defaults, and its clamps, are the table's;
+- docs/settings.md's tables are the table's (Scripts/settings_table.py);
+- the command-line tool sets no default of its own;
 - every default_values of the plugin XML equals the filter's default;
 - the XML's enumerations equal the filter's enum constants;
 - the XML's ranges (the panel's sliders) start at the filter's clamp minimum
@@ -12,17 +15,20 @@ include C++ are checked against it here:
 - render_principal_directions.py defaults to the filter's fit and takes every
   fit mode; no document calls another fit the default.
 
-    pvpython TestSettingsAgree.py PLUGIN.xml estimate_curvatures.py
+    pvpython TestSettingsAgree.py PLUGIN.xml estimate_curvatures.py PrintSettingsTable SOURCE
 (with the wrapped package on PYTHONPATH)
 """
 
 import importlib.util
+import json
+import os
+import subprocess
 import sys
 import xml.etree.ElementTree as ElementTree
 
-from principal_curvatures import vtkPrincipalCurvatureEstimation
+from principal_curvatures import vtkPointCloudNormalEstimation, vtkPrincipalCurvatureEstimation
 
-xml_path, cli_path = sys.argv[1], sys.argv[2]
+xml_path, cli_path, table_printer, source = sys.argv[1:5]
 failures = []
 
 
@@ -30,6 +36,44 @@ def check(condition, message):
     print(("ok      " if condition else "FAILED  ") + message)
     if not condition:
         failures.append(message)
+
+
+def as_list(value):
+    return [float(v) for v in value] if isinstance(value, (tuple, list)) else [float(value)]
+
+
+# The table against each filter's defaults and clamps.
+rows = json.loads(subprocess.check_output([table_printer]).decode())
+check(len(rows) >= 25, "%d settings in the table" % len(rows))
+for row in rows:
+    for make, name in ((vtkPrincipalCurvatureEstimation, row["name"]),
+                       (vtkPointCloudNormalEstimation, row["normals_name"])):
+        if name is None:
+            continue
+        check(as_list(getattr(make(), "Get" + name)()) == row["default"],
+              "%s.%s: default %s, table %s" % (make.__name__, name, getattr(make(), "Get" + name)(), row["default"]))
+        if row["type"] not in ("int", "double", "enum"):
+            continue
+        for bound, beyond in (("minimum", -1.0), ("maximum", 1.0)):
+            limit = row[bound]
+            if limit is None:
+                continue
+            probe = make()
+            value = limit + beyond * max(1.0, abs(limit))
+            getattr(probe, "Set" + name)(int(value) if row["type"] != "double" else value)
+            check(float(getattr(probe, "Get" + name)()) == limit,
+                  "%s.%s: clamped to the table's %s %s" % (make.__name__, name, bound, limit))
+
+# The docs' tables.
+sys.path.insert(0, os.path.join(source, "Scripts"))
+import settings_table  # noqa: E402
+
+with open(os.path.join(source, "docs", "settings.md"), encoding="utf-8") as handle:
+    settings_doc = handle.read()
+check(settings_table.rewritten(settings_doc, rows) == settings_doc,
+      "docs/settings.md's tables are written from the table (else run Scripts/settings_table.py)")
+check(set(settings_table.BEGIN.findall(settings_doc)) == {row["group"] for row in rows},
+      "docs/settings.md has a table for every group of settings")
 
 
 def values(text, kind):
@@ -99,10 +143,17 @@ check(sorted(cli.ADJUSTMENTS) == sorted(presets), "the tool's adjustment names: 
 for name, preset in presets.items():
     f = vtkPrincipalCurvatureEstimation()
     f.SetAdjustmentConstantsToPreset(preset)
-    for setting, given in cli.ADJUSTMENTS.get(name, {}).items():
+    unset = vtkPrincipalCurvatureEstimation()
+    for setting in ("TargetNeighborCounts", "TargetPlaneDistances", "SwitchLengths"):
+        given = cli.ADJUSTMENTS.get(name, {}).get(setting, list(getattr(unset, "Get" + setting)()))
         expected = list(getattr(f, "Get" + setting)())
         check([float(v) for v in given] == expected,
               "--dynamic-adjustment %s: %s %s, filter preset %s" % (name, setting, given, expected))
+# The tool leaves every setting it is not given at the filter's default.
+given = cli.parse_arguments(["in.vtp", "out.vtp"])
+settings_options = ("orientation", "viewpoint", "axis", "threads", "neighbors", "radius", "plane_distance")
+check(all(getattr(given, option) is None for option in settings_options),
+      "the tool sets no default of its own for %s" % ", ".join("--" + o for o in settings_options))
 
 ladder = vtkPrincipalCurvatureEstimation()
 ladder.SetAdjustmentConstantsToPreset(ladder.LADDER)

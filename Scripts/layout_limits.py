@@ -1,13 +1,15 @@
-"""The longest chain of the project's own includes, and the largest files.
+"""The layout's limits: the longest chain of the project's own includes,
+the largest product files and the largest classes.
 
-    python3 Scripts/include_chains.py [--max-chain N] [--max-lines N]
+    python3 Scripts/layout_limits.py [--max-chain N] [--max-lines N] [--max-class N]
 
 Follows every quoted include of the product code (Core, FileFormats,
 Filters, Readers, Plugin) that names a file of the project, from each
 source or header, and prints the longest chain (counted in includes: a
 file that includes a header that includes nothing of ours is a chain of
-1). With --max-chain or --max-lines, exits with 1 when a chain is longer
-or a product file has more lines (the IncludeChains test).
+1). A class is counted from its "class" or "struct" line to its closing
+brace. With --max-chain, --max-lines or --max-class, exits with 1 when a
+chain, a product file or a class is longer (the LayoutLimits test).
 """
 
 import argparse
@@ -64,10 +66,31 @@ def line_count(path):
         return sum(1 for _ in handle)
 
 
+CLASS = re.compile(r"^(\s*)(?:template\s*<[^>]*>\s*)?(?:class|struct)\s+(?:\w+_EXPORT\s+)?(\w+)[^;]*$")
+
+
+def classes(path):
+    """(lines, name) of every class or struct defined in `path`."""
+    with open(path, encoding="utf-8") as handle:
+        lines = handle.read().split("\n")
+    found = []
+    for i, line in enumerate(lines):
+        match = CLASS.match(line)
+        if not match:
+            continue
+        indent = match.group(1)
+        for j in range(i + 1, len(lines)):
+            if lines[j].startswith(indent + "};"):
+                found.append((j - i + 1, match.group(2)))
+                break
+    return found
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--max-chain", type=int)
     parser.add_argument("--max-lines", type=int)
+    parser.add_argument("--max-class", type=int)
     arguments = parser.parse_args()
     files = list(product_files())
     chains = sorted((longest_chain(f) for f in files), key=len, reverse=True)
@@ -78,6 +101,11 @@ def main():
     print("largest product files:")
     for lines, name in sizes[:5]:
         print("  %5d %s" % (lines, name))
+    sized = sorted(((lines, name, os.path.relpath(f, ROOT)) for f in files for lines, name in classes(f)),
+                   reverse=True)
+    print("largest classes:")
+    for lines, name, where in sized[:5]:
+        print("  %5d %s (%s)" % (lines, name, where))
     failed = False
     if arguments.max_chain is not None and len(longest) - 1 > arguments.max_chain:
         print("FAILED: a chain of %d includes, more than %d" % (len(longest) - 1, arguments.max_chain))
@@ -85,6 +113,10 @@ def main():
     if arguments.max_lines is not None and sizes[0][0] > arguments.max_lines:
         over = [name for lines, name in sizes if lines > arguments.max_lines]
         print("FAILED: %s longer than %d lines" % (", ".join(over), arguments.max_lines))
+        failed = True
+    if arguments.max_class is not None and sized and sized[0][0] > arguments.max_class:
+        over = ["%s (%d)" % (name, lines) for lines, name, _ in sized if lines > arguments.max_class]
+        print("FAILED: %s longer than %d lines" % (", ".join(over), arguments.max_class))
         failed = True
     return 1 if failed else 0
 

@@ -1,0 +1,25 @@
+/**
+ * @file NormalSummary.h
+ * @brief What the normal estimation reports of a cloud. No VTK.
+ */
+#ifndef NormalSummary_h
+#define NormalSummary_h
+
+#include <cstdint>
+
+namespace pcurv
+{
+
+struct NormalSummary
+{
+  /// Connected parts of the orientation graph (Outward only).
+  std::int64_t Components = 0;
+  /// Points with too few neighbours for a plane (their normal is zero).
+  std::int64_t Undetermined = 0;
+  /// The progress monitor asked to stop: the normals are incomplete.
+  bool Aborted = false;
+};
+
+} // namespace pcurv
+
+#endif
