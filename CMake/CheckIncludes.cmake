@@ -14,7 +14,7 @@
 # Every folder whose headers are checked, and the VTK side's folders, which
 # none of them may include.
 set(PCURV_LIBRARY_FOLDERS
-  Common Kernels Neighbors Cloud Fits Scale Normals Estimation FileFormats
+  Settings Common Kernels Neighbors Cloud Fits Scale Normals Estimation FileFormats
   Filters Readers Plugin)
 
 function (pcurv_vtk_includes_in folder out)
