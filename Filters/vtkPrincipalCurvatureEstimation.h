@@ -1,64 +1,39 @@
 /**
  * @class   vtkPrincipalCurvatureEstimation
- * @brief   principal curvatures and directions of a point cloud with normals,
- *          by osculating-circle fitting in conformal geometric algebra
+ * @brief   principal curvatures and directions of a point cloud, by
+ *          osculating circles in conformal geometric algebra
  *
- * For every input point x with normal n, the neighbours within the
- * surroundings-threshold s (or the k nearest) are sorted into 16 half planes
- * around n: a neighbour belongs to half plane i when it lies on the plane's
- * side and closer than the plane-distance-threshold p to it. In each half
- * plane a circle through x with its centre on the normal line is fitted in
- * conformal geometric algebra (Seibert et al. 2010; Getto & Hildenbrand,
- * WSCG 2011), giving one normal curvature per direction. A sine of period pi
- * fitted to these 16 values (IEEE Std 1241, three parameters) gives the
- * principal curvatures (its extremes) and directions (where they occur).
+ * The method of Getto & Hildenbrand (WSCG 2011), on Seibert et al. (2010):
+ * the neighbors of each point are sorted into 16 half planes around its
+ * normal, a circle through the point is fitted in each (FitMode PREVIOUS,
+ * NEW01 or NEW02), and a sine fitted to the 16 normal curvatures gives the
+ * principal curvatures and directions. Beyond the paper, and the default:
+ * ORIENTED_CIRCLES, every neighbor's circle from its position and its
+ * normal, over a neighborhood chosen per point from the data
+ * (AUTOMATIC_SCALE). docs/method.md describes the method as implemented.
  *
- * Three circle fits are offered (SetFitMode): PREVIOUS, the eigenvector of the
- * smallest eigenvalue of the CGA matrix; NEW01, one closed-form equation;
- * NEW02, the better (by summed geometric distance) of two closed forms.
+ * Input: any vtkPointSet. Normals are optional: the input's are used when
+ * it has real ones, and they are estimated otherwise (NormalsSource). The
+ * curvatures' signs follow the normals: positive where the surface bends
+ * away from the normal, so a sphere with outward normals gives +1/R, as
+ * vtkCurvatures reports.
  *
- * Output: the input points and point data, vertex cells (or the input's
- * cells when the input is a vtkPolyData that has cells), and these point-data
- * arrays (doubles unless stated):
- * - Minimum_Curvature, Maximum_Curvature (1/length, Maximum >= Minimum),
- *   Mean_Curvature (their mean), Gauss_Curvature (their product). Sign:
- *   positive where the surface bends away from the normal, so a sphere with
- *   outward normals gives +1/R, as vtkCurvatures reports.
- * - Minimum_Curvature_Direction, Maximum_Curvature_Direction: unit 3-vectors
- *   orthogonal to each other (defined up to sign) and to the normal: the
- *   given one with the paper's fits, Fitted_Normal with OrientedCircles.
- * - Fitted_Normal (3-vector), Curvature_Standard_Error, with
- *   OrientedCircles only: the fitted surface's unit normal (the given one
- *   turned by the fit's tilt where it is the normal's error), and the
- *   curvatures' standard error (1/length).
- * - Curvature_Valid (unsigned char): 1 where estimated, 0 where not (then the
- *   curvatures are NaN and the directions zero vectors).
- * - Neighbor_Count (int), Valid_Direction_Count (int, 0..16),
- *   Sine_Fit_RMS (1/length), Surroundings_Threshold (the neighborhood
- *   radius at the point: its Neighbor_Count neighbors are closer than it)
- *   and Plane_Distance_Threshold (lengths, in the input's unit).
- * - Field data: Curvature_Unit (string, "1/length unit of the input
- *   coordinates") and the Unestimated_* counts. The range reported for
- *   Mean_Curvature_Clipped is [-c, c], symmetric about zero, so that a
- *   diverging colour map shows zero as its middle colour.
- * - Target_Neighbor_Count (int), with DynamicAdjustment only: the count the
- *   adjustment aimed at for the point (its target combination's N_t; 0
- *   where the point has no usable coordinate or normal).
+ * Output: the input's points and point data, its cells (or one vertex per
+ * point), and point-data arrays: Minimum_Curvature, Maximum_Curvature,
+ * Mean_Curvature, Gauss_Curvature, their directions, Shape_Index,
+ * Curvedness, Curvature_Valid, and with ORIENTED_CIRCLES
+ * Curvature_Standard_Error, Curvature_Trusted and Fitted_Normal; the
+ * diagnostic arrays with DiagnosticArrays; field data with the unit and the
+ * counts of points not estimated, by reason. docs/output-arrays.md lists
+ * them all.
  *
- * By default the thresholds are derived from the cloud: s is the median,
- * over a fixed sample of points, of the distance to the NumberOfNeighbors-th
- * nearest neighbour (so a typical point has about that many neighbours), and
- * p = PlaneDistanceRatio * s.
+ * Every setting, its default and range: docs/settings.md (one table,
+ * Core/Settings/SettingsTable.h). Results do not depend on the number of
+ * threads, the SIMD kernels or how ParaView splits the cloud among
+ * processes. Points with non-finite coordinates, or with a normal that is
+ * zero or not finite, are not estimated (Curvature_Valid 0, NaN curvatures).
  *
- * The work is spread over all cores (the STDThread SMP backend is used when
- * the process default is the sequential one); every point is computed
- * independently, so results do not depend on the number of threads.
- *
- * @warning Normals need not be consistently oriented for the magnitudes, but
- * the signs of the curvatures follow the normals. Points with a missing,
- * zero or non-finite normal or non-finite coordinates are not estimated.
- *
- * @sa vtkCurvatures vtkPCACurvatureEstimation vtkPCANormalEstimation
+ * @sa vtkPointCloudNormalEstimation vtkCurvatures vtkPCACurvatureEstimation
  */
 #ifndef vtkPrincipalCurvatureEstimation_h
 #define vtkPrincipalCurvatureEstimation_h
@@ -118,14 +93,7 @@ public:
   };
 
   ///@{
-  /**
-   * The circle fit per direction. Default ORIENTED_CIRCLES (with the
-   * AUTOMATIC_SCALE neighbourhood), beyond the paper: the most accurate on
-   * the shared suite (Study/REPORT.md). Of the paper's three, NEW01 is as
-   * accurate as PREVIOUS without noise, the most accurate with noise, and
-   * the fastest; NEW02's choice between its two closed forms picks the
-   * noise-biased one too often.
-   */
+  /// The fit: ORIENTED_CIRCLES (default), or the paper's PREVIOUS, NEW01, NEW02.
   vtkSetClampMacro(FitMode, int, PREVIOUS, ORIENTED_CIRCLES);
   vtkGetMacro(FitMode, int);
   void SetFitModeToPrevious() { this->SetFitMode(PREVIOUS); }
@@ -135,9 +103,8 @@ public:
   ///@}
 
   ///@{
-  /**
-   * RADIUS (default) or K_NEAREST neighbourhoods.
-   */
+  /// AUTOMATIC_SCALE (default; RADIUS with the paper's fits or fixed
+  /// thresholds), RADIUS or K_NEAREST.
   vtkSetClampMacro(NeighborhoodMode, int, RADIUS, AUTOMATIC_SCALE);
   vtkGetMacro(NeighborhoodMode, int);
   void SetNeighborhoodModeToRadius() { this->SetNeighborhoodMode(RADIUS); }
@@ -146,107 +113,63 @@ public:
   ///@}
 
   ///@{
-  /**
-   * AUTOMATIC_SCALE: how many standard errors the estimates of two radii may
-   * differ by for the larger radius to be kept (default 2). Larger values
-   * smooth more (larger neighbourhoods), smaller values follow small
-   * features more closely.
-   */
+  /// AUTOMATIC_SCALE: standard errors two radii's estimates may differ by.
   vtkSetClampMacro(AutomaticScaleTolerance, double, 0.1, 100.0);
   vtkGetMacro(AutomaticScaleTolerance, double);
   ///@}
 
   ///@{
-  /**
-   * AUTOMATIC_SCALE: a point near an anchor point whose neighbourhood is
-   * wide (noisy clouds) takes the anchor's fitted surface, evaluated at its
-   * own position, instead of fitting nearly the same neighbours again
-   * (default on; docs/method.md). Off: every point fits its own
-   * neighbourhood, at several times the cost on noisy clouds.
-   */
+  /// AUTOMATIC_SCALE: points near an anchor take its fitted surface.
   vtkSetMacro(ShareFits, bool);
   vtkGetMacro(ShareFits, bool);
   vtkBooleanMacro(ShareFits, bool);
   ///@}
 
   ///@{
-  /**
-   * When on (default), the surroundings-threshold s and the
-   * plane-distance-threshold p are derived from the cloud (see the class
-   * description) and SurroundingsThreshold / PlaneDistanceThreshold are
-   * ignored. In K_NEAREST mode, p = PlaneDistanceRatio times the distance to
-   * the farthest of the point's neighbours.
-   */
+  /// Derive the thresholds s and p from the cloud (default on).
   vtkSetMacro(AutomaticThresholds, bool);
   vtkGetMacro(AutomaticThresholds, bool);
   vtkBooleanMacro(AutomaticThresholds, bool);
   ///@}
 
   ///@{
-  /**
-   * Target number of neighbours for the automatic surroundings-threshold, and
-   * k in K_NEAREST mode. Default 375 (the paper's target).
-   */
+  /// Neighbors for the automatic s, and k of K_NEAREST.
   vtkSetClampMacro(NumberOfNeighbors, int, 3, 1000000);
   vtkGetMacro(NumberOfNeighbors, int);
   ///@}
 
   ///@{
-  /**
-   * The surroundings-threshold s (a radius, in the cloud's length unit) used
-   * when AutomaticThresholds is off in RADIUS mode. Default 1.
-   */
+  /// s, a length, when AutomaticThresholds is off.
   vtkSetClampMacro(SurroundingsThreshold, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(SurroundingsThreshold, double);
   ///@}
 
   ///@{
-  /**
-   * The plane-distance-threshold p (a length) used when AutomaticThresholds
-   * is off. Default 0.1.
-   */
+  /// p, a length, when AutomaticThresholds is off (the paper's fits).
   vtkSetClampMacro(PlaneDistanceThreshold, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(PlaneDistanceThreshold, double);
   ///@}
 
   ///@{
-  /**
-   * p / s when AutomaticThresholds is on. Default 0.1.
-   */
+  /// p / s when AutomaticThresholds is on (the paper's fits).
   vtkSetClampMacro(PlaneDistanceRatio, double, 0.001, 1.0);
   vtkGetMacro(PlaneDistanceRatio, double);
   ///@}
 
   ///@{
-  /**
-   * Fewest points a direction needs for its circle fit. Default 3 (the least
-   * that determines a circle).
-   */
+  /// Fewest points for a direction's circle fit.
   vtkSetClampMacro(MinimumPointsPerDirection, int, 3, 1000000);
   vtkGetMacro(MinimumPointsPerDirection, int);
   ///@}
 
   ///@{
-  /**
-   * Upper bound on the number of threads; 0 (default) uses all cores.
-   */
+  /// At most this many threads; 0 uses all cores.
   vtkSetClampMacro(NumberOfThreads, int, 0, 4096);
   vtkGetMacro(NumberOfThreads, int);
   ///@}
 
   ///@{
-  /**
-   * Output size. SinglePrecisionOutput (default off) writes the curvature
-   * arrays, directions, shape index, curvedness, diagnostics and estimated
-   * normals as float instead of double (the points stay as they are:
-   * coordinates far from the origin need their precision).
-   * DiagnosticArrays (default on) adds the arrays that say how each point
-   * was estimated: Neighbor_Count, Valid_Direction_Count, Sine_Fit_RMS,
-   * Surroundings_Threshold, Plane_Distance_Threshold,
-   * Curvature_Standard_Error and Target_Neighbor_Count, and the display
-   * array Mean_Curvature_Clipped (the active scalars; without it,
-   * Mean_Curvature is).
-   */
+  /// Float output arrays instead of double; the diagnostic arrays or not.
   vtkSetMacro(SinglePrecisionOutput, bool);
   vtkGetMacro(SinglePrecisionOutput, bool);
   vtkBooleanMacro(SinglePrecisionOutput, bool);
@@ -256,33 +179,15 @@ public:
   ///@}
 
   ///@{
-  /**
-   * Dynamic variable adjustment (Getto & Hildenbrand 2011, section 5): the
-   * surroundings-threshold found for one point is used for the next and
-   * adapted to reach a target neighbour count, the plane-distance-threshold
-   * follows the count found, and the targets step between three
-   * combinations as s shrinks or grows. When on, NeighborhoodMode,
-   * AutomaticThresholds, SurroundingsThreshold and PlaneDistance* are
-   * ignored. Points are processed in the neighbour grid's spatially coherent
-   * order, grouped into blocks (cells of a lattice in space) that each start
-   * like the paper's first point (initial s, first targets, the first
-   * search repeated with the adjusted s): see AdjustmentBlockLength. Default
-   * off.
-   */
+  /// The paper's dynamic variable adjustment instead of the neighborhood
+  /// settings above (docs/dynamic-adjustment.md).
   vtkSetMacro(DynamicAdjustment, bool);
   vtkGetMacro(DynamicAdjustment, bool);
   vtkBooleanMacro(DynamicAdjustment, bool);
   ///@}
 
   ///@{
-  /**
-   * The length unit L that multiplies every length of the adjustment
-   * (initial s, switch lengths, target plane distances). With
-   * AutomaticLengthUnit on (default), L is derived from the cloud so that
-   * the initial s (4 L) holds about TargetNeighborCounts[0] points: the
-   * method is then scale free. Off, LengthUnit is used (default 1: the
-   * paper's absolute values).
-   */
+  /// The adjustment's length unit L: from the cloud, or LengthUnit.
   vtkSetMacro(AutomaticLengthUnit, bool);
   vtkGetMacro(AutomaticLengthUnit, bool);
   vtkBooleanMacro(AutomaticLengthUnit, bool);
@@ -291,13 +196,7 @@ public:
   ///@}
 
   ///@{
-  /**
-   * The adjustment's constants (the paper's by default): the initial s (4,
-   * in units of L), the target neighbour counts (375, 750, 1500) and plane
-   * distances (0.1, 0.05, 0.025, in units of L) of the three combinations,
-   * and the switch lengths (2: to the second combination below it; 1: to
-   * the third below it; 4: one combination back above it; in units of L).
-   */
+  /// The adjustment's constants (the paper's by default; lengths in L).
   vtkSetClampMacro(InitialSurroundingsThreshold, double, 1e-300, VTK_DOUBLE_MAX);
   vtkGetMacro(InitialSurroundingsThreshold, double);
   vtkSetVector3Macro(TargetNeighborCounts, double);
@@ -309,16 +208,8 @@ public:
   ///@}
 
   ///@{
-  /**
-   * Set TargetNeighborCounts, TargetPlaneDistances and SwitchLengths at
-   * once: to the paper's constants, or to the "banded ladder"
-   * (docs/dynamic-adjustment.md): counts firstCount, 2 firstCount,
-   * 4 firstCount, plane distance planeDistance L at every level, switch
-   * lengths next to the initial s (pcurv::BandedLadder), so that the target
-   * count doubles where the density grows and the radius stays in a band.
-   * The documentation gives the measured settings for clean and noisy
-   * clouds.
-   */
+  /// The adjustment's counts, plane distances and switch lengths at once:
+  /// the paper's, or the banded ladder (docs/dynamic-adjustment.md).
   void SetAdjustmentConstantsToPaper();
   void SetAdjustmentConstantsToBandedLadder(double firstCount, double planeDistance);
   ///@}
@@ -336,40 +227,20 @@ public:
   void SetAdjustmentConstantsToPreset(int preset);
 
   ///@{
-  /**
-   * The surroundings-threshold never grows beyond this factor times the
-   * initial one (the paper has no bound; without one a far sparser region
-   * would grow it without limit, and a parallel run must know how far a
-   * query can reach). Default 4.
-   */
+  /// s never exceeds this times the adjustment's initial s.
   vtkSetClampMacro(MaximumSurroundingsFactor, double, 1.0, 1e6);
   vtkGetMacro(MaximumSurroundingsFactor, double);
   ///@}
 
   ///@{
-  /**
-   * Side of the adjustment's blocks, in units of L (default 8: a block then
-   * holds about 500 points of a surface at the first target). Blocks are
-   * the cells of a lattice fixed in space; the points of a block are
-   * processed in the neighbour grid's order and each block starts afresh.
-   * The block length, not the number of threads or processes, decides the
-   * result.
-   */
+  /// Side of the adjustment's blocks of points, in units of L.
   vtkSetClampMacro(AdjustmentBlockLength, double, 1e-6, 1e6);
   vtkGetMacro(AdjustmentBlockLength, double);
   ///@}
 
   ///@{
-  /**
-   * Where the normals come from (default AUTOMATIC_NORMALS: real input
-   * normals when there are some, estimated otherwise). A chosen array that
-   * is not normals (an integer type such as RGB colours, all zero, or
-   * lengths that vary like colours do) is an error that says how to
-   * estimate normals instead. Estimated normals are fitted by PCA to the
-   * NormalNeighbors nearest points, oriented consistently over a minimum
-   * spanning tree, signed by NormalOrientation, and written to the output
-   * as the "Normals" array (the active normals).
-   */
+  /// Where the normals come from (default: the input's real normals, else
+  /// estimated), and how estimated normals are made and signed.
   vtkSetClampMacro(NormalsSource, int, AUTOMATIC_NORMALS, ESTIMATED_NORMALS);
   vtkGetMacro(NormalsSource, int);
   void SetNormalsSourceToAutomatic() { this->SetNormalsSource(AUTOMATIC_NORMALS); }
@@ -388,41 +259,18 @@ public:
   ///@}
 
   ///@{
-  /**
-   * What the last execution used and found: the surroundings-threshold and
-   * plane-distance-threshold in RADIUS mode (0 in K_NEAREST mode, where they
-   * vary per point), the length unit L of the dynamic adjustment, and the
-   * number of points that could not be estimated.
-   */
+  /// What the last execution used and found.
   vtkGetMacro(UsedSurroundingsThreshold, double);
   vtkGetMacro(UsedLengthUnit, double);
   vtkGetMacro(UsedPlaneDistanceThreshold, double);
   vtkGetMacro(NumberOfUnestimatedPoints, vtkIdType);
   ///@}
 
-  /**
-   * After an update with ShareFits: the points (of every process) that took
-   * the fits of anchor points near them instead of fitting their own; the
-   * output's field data "Shared_Fit_Points" holds it too.
-   */
+  /// After an update with AUTOMATIC_SCALE (also in the field data): the
+  /// points that took an anchor's fit, whether the wide radii fitted the
+  /// surface's fourth order, and the points estimated by a height jet.
   vtkGetMacro(NumberOfSharedFitPoints, vtkIdType);
-
-  /**
-   * After an update with the automatic neighborhood: whether the cloud's
-   * normals follow the surface as exact normals do (on most points of a
-   * sample), so that the neighborhoods of 256 neighbors and more also fitted the
-   * surface's fourth order where it shows (docs/method.md, section 10); the
-   * output's field data "Fourth_Order_Fits" holds it too (1 or 0).
-   */
   vtkGetMacro(FourthOrderFits, bool);
-
-  /**
-   * After an update with the automatic neighborhood: the points (of every
-   * process) whose estimate is a fourth-order height jet of their 20
-   * nearest neighbors, where the positions have little or no noise
-   * (docs/method.md, section 10); the output's field data "Jet_Fit_Points"
-   * holds it too.
-   */
   vtkGetMacro(NumberOfJetFitPoints, vtkIdType);
 
 protected:
