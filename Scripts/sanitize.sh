@@ -11,7 +11,7 @@
 # Options, and why:
 # - float-cast-overflow: GCC's -fsanitize=undefined leaves it out, and a
 #   NaN or huge double cast to an integer (a grid cell index) is exactly the
-#   undefined behaviour bad input can cause.
+#   undefined behavior bad input can cause.
 # - detect_leaks=0: VTK keeps singletons (object factories, the SMP
 #   backend, output windows) alive until exit by design; LeakSanitizer
 #   reports them from ParaView's uninstrumented libraries.
@@ -27,7 +27,8 @@ nice cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAG
   -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=address,undefined" \
   -DPCURV_BUILD_BENCHMARKS=OFF -DPCURV_BUILD_STUDY=OFF > /dev/null
 nice cmake --build build-asan -j 2 --target TestCurvatureCore TestPrincipalCurvatureEstimation \
-  TestCloudEstimation TestDynamicAdjustment TestBadInputConfiguration TestBadInputPoints TestBadInputScale \
+  TestCloudEstimation TestOrientedCircles TestAutomaticScale TestNormalEstimation TestNeighborGrid \
+  TestDynamicAdjustment TestBadInputConfiguration TestBadInputPoints TestBadInputScale \
   TestLASReader TestPLYReader ReplayReaderSeeds
 built=$(date +%s)
 export ASAN_OPTIONS="detect_leaks=0:abort_on_error=1:halt_on_error=1:detect_stack_use_after_return=1:strict_init_order=1:check_initialization_order=1"
@@ -37,5 +38,5 @@ cd build-asan
 # slowdown of the sanitizers on a busy 2-core machine. Two tests at a time:
 # most are single-threaded, and the sanitized runs are most of CI's time.
 nice ctest --output-on-failure --timeout 3600 -j 2 \
-  -R "${PCURV_SANITIZE_TESTS:-^((CurvatureCore|CloudEstimation|PrincipalCurvatureEstimation|DynamicAdjustment|BadInput(Configuration|Points|Scale))(_STDThread)?|BadInputExtreme_.*|LASReader|PLYReader|FuzzReaderSeeds)$}"
+  -R "${PCURV_SANITIZE_TESTS:-^((CurvatureCore|PrincipalCurvatureEstimation|DynamicAdjustment|BadInput(Configuration|Points|Scale))(_STDThread)?|(CloudEstimation|OrientedCircles|AutomaticScale|NormalEstimation|NeighborGrid)\..*|BadInputExtreme_.*|LASReader|PLYReader|FuzzReaderSeeds)$}"
 echo "sanitizers: build $((built - start)) s, tests $(($(date +%s) - built)) s"

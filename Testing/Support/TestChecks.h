@@ -9,6 +9,8 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
+#include <initializer_list>
 
 /// Whether the tests run under AddressSanitizer (Scripts/sanitize.sh). There
 /// the tests that are studies as well (sweeps of settings to compare with)
@@ -92,5 +94,36 @@ private:
   int Count = 0;
   int Failures = 0;
 };
+
+/// A test of a group, by the name CTest knows it by.
+struct NamedTest
+{
+  const char* Name;
+  void (*Run)(Checks&);
+};
+
+/// Runs the test named by the first argument (the CTest of that name), or
+/// every test without one; an unknown name fails, so that a test renamed in
+/// one place and not the other cannot pass by running nothing.
+inline int RunNamedTests(int argc, char* argv[], std::initializer_list<NamedTest> tests)
+{
+  Checks checks;
+  bool found = argc < 2;
+  for (const NamedTest& test : tests)
+  {
+    if (argc < 2 || std::strcmp(test.Name, argv[1]) == 0)
+    {
+      std::printf("%s\n", test.Name);
+      test.Run(checks);
+      found = true;
+    }
+  }
+  if (!found)
+  {
+    std::printf("FAILED: no test named %s\n", argv[1]);
+    return EXIT_FAILURE;
+  }
+  return checks.Summary();
+}
 
 #endif
