@@ -175,7 +175,7 @@ void PrintHeading(const Options& options)
 {
   const std::string description = SurfaceDescription(options.Surface);
   const std::string settings = options.Adjustment.empty()
-    ? std::string("default settings (automatic radius for 375 neighbours, p = 0.1 s)")
+    ? std::string("default settings (automatic radius for 375 neighbors, p = 0.1 s)")
     : "the dynamic adjustment, constants: " + options.Adjustment;
   std::printf("\n## Results: %s, exact normals, %s, medians of %d runs\n",
     description.c_str(),
@@ -196,7 +196,7 @@ void PrintFilterTable(const Options& options, const Results& results)
     "CPU use",
     "error k_min",
     "error k_max",
-    "neighbours",
+    "neighbors",
     "unestimated" });
   for (const long n : options.Sizes)
   {
@@ -220,7 +220,7 @@ void PrintFilterTable(const Options& options, const Results& results)
           Grouped(n / t),
           Ratio(t / results.FilterTime(n, 1, threads)),
           threads == options.Threads.front() ? "" : Ratio(single / t),
-          Format("%.0f %%", 100.0 * Median(r.Utilisation)),
+          Format("%.0f %%", 100.0 * Median(r.Utilization)),
           Format("%.4f", r.Errors.MeanMinimumError),
           Format("%.4f", r.Errors.MeanMaximumError),
           Format("%.0f", r.MeanNeighbors),
@@ -318,7 +318,7 @@ void PrintMemoryTable(const Results& results)
 /// gave the filter's results.
 std::string PhaseNote(const Options& options, const PhaseRecord& ph)
 {
-  std::string note = Format("%ld query points (%s), %.0f neighbours each on average; ",
+  std::string note = Format("%ld query points (%s), %.0f neighbors each on average; ",
     ph.Queries,
     ph.Scale > 1.0 ? "16 blocks of the grid order, times scaled to the whole cloud"
                    : "the whole cloud in the filter's order",
@@ -378,7 +378,7 @@ void AddSharedPhaseRows(const Options& options,
     table.Add(row);
   };
   same("grid build (counting sort, whole cloud)", times.Grid, "");
-  same("neighbour search (GatherOffsetsWithinRadius)",
+  same("neighbor search (GatherOffsetsWithinRadius)",
     times.Search,
     Format("%.1f ns", 1e9 * Median(ph.Search) / neighbors));
   same("half planes + sums (Begin, AddNeighborOffsets)",
@@ -417,7 +417,7 @@ void PrintPhaseTable(const Options& options,
   {
     header.push_back(std::string(ModeNames[mode]) + " s");
   }
-  header.push_back("per neighbour");
+  header.push_back("per neighbor");
   Table table(header);
   AddSharedPhaseRows(options, ph, times, table);
   std::vector<std::string> fits{ "circle fits (Estimate minus sine fit)" };
@@ -575,10 +575,10 @@ void PrintPeerTable(const Options& options, const Results& results, CsvFile& csv
     WritePeerCsv(options, size, cgal, csv);
   }
   table.Print("Peer: CGAL Monge_via_jet_fitting (degree 2, Monge degree 2), one core, same "
-              "neighbourhoods",
+              "neighborhoods",
     "CGAL is timed on the query points only (spread over the surface) and extrapolated per "
     "point to the whole cloud. Its curvatures are turned to the exact (outward) normal "
-    "(comply_wrt_given_normal) and to the filter's sign. Same radius neighbours as the "
+    "(comply_wrt_given_normal) and to the filter's sign. Same radius neighbors as the "
     "filter, gathered with the same grid; errors on the same query points, over max "
     "|k_true| of the cloud.");
 }

@@ -161,7 +161,7 @@ struct MemoryRecord
 struct FilterRecord
 {
   std::vector<double> Times;
-  std::vector<double> Utilisation; // CPU time / (wall time x threads)
+  std::vector<double> Utilization; // CPU time / (wall time x threads)
   pcurv::testing::CurvatureErrors Errors;
   vtkIdType Unestimated = 0;
   double MeanNeighbors = NaN;

@@ -65,7 +65,7 @@ JetCurvatures CgalJetFitter::Fit(const double point[3],
   }
   catch (const std::exception&)
   {
-    result.Valid = false; // a CGAL precondition (degenerate neighbourhood)
+    result.Valid = false; // a CGAL precondition (degenerate neighborhood)
   }
   return result;
 }

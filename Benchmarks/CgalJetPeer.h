@@ -2,7 +2,7 @@
  * @file CgalJetPeer.h
  * @brief The benchmark's peer: CGAL's Monge_via_jet_fitting (degree 2, Monge
  * degree 2, CGAL::Simple_cartesian<double>) at one point from a given
- * neighbourhood. Kept in its own translation unit (and library) so that
+ * neighborhood. Kept in its own translation unit (and library) so that
  * CGAL's compile flags (-frounding-math) do not reach the rest of the
  * benchmark. Compiled only when CMake finds CGAL.
  */
@@ -35,7 +35,7 @@ public:
   CgalJetFitter& operator=(const CgalJetFitter&) = delete;
 
   /// Fits the jet at `point` (the origin of CGAL's fit: the first point of
-  /// its range) to `point` and the `count` neighbours (xyz triplets; copies
+  /// its range) to `point` and the `count` neighbors (xyz triplets; copies
   /// of `point` are skipped). `normal` only orients the result: CGAL's
   /// curvatures are relative to its own fitted normal, and are turned to
   /// the given normal's side (Monge_form::comply_wrt_given_normal) and then

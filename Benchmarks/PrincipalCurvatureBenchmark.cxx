@@ -7,12 +7,12 @@
 //    VmHWM over the resident size before the update) against the size of
 //    the input and output arrays;
 //  - phases measured in-process with the numeric core on the filter's own
-//    neighbourhoods (same radius, same grid lattice, same order): grid
-//    build, neighbour search, binning and sums, circle fits, sine fit;
+//    neighborhoods (same radius, same grid lattice, same order): grid
+//    build, neighbor search, binning and sums, circle fits, sine fit;
 //  - the paper's timing claim: the three fits timed alone on identical
 //    per-direction CGA sums collected once;
 //  - the peer: CGAL's Monge_via_jet_fitting (degree 2, Monge degree 2) on
-//    the same neighbourhoods, one core, scored the same way.
+//    the same neighborhoods, one core, scored the same way.
 // Medians of several runs and ratios are printed as tables on stdout
 // (BenchmarkReport.cxx; progress goes to stderr) and, with --csv FILE, as
 // CSV (one measurement a line) for plot_benchmark.py.
@@ -415,7 +415,7 @@ MemoryRecord ProbeMemory(const Options& options, long n, int mode, long threads)
 // The whole filter
 
 /// The filter's thresholds and its results, kept to check that the core
-/// measured below sees the same neighbourhoods.
+/// measured below sees the same neighborhoods.
 struct FilterReference
 {
   double S = NaN;
@@ -440,7 +440,7 @@ double RunFilter(vtkPolyData* cloud,
   const auto start = Clock::now();
   filter->Update();
   const double seconds = Seconds(start, Clock::now());
-  record.Utilisation.push_back((ProcessCpuSeconds() - cpu) / (seconds * threads));
+  record.Utilization.push_back((ProcessCpuSeconds() - cpu) / (seconds * threads));
   if (reference) // the first run: accuracy and the reference values
   {
     vtkPolyData* output = filter->GetOutput();
@@ -470,11 +470,11 @@ double RunFilter(vtkPolyData* cloud,
 }
 
 // ---------------------------------------------------------------------------
-// The numeric core on the filter's neighbourhoods
+// The numeric core on the filter's neighborhoods
 
 /// Flat arrays and the grid as the filter builds them: the same lattice
 /// (bounds of the cloud, cells of half the radius), hence the same
-/// neighbours in the same order.
+/// neighbors in the same order.
 struct CoreCloud
 {
   long N = 0;
@@ -504,7 +504,7 @@ struct CoreCloud
       cloud->GetPoint(i, &this->Points[3 * i]);
       double* n = &this->Normals[3 * i];
       normals->GetTuple(i, n);
-      // As the filter normalises (CloudPoints::Read): bit for bit.
+      // As the filter normalizes (CloudPoints::Read): bit for bit.
       const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
       const double inverse = length > 0.0 ? 1.0 / length : 0.0;
       for (int k = 0; k < 3; ++k)
@@ -585,7 +585,7 @@ bool SameValue(double a, double b)
   return (std::isnan(a) && std::isnan(b)) || a == b;
 }
 
-/// Grid build, neighbour search, binning + sums, and Estimate() (circle fits
+/// Grid build, neighbor search, binning + sums, and Estimate() (circle fits
 /// and sine fit) per mode, one thread, each point timed piece by piece (the
 /// clock costs about 20 ns a read, under 0.5 % of a point). The modes'
 /// Estimate() calls share one accumulation: identical sums.
@@ -790,9 +790,9 @@ FitsRecord MeasureFitsAlone(const CoreCloud& core, const Options& options)
 
 #ifdef PCURV_WITH_CGAL
 /// CGAL's jet fitting and the core, one thread, on the same query points
-/// (spread over the surface) and the same neighbourhoods (the filter's
+/// (spread over the surface) and the same neighborhoods (the filter's
 /// radius, gathered once with the grid), scored the same way: mean
-/// |k - exact| over max |exact k| of the cloud, points whose neighbourhood
+/// |k - exact| over max |exact k| of the cloud, points whose neighborhood
 /// reaches a boundary left out.
 PeerRecord MeasurePeer(const CoreCloud& core, const Options& options)
 {

@@ -28,10 +28,10 @@ except ImportError:  # pragma: no cover - depends on the machine
              "/usr/bin/python3")
 
 MODES = ["Previous", "New01", "New02"]
-COLOURS = {"Previous": "tab:red", "New01": "tab:blue", "New02": "tab:green"}
+COLORS = {"Previous": "tab:red", "New01": "tab:blue", "New02": "tab:green"}
 PHASES = [
     ("grid_build_seconds", "grid build"),
-    ("search_seconds", "neighbour search"),
+    ("search_seconds", "neighbor search"),
     ("binning_sums_seconds", "half planes + sums"),
     ("fits_seconds", "circle fits"),
     ("sine_seconds", "sine fit"),
@@ -67,7 +67,7 @@ def plot_times(axes, rows):
         points.sort()
         axes.loglog([p[0] for p in points], [p[1] for p in points],
                     linestyle=styles[threads.index(count) % len(styles)], marker="o",
-                    color=COLOURS.get(mode, "grey"),
+                    color=COLORS.get(mode, "gray"),
                     label="%s, %d thread%s" % (mode, count, "" if count == 1 else "s"))
     peer = sorted((row["points"], row["value"]) for row in rows
                   if row["section"] == "peer" and row["mode"] == "CGAL"
@@ -77,7 +77,7 @@ def plot_times(axes, rows):
                     label="CGAL jet fitting, 1 core (extrapolated)")
     sizes = sorted({p[0] for points in series.values() for p in points})
     if sizes:
-        axes.loglog(sizes, [1.5e-6 * n for n in sizes], color="grey", linewidth=0.8,
+        axes.loglog(sizes, [1.5e-6 * n for n in sizes], color="gray", linewidth=0.8,
                     label="target: 1.5 s per 1M points (linear)")
         axes.plot([1e6], [1.5], marker="*", markersize=14, color="gold",
                   markeredgecolor="black", linestyle="none", label="target: 1M New01, 2 threads")
@@ -100,14 +100,14 @@ def plot_phases(axes, rows):
     size = max(phases)
     modes = [mode for mode in MODES if mode in phases[size]]
     left = [0.0] * len(modes)
-    colours = plt.get_cmap("tab10")
+    colors = plt.get_cmap("tab10")
     for index, (metric, label) in enumerate(PHASES):
         values = [max(0.0, phases[size][mode].get(metric, 0.0)) for mode in modes]
-        axes.barh(modes, values, left=left, color=colours(index), label=label)
+        axes.barh(modes, values, left=left, color=colors(index), label=label)
         left = [a + b for a, b in zip(left, values)]
     axes.invert_yaxis()
     axes.set_xlabel("seconds, one thread, %s points" % format(size, ","))
-    axes.set_title("Where the time goes (core on the filter's neighbourhoods)")
+    axes.set_title("Where the time goes (core on the filter's neighborhoods)")
     axes.grid(True, axis="x", alpha=0.3)
     axes.legend(fontsize=7, loc="lower right")
 

@@ -328,14 +328,14 @@ void DecodeRecords(const Header& header,
     }
     if (layout.GpsTime >= 0 && out.GpsTime)
       out.GpsTime[at] = F64(r + layout.GpsTime);
-    if (layout.Colour >= 0)
+    if (layout.Color >= 0)
     {
       if (out.Red)
-        out.Red[at] = U16(r + layout.Colour);
+        out.Red[at] = U16(r + layout.Color);
       if (out.Green)
-        out.Green[at] = U16(r + layout.Colour + 2);
+        out.Green[at] = U16(r + layout.Color + 2);
       if (out.Blue)
-        out.Blue[at] = U16(r + layout.Colour + 4);
+        out.Blue[at] = U16(r + layout.Color + 4);
     }
     if (layout.Infrared >= 0 && out.Infrared)
       out.Infrared[at] = U16(r + layout.Infrared);

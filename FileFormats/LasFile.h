@@ -40,7 +40,7 @@ struct RecordLayout
   std::uint32_t MinimumLength = 0;
   bool Extended = false; // formats 6-10: 4-bit return numbers, a full classification byte
   int GpsTime = -1;
-  int Colour = -1;   // Red, Green, Blue: three uint16
+  int Color = -1;    // Red, Green, Blue: three uint16
   int Infrared = -1; // formats 8 and 10
 };
 

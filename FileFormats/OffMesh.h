@@ -5,7 +5,7 @@
  *
  * Accepted: a header word ending in "OFF" (OFF, COFF, NOFF, ...; the counts
  * may follow on its line), the counts "vertices faces [edges]", one vertex
- * per line (x y z first; further numbers, such as colours or normals of the
+ * per line (x y z first; further numbers, such as colors or normals of the
  * variants, are ignored), one face per line ("n i_1 ... i_n", indices from
  * 0, n >= 3; further numbers ignored). '#' starts a comment. Anything else is
  * an error naming the line and what is wrong; binary OFF is refused.

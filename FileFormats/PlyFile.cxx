@@ -329,7 +329,7 @@ VertexLayout PlanVertexColumns(const Element& vertex)
     }
   }
   const Type byte = Type::UInt8;
-  layout.Colours = Group(vertex, { "red", "green", "blue" }, "RGB", &byte, layout);
+  layout.Colors = Group(vertex, { "red", "green", "blue" }, "RGB", &byte, layout);
   for (std::size_t i = 0; i < vertex.Properties.size(); ++i)
   {
     const Property& property = vertex.Properties[i];

@@ -100,7 +100,7 @@ struct VertexLayout
   std::vector<int> ComponentOf;
   int Points = -1;
   int Normals = -1;
-  int Colours = -1;
+  int Colors = -1;
 };
 VertexLayout PlanVertexColumns(const Element& vertex);
 

@@ -421,9 +421,9 @@ bool IsByteColumn(const TextCloud& cloud, std::size_t column)
   return true;
 }
 
-/// Integers in 0..255, some above 1: colours (`x y z r g b`), never
+/// Integers in 0..255, some above 1: colors (`x y z r g b`), never
 /// normals. Axis-aligned unit normals (0 and 1 only) stay normals.
-bool AreColours(const TextCloud& cloud, const std::vector<std::size_t>& columns)
+bool AreColors(const TextCloud& cloud, const std::vector<std::size_t>& columns)
 {
   bool aboveOne = false;
   for (std::size_t column : columns)
@@ -446,7 +446,7 @@ bool AreColours(const TextCloud& cloud, const std::vector<std::size_t>& columns)
 ColumnLayout ChooseColumnLayout(const TextCloud& cloud, bool pts)
 {
   ColumnLayout layout;
-  // Leica PTS: x y z intensity [r g b], colours integers in 0..255.
+  // Leica PTS: x y z intensity [r g b], colors integers in 0..255.
   const bool ptsLayout = cloud.Columns == 4 ||
     (cloud.Columns == 7 && IsByteColumn(cloud, 4) && IsByteColumn(cloud, 5) &&
       IsByteColumn(cloud, 6));
@@ -474,7 +474,7 @@ ColumnLayout ChooseColumnLayout(const TextCloud& cloud, bool pts)
       }
     }
   }
-  else if (cloud.Columns >= 6 && !(pts && ptsLayout) && !AreColours(cloud, { 3, 4, 5 }))
+  else if (cloud.Columns >= 6 && !(pts && ptsLayout) && !AreColors(cloud, { 3, 4, 5 }))
   {
     layout.Normal = { 3, 4, 5 };
   }
@@ -507,7 +507,7 @@ ColumnLayout ChooseColumnLayout(const TextCloud& cloud, bool pts)
         { return std::find(remaining.begin(), remaining.end(), c) != remaining.end(); });
       if (free && bytes(triple))
       {
-        layout.Colour = triple;
+        layout.Color = triple;
         break;
       }
     }
@@ -517,7 +517,7 @@ ColumnLayout ChooseColumnLayout(const TextCloud& cloud, bool pts)
     std::vector<std::size_t> last(remaining.end() - 3, remaining.end());
     if (bytes(last))
     {
-      layout.Colour = last;
+      layout.Color = last;
     }
   }
   // Array names in use: a header column named like one gets its index too.
@@ -526,13 +526,13 @@ ColumnLayout ChooseColumnLayout(const TextCloud& cloud, bool pts)
   {
     used.emplace_back("Normals");
   }
-  if (!layout.Colour.empty())
+  if (!layout.Color.empty())
   {
     used.emplace_back("RGB");
   }
   for (std::size_t column : remaining)
   {
-    if (std::find(layout.Colour.begin(), layout.Colour.end(), column) != layout.Colour.end())
+    if (std::find(layout.Color.begin(), layout.Color.end(), column) != layout.Color.end())
     {
       continue;
     }

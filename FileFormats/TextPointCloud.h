@@ -76,7 +76,7 @@ struct ColumnLayout
 {
   std::vector<std::size_t> Position = { 0, 1, 2 };
   std::vector<std::size_t> Normal;                          // 3 columns or none
-  std::vector<std::size_t> Colour;                          // 3 columns or none
+  std::vector<std::size_t> Color;                           // 3 columns or none
   std::vector<std::pair<std::size_t, std::string>> Scalars; // the others, named
 };
 

@@ -78,7 +78,7 @@ struct CurvatureArrays
     b.SineFitRms = this->AddReal("Sine_Fit_RMS", 1, n, true);
     b.Surroundings = this->AddReal("Surroundings_Threshold", 1, n, true);
     b.PlaneDistance = this->AddReal("Plane_Distance_Threshold", 1, n, true);
-    // With the dynamic adjustment only: the neighbour count it aimed at for
+    // With the dynamic adjustment only: the neighbor count it aimed at for
     // the point, to compare with Neighbor_Count.
     b.TargetCount =
       adjusted ? this->Add<vtkIntArray>("Target_Neighbor_Count", 1, n, true) : nullptr;

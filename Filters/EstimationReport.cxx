@@ -67,12 +67,12 @@ void ReportUnestimated(vtkPrincipalCurvatureEstimation* self,
   }
 }
 
-/// Float coordinates keep 24 bits: at magnitude M neighbouring floats lie
+/// Float coordinates keep 24 bits: at magnitude M neighboring floats lie
 /// up to M 2^-23 apart. A georeferenced scan (UTM metres, 1e5 to 1e7) in
 /// float is rounded to centimetres or decimetres, which is noise of that
 /// size to every fit; a warning with the numbers, when the rounding exceeds
 /// a hundredth of the point spacing (noise the estimate starts to show).
-/// `radius` holds about `count` neighbours at a typical point.
+/// `radius` holds about `count` neighbors at a typical point.
 void WarnOnCoarseCoordinates(vtkPrincipalCurvatureEstimation* self,
   vtkPointSet* input,
   double radius,
@@ -96,7 +96,7 @@ void WarnOnCoarseCoordinates(vtkPrincipalCurvatureEstimation* self,
   {
     vtkWarningWithObjectMacro(self,
       "The input's coordinates are stored as float: at their magnitude ("
-        << magnitude << ") neighbouring floats are up to " << resolution << " apart, "
+        << magnitude << ") neighboring floats are up to " << resolution << " apart, "
         << resolution / spacing << " times the point spacing (about " << spacing
         << "). The positions are rounded as if by noise of that size, and the curvatures "
            "degrade. Keep the coordinates in double (the plugin's PLY, LAS and text readers "

@@ -26,12 +26,12 @@ void ReportUnestimated(vtkPrincipalCurvatureEstimation* self,
   const pcurv::Collectives& processes,
   vtkPolyData* output);
 
-/// Float coordinates keep 24 bits: at magnitude M neighbouring floats lie
+/// Float coordinates keep 24 bits: at magnitude M neighboring floats lie
 /// up to M 2^-23 apart. A georeferenced scan (UTM metres, 1e5 to 1e7) in
 /// float is rounded to centimetres or decimetres, which is noise of that
 /// size to every fit; a warning with the numbers, when the rounding exceeds
 /// a hundredth of the point spacing (noise the estimate starts to show).
-/// `radius` holds about `count` neighbours at a typical point.
+/// `radius` holds about `count` neighbors at a typical point.
 void WarnOnCoarseCoordinates(vtkPrincipalCurvatureEstimation* self,
   vtkPointSet* input,
   double radius,

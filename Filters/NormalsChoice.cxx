@@ -15,7 +15,7 @@ namespace normals_choice
 {
 
 /// The array is meant as normals: the normals attribute, or a name that
-/// says so ("Normals", "normal", "Normals_PCA"...). Colours, RGB or any other
+/// says so ("Normals", "normal", "Normals_PCA"...). Colors, RGB or any other
 /// 3-component array are not.
 bool NamedLikeNormals(vtkDataArray* array, vtkPointSet* input)
 {
@@ -34,14 +34,14 @@ bool NamedLikeNormals(vtkDataArray* array, vtkPointSet* input)
 }
 
 /// Why `normals` (3 components) cannot be normals, or empty: an integer
-/// type (colours), all zero, or lengths that vary like colours do (normals
-/// scaled alike, even by 1e-170, are fine: they are normalised).
+/// type (colors), all zero, or lengths that vary like colors do (normals
+/// scaled alike, even by 1e-170, are fine: they are normalized).
 std::string NotNormalsReason(vtkDataArray* normals)
 {
   if (normals->GetDataType() != VTK_FLOAT && normals->GetDataType() != VTK_DOUBLE)
   {
     return std::string("is of type ") + normals->GetDataTypeAsString() +
-      ", as colours are; normals are floating-point";
+      ", as colors are; normals are floating-point";
   }
   const vtkIdType count = normals->GetNumberOfTuples();
   const vtkIdType stride = std::max<vtkIdType>(1, count / 4096);
@@ -70,7 +70,7 @@ std::string NotNormalsReason(vtkDataArray* normals)
   if (high > 2.0 * low && (median < 0.5 || median > 2.0))
   {
     return "has lengths from " + std::to_string(low) + " to " + std::to_string(high) +
-      " (10th to 90th percentile), as colours or other data have; normals have one length";
+      " (10th to 90th percentile), as colors or other data have; normals have one length";
   }
   return "";
 }

@@ -17,13 +17,13 @@ namespace normals_choice
 {
 
 /// The array is meant as normals: the normals attribute, or a name that
-/// says so ("Normals", "normal", "Normals_PCA"...). Colours, RGB or any other
+/// says so ("Normals", "normal", "Normals_PCA"...). Colors, RGB or any other
 /// 3-component array are not.
 bool NamedLikeNormals(vtkDataArray* array, vtkPointSet* input);
 
 /// Why `normals` (3 components) cannot be normals, or empty: an integer
-/// type (colours), all zero, or lengths that vary like colours do (normals
-/// scaled alike, even by 1e-170, are fine: they are normalised).
+/// type (colors), all zero, or lengths that vary like colors do (normals
+/// scaled alike, even by 1e-170, are fine: they are normalized).
 std::string NotNormalsReason(vtkDataArray* normals);
 
 } // namespace normals_choice

@@ -28,7 +28,7 @@ class vtkPolyData;
 namespace pcurv
 {
 
-/// The input's points and normals (non-unit normals normalised; zero or
+/// The input's points and normals (non-unit normals normalized; zero or
 /// non-finite ones become zero: such points are not estimated). Without
 /// normals (null) every normal is zero, for the core to estimate.
 CloudPoints ReadCloud(vtkPointSet* input, vtkDataArray* normals);
@@ -66,9 +66,9 @@ void CopyGeometry(vtkPointSet* input, vtkPolyData* output);
 void AddCurvatureUnit(vtkPolyData* output);
 
 /**
- * The range that VTK reports for `array` (and ParaView colours a new
+ * The range that VTK reports for `array` (and ParaView colors a new
  * display over), set to [-clip, clip]: symmetric about zero, so that a
- * diverging colour map's middle (white in Cool to Warm) is zero even where
+ * diverging color map's middle (white in Cool to Warm) is zero even where
  * only one tail was clipped (a torus's mean curvature is positive
  * everywhere, and its clipped array's own range put white at +0.31). VTK
  * keeps the range in the array's information and forgets it when the array
@@ -84,7 +84,7 @@ void SetSymmetricRange(vtkDataArray* array, double clip);
 std::string ProgressText(const std::string& label, double fraction, double elapsedSeconds);
 
 /// Progress from the core's threads, passed to a filter on the thread that
-/// runs the filter: ParaView shows progress, and honours Abort, only from
+/// runs the filter: ParaView shows progress, and honors Abort, only from
 /// there. The filter's abort flag travels back the same way. The filter's
 /// progress text (what ParaView's progress bar shows) says the time left.
 class AlgorithmProgress : public ProgressMonitor
@@ -110,9 +110,9 @@ private:
 /// `estimate()` (a whole estimation: its serial stages too, which take
 /// seconds on millions of points) on a thread of its own, while the calling
 /// thread, the filter's, passes `progress` on ten times a second: ParaView
-/// then shows progress and honours Abort all along. For one process only:
+/// then shows progress and honors Abort all along. For one process only:
 /// a distributed run's collectives stay on the calling thread (MPI is
-/// initialised for one thread), and it passes progress in the parallel
+/// initialized for one thread), and it passes progress in the parallel
 /// stages alone (SMPToolsRunner).
 template<typename Estimate>
 auto RunPassingProgress(AlgorithmProgress& progress, Estimate&& estimate)

@@ -4,7 +4,7 @@
  *          have none (most scans)
  *
  * For every point a plane is fitted by PCA to its NumberOfNeighbors nearest
- * neighbours; the normals' signs are then made consistent by propagation
+ * neighbors; the normals' signs are then made consistent by propagation
  * over a minimum spanning tree of normal agreement (Hoppe et al. 1992), one
  * tree per connected part, and each part's sign is chosen by Orientation:
  * OUTWARD (away from the part's inside; up, +z, where an open part's inside
@@ -14,7 +14,7 @@
  * Output: the input points and point data, vertex cells (or the input's
  * cells when the input is a vtkPolyData that has cells), and the unit
  * "Normals" (double, 3 components, the active normals; zero where a point
- * has too few neighbours or non-finite coordinates).
+ * has too few neighbors or non-finite coordinates).
  *
  * The same numbers for any number of threads or MPI processes: points are
  * handled in an order that depends only on the coordinates. The numeric
@@ -46,7 +46,7 @@ public:
   };
 
   ///@{
-  /// Neighbours of each point's plane fit (default 30).
+  /// Neighbors of each point's plane fit (default 30).
   vtkSetClampMacro(NumberOfNeighbors, int, 3, 100000);
   vtkGetMacro(NumberOfNeighbors, int);
   ///@}

@@ -273,12 +273,12 @@ int vtkPrincipalCurvatureEstimation::RequestData(vtkInformation*,
   {
     output->GetPointData()->SetNormals(estimatedNormals);
   }
-  // The active scalars: ParaView colours a new display by them, over their
+  // The active scalars: ParaView colors a new display by them, over their
   // range, so the first Apply shows the curvature rather than a solid
-  // colour, and its structure rather than a few outliers.
+  // color, and its structure rather than a few outliers.
   output->GetPointData()->SetActiveScalars(
     this->DiagnosticArrays ? "Mean_Curvature_Clipped" : "Mean_Curvature");
-  // White (zero) in the middle of the colours, whichever tail was clipped.
+  // White (zero) in the middle of the colors, whichever tail was clipped.
   pcurv::SetSymmetricRange(
     output->GetPointData()->GetArray("Mean_Curvature_Clipped"), summary.MeanCurvatureClip);
   pcurv::AddCurvatureUnit(output);

@@ -76,18 +76,18 @@ public:
     PREVIOUS = 0,
     NEW01 = 1,
     NEW02 = 2,
-    /// Beyond the paper: every neighbour's circle from its position and its
-    /// normal, one sine fitted at the neighbours' own angles.
+    /// Beyond the paper: every neighbor's circle from its position and its
+    /// normal, one sine fitted at the neighbors' own angles.
     ORIENTED_CIRCLES = 3
   };
 
-  /// How the neighbours of a point are chosen.
+  /// How the neighbors of a point are chosen.
   enum NeighborhoodModes
   {
     RADIUS = 0,    ///< all points closer than the surroundings-threshold
     K_NEAREST = 1, ///< the NumberOfNeighbors nearest points
     /// Per point, from the data (with ORIENTED_CIRCLES; RADIUS otherwise):
-    /// the largest neighbourhood whose estimate agrees with those of the
+    /// the largest neighborhood whose estimate agrees with those of the
     /// smaller ones within AutomaticScaleTolerance standard errors.
     AUTOMATIC_SCALE = 2
   };

@@ -60,7 +60,7 @@ pcurv::las::PointBuffers MakeArrays(vtkPolyData* output, int format, vtkIdType c
   {
     out.GpsTime = AddArray<double>(pd, VTK_DOUBLE, "GpsTime", count);
   }
-  if (layout.Colour >= 0)
+  if (layout.Color >= 0)
   {
     out.Red = AddArray<std::uint16_t>(pd, VTK_UNSIGNED_SHORT, "Red", count);
     out.Green = AddArray<std::uint16_t>(pd, VTK_UNSIGNED_SHORT, "Green", count);

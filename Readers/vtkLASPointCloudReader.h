@@ -13,12 +13,12 @@
  * - `ScanAngleRank` (signed char, whole degrees) in formats 0-5, `ScanAngle`
  *   (float, degrees: the file's 0.006-degree units) in formats 6-10.
  * - `GpsTime` (double) in formats 1 and 3-10.
- * - `Red`, `Green`, `Blue` (unsigned short, as stored: LAS colours are
+ * - `Red`, `Green`, `Blue` (unsigned short, as stored: LAS colors are
  *   16-bit) in formats 2, 3, 5, 7, 8, 10, and `Infrared` in 8 and 10. Three
  *   arrays rather than one 3-component one: ParaView offers a 3-component
- *   array as normals, and a colour is not one.
+ *   array as normals, and a color is not one.
  * Wave packets (formats 4, 5, 9, 10) and extra bytes are skipped. One vertex
- * cell per point. Piece requests are honoured (consecutive ranges).
+ * cell per point. Piece requests are honored (consecutive ranges).
  *
  * The points are read in chunks of 64k records straight into the output
  * arrays: the file is never held in memory.

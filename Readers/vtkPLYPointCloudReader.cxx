@@ -54,7 +54,7 @@ void MakeArrays(vtkPolyData* output, pcurv::ply::VertexLayout& layout, vtkIdType
     {
       pointData->SetNormals(array);
     }
-    else if (index == layout.Colours)
+    else if (index == layout.Colors)
     {
       pointData->SetScalars(array);
     }

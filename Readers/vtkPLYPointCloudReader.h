@@ -17,7 +17,7 @@
  *   and type (e.g. `label`, `quality`, `alpha`; a name clashing with the
  *   arrays above gets _<index>). List properties of the vertex are skipped.
  * Other elements (faces, edges, ...) are skipped: the output is the cloud,
- * with one vertex cell per point. Piece requests are honoured.
+ * with one vertex cell per point. Piece requests are honored.
  *
  * Errors, one vtkErrorMacro naming the file and then what is wrong: not a
  * PLY file, a header line that is wrong (with its number; an unknown format

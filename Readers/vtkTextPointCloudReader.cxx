@@ -69,17 +69,17 @@ vtkNew<vtkCellArray> VertexCells(vtkIdType count)
   return vertices;
 }
 
-/// Rows [begin, end) of the colour columns as RGB (unsigned char).
-vtkNew<vtkUnsignedCharArray> ColourColumns(const pcurv::TextCloud& cloud,
+/// Rows [begin, end) of the color columns as RGB (unsigned char).
+vtkNew<vtkUnsignedCharArray> ColorColumns(const pcurv::TextCloud& cloud,
   const std::vector<std::size_t>& columns,
   std::size_t begin,
   std::size_t end)
 {
-  vtkNew<vtkUnsignedCharArray> colours;
-  colours->SetName("RGB");
-  colours->SetNumberOfComponents(3);
-  colours->SetNumberOfTuples(static_cast<vtkIdType>(end - begin));
-  unsigned char* out = colours->GetPointer(0);
+  vtkNew<vtkUnsignedCharArray> colors;
+  colors->SetName("RGB");
+  colors->SetNumberOfComponents(3);
+  colors->SetNumberOfTuples(static_cast<vtkIdType>(end - begin));
+  unsigned char* out = colors->GetPointer(0);
   for (std::size_t row = begin; row < end; ++row)
   {
     for (std::size_t c : columns)
@@ -87,7 +87,7 @@ vtkNew<vtkUnsignedCharArray> ColourColumns(const pcurv::TextCloud& cloud,
       *out++ = static_cast<unsigned char>(cloud.Values[row * cloud.Columns + c]);
     }
   }
-  return colours;
+  return colors;
 }
 
 /// The consecutive range of rows that this piece gets.
@@ -128,7 +128,7 @@ pcurv::readers::ReadFailure ReadCloud(const char* fileName, pcurv::TextCloud& cl
 }
 
 /// The piece of the cloud that outInfo asks for, in output, with the
-/// layout's normals, colours and other columns as point data.
+/// layout's normals, colors and other columns as point data.
 void CopyPiece(const pcurv::TextCloud& cloud,
   const pcurv::ColumnLayout& layout,
   vtkInformation* outInfo,
@@ -146,9 +146,9 @@ void CopyPiece(const pcurv::TextCloud& cloud,
   {
     pointData->SetNormals(DoubleColumns(cloud, layout.Normal, begin, end, "Normals"));
   }
-  if (!layout.Colour.empty())
+  if (!layout.Color.empty())
   {
-    pointData->SetScalars(ColourColumns(cloud, layout.Colour, begin, end));
+    pointData->SetScalars(ColorColumns(cloud, layout.Color, begin, end));
   }
   for (const auto& scalar : layout.Scalars)
   {

@@ -21,13 +21,13 @@
  * - Every other line must hold the same number of numbers, at least 3.
  *
  * Columns (the rules the command-line tool applied before it used this
- * reader, extended by colours and extra columns):
+ * reader, extended by colors and extra columns):
  * - Points (double): the columns named x, y, z in a header (ignoring case),
  *   else the first three.
  * - `Normals` (double, 3 components, the active normals attribute): the
  *   columns named nx ny nz, normal_x normal_y normal_z, normalx normaly
  *   normalz or n_x n_y n_z in a header; without a header, columns 4-6 of any
- *   file with 6 or more columns, unless they are colours (integers in
+ *   file with 6 or more columns, unless they are colors (integers in
  *   0..255, some above 1: `x y z r g b` gives RGB and no normals; the
  *   curvature filter then estimates normals) or the file is a `.pts` in the
  *   Leica layout `x y z intensity r g b` (7 columns, the last 3 integers in
@@ -43,7 +43,7 @@
  *   `x y z nx ny nz` Normals, `x y z nx ny nz q` Normals and Column_6.
  *
  * Output: a vtkPolyData with the points (double), one vertex cell per point
- * (so that it renders) and the arrays above. Piece requests are honoured: piece
+ * (so that it renders) and the arrays above. Piece requests are honored: piece
  * p of n gets the p-th of n consecutive ranges of the points.
  *
  * Errors: a missing or unreadable file, an empty file, a binary file, a

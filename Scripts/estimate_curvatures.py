@@ -11,7 +11,7 @@ Run with ParaView's Python:
         [--single-precision] [--no-diagnostics] [--progress | --no-progress]
 
 Without normals in the input (an x y z scan), the normals are estimated and
-oriented (outward by default) and written to OUTPUT as Normals; colours are
+oriented (outward by default) and written to OUTPUT as Normals; colors are
 never taken for normals.
 
 INPUT may be:
@@ -33,7 +33,7 @@ INPUT may be:
                   names (x, y, z, nx, ny, nz or normal_x, ...) picks the
                   columns. Read by the plugin's Point Cloud Text Reader
                   (vtkTextPointCloudReader: its class documentation has the
-                  rules for colours and further columns);
+                  rules for colors and further columns);
   .off            a triangle mesh, read by the plugin's OFF Mesh Reader
                   (vtkOFFMeshReader): its vertices, with normals computed
                   from the triangles and turned outwards;
@@ -108,7 +108,7 @@ def vtk_message_text(text):
 def plain_vtk_messages():
     """Shows VTK's errors and warnings as plain "estimate_curvatures: error:
     ..." lines on stderr: VTK's own log lines carry a time and thread
-    prefix and terminal colour codes, even into a pipe or a file. Fatal
+    prefix and terminal color codes, even into a pipe or a file. Fatal
     messages (a crash's stack trace) still go through VTK's log."""
     from vtkmodules.util.misc import calldata_type
     from vtkmodules.vtkCommonCore import VTK_STRING, vtkLogger, vtkOutputWindow

@@ -7,7 +7,7 @@
 #     (read only: new inputs go to build-fuzz/new-corpus, crashes to
 #     build-fuzz/crash-*, hangs of more than 10 s to build-fuzz/timeout-*).
 #  3. fuzzes the file parsers (text clouds, OFF) for a quarter of the time.
-# Fails when any step finds a crash, a hang, undefined behaviour or a
+# Fails when any step finds a crash, a hang, undefined behavior or a
 # broken invariant.
 #   Scripts/fuzz.sh [seconds=60]
 # PCURV_FUZZ_SKIP_KNOWN_BUGS=1 keeps the fuzzer away from overflowing grid

@@ -1,4 +1,4 @@
-"""Render a point cloud coloured by curvature, with short line glyphs along
+"""Render a point cloud colored by curvature, with short line glyphs along
 the maximum principal direction. Needs an X display (xvfb-run works):
 
     xvfb-run -a pvpython Scripts/render_principal_directions.py INPUT OUTPUT.png
@@ -30,7 +30,7 @@ def parse_arguments(argv):
     parser.add_argument("output", help="picture (.png)")
     parser.add_argument("--fit-mode", choices=estimate_curvatures.FIT_MODES, default="OrientedCircles",
                         help="the fit (default: %(default)s, the filter's default)")
-    parser.add_argument("--color", default="Mean_Curvature", help="array to colour by")
+    parser.add_argument("--color", default="Mean_Curvature", help="array to color by")
     parser.add_argument("--glyph-every", type=int, default=6, help="a glyph on every n-th point")
     parser.add_argument("--view", default="0,0,1", help="camera direction towards the object, x,y,z")
     parser.add_argument("--up", default="0,1,0", help="camera up vector, x,y,z")
@@ -68,7 +68,7 @@ def main(argv):
     simple.ColorBy(cloud, ("POINTS", arguments.color))
     lookup = simple.GetColorTransferFunction(arguments.color)
     lookup.ApplyPreset("Cool to Warm", True)
-    # Robust colour range: curvature has long tails at sharp features.
+    # Robust color range: curvature has long tails at sharp features.
     values = curvatures.PointData[arguments.color].GetRange()
     import numpy
     from paraview import servermanager

@@ -1,6 +1,6 @@
 // Accuracy study (the paper's section 6, Tables 1 and 2, with our clouds):
 // 12 analytic clouds with exact curvatures, three fit modes, a grid of
-// fixed (neighbour count, p/s) combinations and the dynamic adjustment.
+// fixed (neighbor count, p/s) combinations and the dynamic adjustment.
 //
 //   AccuracyStudy --full            all tables, Markdown (Study/tables.md)
 //   AccuracyStudy --quick BOUNDS    a small subset; fails if an error grows
@@ -173,11 +173,11 @@ void Full()
 {
   std::printf(
     "# Accuracy study: tables\n\nProduced by `build/bin/AccuracyStudy --full`. Errors: mean "
-    "|k - k_exact| / max |k_exact| over the points whose neighbourhood lies inside the "
+    "|k - k_exact| / max |k_exact| over the points whose neighborhood lies inside the "
     "surface; k_min / k_max. Noise in mean point spacings.\n\n");
   std::map<std::string, std::vector<double>> grid; // "count/ratio/mode" -> errors per cloud
   std::printf(
-    "## Table 1: best fixed combination (neighbour count / p over s) per cloud and mode\n\n");
+    "## Table 1: best fixed combination (neighbor count / p over s) per cloud and mode\n\n");
   std::printf("| cloud | Previous | New01 | New02 |\n|---|---|---|---|\n");
   std::vector<Cloud> clouds = Clouds();
   std::vector<Result> defaults[3];
@@ -215,7 +215,7 @@ void Full()
     std::fflush(stdout);
   }
 
-  std::printf("\n## The default (375 neighbours, p = 0.1 s) per cloud and mode\n\n");
+  std::printf("\n## The default (375 neighbors, p = 0.1 s) per cloud and mode\n\n");
   std::printf(
     "| cloud | Previous | New01 | New02 | median angle (New02) |\n|---|---|---|---|---|\n");
   for (std::size_t i = 0; i < clouds.size(); ++i)
@@ -233,7 +233,7 @@ void Full()
 
   std::printf(
     "\n## Combinations over all 12 clouds: geometric mean of the error (lower is better)\n\n");
-  std::printf("| neighbours / p over s / mode | geometric mean | worst cloud |\n|---|---|---|\n");
+  std::printf("| neighbors / p over s / mode | geometric mean | worst cloud |\n|---|---|---|\n");
   std::vector<std::pair<double, std::string>> ranking;
   for (const auto& entry : grid)
   {

@@ -8,7 +8,7 @@
 //                     [--noise 0,0.1,0.5] [--shapes sphere,...] [--degree 4]
 //                     [--eval-stride S]
 //
-// For every cloud and neighbour count k (the k nearest points of the cloud,
+// For every cloud and neighbor count k (the k nearest points of the cloud,
 // the evaluation point included and first, as CGAL's fitting origin), fits a
 // jet to the positions only, turns its Monge normal to the side of the
 // cloud's normal (exact ones, and the suite's PCA(30) ones: the same fits,
@@ -315,7 +315,7 @@ int main(int argc, char* argv[])
           {
             continue;
           }
-          // In blocks of evaluation points: their neighbourhoods (timed
+          // In blocks of evaluation points: their neighborhoods (timed
           // apart; the query point first), then their fits.
           constexpr std::size_t Block = 256;
           const std::size_t kk = static_cast<std::size_t>(k);
@@ -373,7 +373,7 @@ int main(int argc, char* argv[])
                 }
                 catch (const std::exception&)
                 {
-                  valid = false; // a CGAL precondition (a degenerate neighbourhood)
+                  valid = false; // a CGAL precondition (a degenerate neighborhood)
                 }
               }
               if (!valid)

@@ -19,11 +19,11 @@ run), so each position cloud gets one CloudCompare sweep.
 CloudCompare (CCLib's Neighbourhood::computeCurvature) takes every point
 within the radius r (the point included; an octree), fits the height
 z = a + b x + c y + d x^2 + e x y + f y^2 over the coordinate plane most
-orthogonal to the neighbours' PCA normal (in single precision, by conjugate
+orthogonal to the neighbors' PCA normal (in single precision, by conjugate
 gradients), and evaluates the graph's mean and Gaussian curvature at the
 point: both as absolute values (|H| and |K|: it has no normal to sign them).
 
-The radius is given as an expected neighbour count k: r = h sqrt(k / pi),
+The radius is given as an expected neighbor count k: r = h sqrt(k / pi),
 h = sqrt(area / N) the suite's spacing (a flat disc of radius r holds k
 points); the measured mean count at the evaluation points is recorded too.
 
@@ -45,7 +45,7 @@ past 5,120); then refined at k_best * 2^(+-1/2) where N k <= --refine-max-pairs
 (5.2e8: every 20k cloud, the 200k clouds up to 2,600). On the 200k clouds
 (--early-stop-from 200000) the ladder also stops early once both metrics have
 risen at two successive steps and stand at 1.5x their best or more (a
-U-shaped curve seen past its bottom): one 200k run at 5,120 neighbours costs
+U-shaped curve seen past its bottom): one 200k run at 5,120 neighbors costs
 about 75 CPU seconds.
 
 Also: --rotate turns every cloud (positions, normals, directions) by 40
@@ -53,8 +53,8 @@ degrees about (1, 2, 0) first (rows with frame "rotated"): the curvatures do
 not change, CloudCompare's height over a coordinate plane does (the suite's
 saddle and paraboloid are quadric graphs over the x-y plane, exactly
 CloudCompare's model in its own frame). --default-k N,... runs the default's
-fit at fixed neighbour counts too (method "default_k"), to see whether a
-wider scale than the automatic one's (about 2,000 neighbours at most) would
+fit at fixed neighbor counts too (method "default_k"), to see whether a
+wider scale than the automatic one's (about 2,000 neighbors at most) would
 help it. CloudCompare runs on every core (QtConcurrent; 2.11 has no thread
 option): its seconds are recorded as wall and CPU (user + system) time,
 loading and saving included; the default runs on one thread.
@@ -231,7 +231,7 @@ def radius_for(cloud, k):
 
 
 def sweep_cloudcompare(arguments, cloud, data, evaluation, tree, workdir, writer):
-    """CloudCompare over the ladder of neighbour counts on one position cloud."""
+    """CloudCompare over the ladder of neighbor counts on one position cloud."""
     ply = os.path.join(workdir, "in.ply")
     write_ply(ply, data[:, 0:3])
     exact = data[evaluation]
@@ -282,7 +282,7 @@ def sweep_cloudcompare(arguments, cloud, data, evaluation, tree, workdir, writer
         ladder.append(top)
         run(top, "extend")
     # Refine around each metric's best (within the top run, and where a run
-    # costs at most --refine-max-pairs point-neighbour pairs).
+    # costs at most --refine-max-pairs point-neighbor pairs).
     for metric in ("err_H", "err_K"):
         best = best_k(metric)
         for k in (int(round(best / math.sqrt(2))), int(round(best * math.sqrt(2)))):
@@ -294,8 +294,8 @@ def sweep_cloudcompare(arguments, cloud, data, evaluation, tree, workdir, writer
 
 def run_default(arguments, cloud, normals, data, evaluation, writer, setting="default"):
     """The filter's default (suite_study's configure("default")), one thread;
-    or, with setting "k=N", the same fit with a fixed neighbourhood of about N
-    neighbours (method "default_k": does a wider scale help it?)."""
+    or, with setting "k=N", the same fit with a fixed neighborhood of about N
+    neighbors (method "default_k": does a wider scale help it?)."""
     study = suite_study()
     from vtkmodules.util.numpy_support import vtk_to_numpy
     curvatures = study.vtkPrincipalCurvatureEstimation()
@@ -318,11 +318,11 @@ def run_default(arguments, cloud, normals, data, evaluation, writer, setting="de
     neighbors = float(numpy.mean(vtk_to_numpy(count)[evaluation])) if count is not None else math.nan
     # The share of evaluation points at the automatic scale's largest radius
     # (the cloud's largest Surroundings_Threshold: 2^3.5 times the typical
-    # first radius, about 2,000 neighbours): radius nearer it than the next
+    # first radius, about 2,000 neighbors): radius nearer it than the next
     # smaller, 2^-1/2 times it (a shared point's radius is its anchors'
     # weighted mean, between the levels). Where no point reaches the largest
     # level (noise-free clouds) this is the share near the largest radius
-    # used; with a fixed neighbourhood ("k=N") it is 1.
+    # used; with a fixed neighborhood ("k=N") it is 1.
     radius = vtk_to_numpy(pd.GetArray("Surroundings_Threshold")).astype(float)
     at_largest = float(numpy.mean(radius[evaluation] >= 2.0 ** -0.25 * numpy.nanmax(radius)))
     fixed = setting.startswith("k=")
@@ -402,7 +402,7 @@ def fnum(value, digits=3):
 def per_cloud_bests(path):
     """(frame, shape, N, noise) -> CloudCompare's best per metric (each at its
     own k), whether that k is the smallest or largest run, its cost, and the
-    default's errors, neighbours and cost with exact and PCA normals."""
+    default's errors, neighbors and cost with exact and PCA normals."""
     cc = defaultdict(dict)
     default = {}
     with open(path) as handle:
@@ -454,7 +454,7 @@ def summarize(path):
           "| |K_est| - |K_true| | / max|k|^2; CC = CloudCompare at its best k for that metric (^: the largest k "
           "run, _: the smallest); ratio = default / CC (> 1: CloudCompare better); CC CPU seconds per 1M points "
           "at its best |H| k (all cores, load and save included); the default's mean Neighbor_Count at the "
-          "evaluation points and the share of them at its largest radius (about 2,000 neighbours).\n")
+          "evaluation points and the share of them at its largest radius (about 2,000 neighbors).\n")
     print("| shape | points | noise | CC \\|H\\| (k) | default \\|H\\| exact / PCA | ratio exact / PCA "
           "| CC \\|K\\| (k) | default \\|K\\| exact / PCA | ratio exact / PCA | CC CPU s per 1M "
           "| default neighbors (at largest) exact / PCA |")
@@ -510,7 +510,7 @@ def summarize(path):
             if row["method"] == "default_k" and row["frame"] == "suite":
                 fixed[(row["shape"], int(row["N"]), float(row["noise"]), row["normals"])][int(row["k"])] = row
     if fixed:
-        print("\nThe default's fit at fixed neighbour counts (no automatic scale) against its automatic scale "
+        print("\nThe default's fit at fixed neighbor counts (no automatic scale) against its automatic scale "
               "and CC's best, |H| and |K| errors:\n")
         ks = sorted({k for rows in fixed.values() for k in rows})
         print("| shape | points | noise | normals | automatic \\|H\\| / \\|K\\| | " + " | ".join(
@@ -573,7 +573,7 @@ def main(argv):
     parser.add_argument("--max-pairs", type=float, default=1.1e9,
                         help="extend past the top only while N x k stays within this (200k: 5,120)")
     parser.add_argument("--refine-max-pairs", type=float, default=5.2e8,
-                        help="refine only where N x k stays within this (200k: up to 2,600 neighbours)")
+                        help="refine only where N x k stays within this (200k: up to 2,600 neighbors)")
     parser.add_argument("--rotate", action="store_true",
                         help="turn every cloud by a fixed rotation first (frame 'rotated'): curvatures are "
                              "invariant, CloudCompare's height function over a coordinate plane is not")
@@ -584,7 +584,7 @@ def main(argv):
     parser.add_argument("--skip-cloudcompare", action="store_true")
     parser.add_argument("--skip-default", action="store_true")
     parser.add_argument("--default-k", default="",
-                        help="also run the default's fit at these fixed neighbour counts (comma-separated)")
+                        help="also run the default's fit at these fixed neighbor counts (comma-separated)")
     arguments = parser.parse_args(argv)
     arguments.frame = "rotated" if arguments.rotate else "suite"
     if arguments.summary:

@@ -359,7 +359,7 @@ def grid_rounded(cloud, fraction=GRID_FRACTION):
 
 def check_generator(cloud, name, samples=40, seed=SEED):
     """Assert on a few samples: unit normals; k_max directions unit and tangent where
-    anisotropic; the cloud's neighbours q of p lie on the surface as the normal and
+    anisotropic; the cloud's neighbors q of p lie on the surface as the normal and
     curvatures say: the chord's normal curvature -2 (q - p).n / |q - p|^2 matches Euler's
     k_min + (k_max - k_min) cos^2(angle to d_max) within 0.1 K (second order in |q - p| K
     <= 0.35), which also checks the sign convention (a sphere: +1/R)."""

@@ -20,7 +20,7 @@ filter does not estimate are left out of the means and counted.
 
 Settings: "default" (the filter's defaults with the cloud's normals: exact,
 or the suite's PCA(30)), "own-normals" (points only: the filter estimates
-the normals itself), and any fixed "k=N" (N neighbours, p = s / 10) or
+the normals itself), and any fixed "k=N" (N neighbors, p = s / 10) or
 "k=N,p=R" (p = R s), to find the best fixed setting per cloud.
 """
 
@@ -67,7 +67,7 @@ FIT_MODES = {"Previous": 0, "New01": 1, "New02": 2, "OrientedCircles": 3}
 
 
 def configure(curvatures, setting):
-    """default; own-normals; or comma-separated key=value: fit=<mode>, k=<neighbours>,
+    """default; own-normals; or comma-separated key=value: fit=<mode>, k=<neighbors>,
     p=<plane distance ratio>, normals=own, share=on|off (shared fits)."""
     if setting == "default":
         return
@@ -78,7 +78,7 @@ def configure(curvatures, setting):
     if "fit" in parts:
         curvatures.SetFitMode(FIT_MODES[parts["fit"]])
     if "k" in parts:
-        # A fixed neighbourhood: the radius holding about k neighbours (the
+        # A fixed neighborhood: the radius holding about k neighbors (the
         # default mode, automatic, would ignore k).
         curvatures.SetNumberOfNeighbors(int(parts["k"]))
         curvatures.SetNeighborhoodMode(0)

@@ -72,7 +72,7 @@ struct RepeatedPoint
 
 /// Removes the own points that repeat an earlier own point exactly, and
 /// returns them: copies of one point (a lidar's no-return points, merged
-/// scans) then count once in every neighbourhood, and cost once, instead of
+/// scans) then count once in every neighborhood, and cost once, instead of
 /// every copy gathering every other. A cloud without repeats is left as it
 /// is.
 std::vector<RepeatedPoint> RemoveRepeatedPoints(CloudPoints& cloud);

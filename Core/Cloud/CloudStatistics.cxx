@@ -125,7 +125,7 @@ struct AxisStep
   /// The largest offset known to be a multiple of Step.
   double Largest = 0.0;
 
-  /// Takes an offset `d` between neighbours (0 < d <= the reach): Step
+  /// Takes an offset `d` between neighbors (0 < d <= the reach): Step
   /// stays if d is a multiple of it (made again from d when d is the
   /// largest such: each division multiplies the offsets' rounding by its
   /// quotient, and Step's error is then d's rounding over the multiple),

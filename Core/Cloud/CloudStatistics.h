@@ -7,7 +7,7 @@
  * Distributed runs give the same numbers as a serial run because every
  * global choice (lattice, thresholds, sample for the automatic radius,
  * adjustment blocks) is made from globally reduced values, and each process
- * sees every point its own points' neighbourhoods (and their adjustment
+ * sees every point its own points' neighborhoods (and their adjustment
  * blocks) can reach.
  */
 #ifndef CloudStatistics_h
@@ -56,7 +56,7 @@ struct CloudBoxes
   /// instead of making every cell coarse.
   std::array<double, 3> GridLower, GridUpper;
   /// The box the spacing sample is drawn in: the bounding box, unless a few
-  /// far points would squeeze the rest into a handful of quantisation steps;
+  /// far points would squeeze the rest into a handful of quantization steps;
   /// then, per axis, the range of the central 98 % of the points, found by
   /// zooming in with global histograms (integer counts: the same for any
   /// split among processes).
@@ -68,17 +68,17 @@ struct CloudBoxes
 CloudBoxes MeasureBoxes(const CloudPoints& cloud, const Collectives& processes);
 
 /// True for the points of the sample that measures the cloud's spacing:
-/// chosen by a hash of the coordinates quantised to 2^20 steps of the
+/// chosen by a hash of the coordinates quantized to 2^20 steps of the
 /// sampling box, so that the sample is the same whatever the order of the
 /// points, how they are split among processes, or the cloud's unit and
-/// position (up to points within 1e-16 of a quantisation step).
+/// position (up to points within 1e-16 of a quantization step).
 bool InSpacingSample(const double x[3],
   const double lower[3],
   const double upper[3],
   std::int64_t stride);
 
 /// Median over the global sample of the distance to the k-th nearest other
-/// point: a radius holding about k neighbours at a typical point. When
+/// point: a radius holding about k neighbors at a typical point. When
 /// distributed, the sample's queries also see a halo of the other pieces
 /// (on a copy: `cloud` is not changed). The grid it searches is built in
 /// `runner` where given.
@@ -94,9 +94,9 @@ double TypicalRadius(const CloudPoints& cloud,
 /// radius).
 GridLattice GlobalLattice(const CloudBoxes& boxes, double radius);
 
-/// The largest distance from an own point to its k-th nearest neighbour
+/// The largest distance from an own point to its k-th nearest neighbor
 /// among this process's own points alone: at least the true distance, so a
-/// halo this wide holds every point's k nearest neighbours.
+/// halo this wide holds every point's k nearest neighbors.
 double LargestLocalKthDistance(const CloudPoints& cloud, const GridLattice& lattice, int k);
 
 /// The `quantile` (in (0, 1]) of |values| over the finite values of every

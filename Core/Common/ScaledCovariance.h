@@ -1,6 +1,6 @@
 /**
  * @file ScaledCovariance.h
- * @brief The covariance of a neighbourhood's offsets in units of its size
+ * @brief The covariance of a neighborhood's offsets in units of its size
  * (the PCA of the normals, the height jet's plane). No VTK.
  */
 #ifndef ScaledCovariance_h
@@ -15,7 +15,7 @@ namespace pcurv
 
 /// The sum of the outer products of `count` offsets (dx, dy, dz) about
 /// their mean, the offsets multiplied by `inverseScale` first: in units of
-/// the neighbourhood's size, its entries neither underflow nor overflow
+/// the neighborhood's size, its entries neither underflow nor overflow
 /// whatever the coordinates' unit. The sums run in the offsets' order, one
 /// accumulator an entry.
 inline Eigen::Matrix3d ScaledCovariance(const double* dx,

@@ -35,7 +35,7 @@ struct Solution
 /// LDL^T of a small symmetric positive definite matrix, without pivoting:
 /// on a unit diagonal no reordering is needed for stability, and the
 /// fixed size lets the compiler unroll it (Eigen's pivoting LDLT cost most
-/// of a fit on small neighbourhoods). Fails when a pivot is not above
+/// of a fit on small neighborhoods). Fails when a pivot is not above
 /// `smallest`: an unknown is then determined by the earlier ones to
 /// working precision.
 template<int N>

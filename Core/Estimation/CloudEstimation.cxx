@@ -73,7 +73,7 @@ NeighborhoodRule ChooseThresholds(const EstimationSettings& settings,
   rule.K = settings.NumberOfNeighbors;
   rule.Ratio = settings.PlaneDistanceRatio;
   rule.Adjusted = settings.DynamicAdjustment;
-  // The automatic neighbourhood is OrientedCircles' (the paper's fits need a
+  // The automatic neighborhood is OrientedCircles' (the paper's fits need a
   // radius and a plane distance), and yields to thresholds the user fixed.
   if (!rule.Adjusted && settings.Neighborhood == NeighborhoodMode::Automatic &&
     settings.Mode == FitMode::OrientedCircles && settings.AutomaticThresholds)
@@ -90,8 +90,8 @@ NeighborhoodRule ChooseThresholds(const EstimationSettings& settings,
     // (NormalsFollowTheSurface): the halo reaches the longer one's radius.
     rule.Reach =
       rule.Automatic.LargestRadiusOf(std::max(rule.Automatic.Levels, rule.Automatic.WideLevels));
-    // Sharing pays where neighbourhoods are wide (four times the first
-    // radius: 256 neighbours); smaller ones are cheap to fit.
+    // Sharing pays where neighborhoods are wide (four times the first
+    // radius: 256 neighbors); smaller ones are cheap to fit.
     rule.Automatic.Sharing.MinimumRadius = 4.0 * base;
     const double anchorCell = rule.Automatic.Sharing.CellFactor * base;
     rule.Automatic.ShareFits = settings.ShareFits && anchorCell > 0.0 && std::isfinite(anchorCell);
@@ -109,7 +109,7 @@ NeighborhoodRule ChooseThresholds(const EstimationSettings& settings,
     summary.TargetNeighborCounts =
       UsableTargetCounts(settings.Adjustment.TargetNeighborCounts, summary.TargetCountsClamped);
   }
-  // The neighbour count the cloud's typical radius is measured for.
+  // The neighbor count the cloud's typical radius is measured for.
   const int typicalCount =
     rule.Adjusted ? static_cast<int>(summary.TargetNeighborCounts[0]) : settings.NumberOfNeighbors;
   const bool needsTypicalRadius =
@@ -321,7 +321,7 @@ bool ChooseAnchors(AnchorTable& anchors,
 /// of a noisy cloud do (AutomaticScaleEstimator::NormalFollowsSurface) at
 /// most of the points of the cloud's spacing sample (the same points and
 /// counts for any split among processes). Estimated normals share their
-/// errors with their neighbours, and the fourth order's extra unknowns take
+/// errors with their neighbors, and the fourth order's extra unknowns take
 /// those up rather than the surface's shape: there it does worse.
 bool NormalsFollowTheSurface(const CloudPoints& cloud,
   const PointGrid& grid,

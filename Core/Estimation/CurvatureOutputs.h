@@ -44,12 +44,12 @@ struct CurvatureBuffers
   /// Derived, for display (may be null): the mean curvature clipped to
   /// [-c, c], c the 95th percentile of |mean curvature| over the cloud
   /// (EstimationSummary::MeanCurvatureClip), NaN where not estimated. A
-  /// colour map over its range shows the surface's structure, not a few
-  /// outliers, and is centred on 0 (flat).
+  /// color map over its range shows the surface's structure, not a few
+  /// outliers, and is centered on 0 (flat).
   RealBuffer ClippedMean = nullptr;
   /// With FitMode::OrientedCircles only (may be null): the standard error
   /// of the curvatures, 1/length: it covers the fit's variance, the bias
-  /// of the chosen neighbourhood and the normals' errors, calibrated so
+  /// of the chosen neighborhood and the normals' errors, calibrated so
   /// that most errors are within twice it (docs/output-arrays.md).
   RealBuffer StandardError = nullptr;
   /// With FitMode::OrientedCircles only (may be null): 1 where the point is
@@ -88,11 +88,11 @@ struct EstimationSummary
   double MeanCurvatureClip = 0.0;
   /// What CurvatureBuffers::Trusted compares the standard errors with
   /// (1/length): the larger of the 95th percentile of max(|k_min|, |k_max|)
-  /// and a quarter of one over the median neighbourhood radius, over the estimated
+  /// and a quarter of one over the median neighborhood radius, over the estimated
   /// points of every process (0 without that buffer).
   double TrustedCurvatureScale = 0.0;
   /// Points that repeat another exactly (coordinates and normal): estimated
-  /// once, every copy given the same results, counted once as a neighbour.
+  /// once, every copy given the same results, counted once as a neighbor.
   std::int64_t NumberOfRepeatedPoints = 0;
   /// The adjustment's target counts as used: within [1, 1e6] (NaN: 1).
   std::array<double, 3> TargetNeighborCounts{ { 0.0, 0.0, 0.0 } };

@@ -14,12 +14,12 @@
 namespace pcurv
 {
 
-/// How the neighbours of a point are chosen.
+/// How the neighbors of a point are chosen.
 enum class NeighborhoodMode : int
 {
   Radius = 0,   ///< all points closer than the surroundings-threshold
   KNearest = 1, ///< the NumberOfNeighbors nearest points
-  /// Per point, from the data: the largest neighbourhood whose estimate
+  /// Per point, from the data: the largest neighborhood whose estimate
   /// agrees with those of the smaller ones within their standard errors
   /// (FitMode::OrientedCircles with automatic thresholds; otherwise, the
   /// paper's fits or fixed thresholds, Radius).
@@ -33,23 +33,23 @@ struct EstimationSettings
   FitMode Mode = static_cast<FitMode>(PCURV_DEFAULT("FitMode"));
   NeighborhoodMode Neighborhood = static_cast<NeighborhoodMode>(PCURV_DEFAULT("NeighborhoodMode"));
   /// s and p derived from the cloud (s: median distance to the
-  /// NumberOfNeighbors-th neighbour; p = PlaneDistanceRatio s).
+  /// NumberOfNeighbors-th neighbor; p = PlaneDistanceRatio s).
   bool AutomaticThresholds = PCURV_DEFAULT("AutomaticThresholds") != 0;
   int NumberOfNeighbors = static_cast<int>(PCURV_DEFAULT("NumberOfNeighbors"));
   double SurroundingsThreshold = PCURV_DEFAULT("SurroundingsThreshold");   ///< s when not automatic
   double PlaneDistanceThreshold = PCURV_DEFAULT("PlaneDistanceThreshold"); ///< p, not automatic
   double PlaneDistanceRatio = PCURV_DEFAULT("PlaneDistanceRatio"); ///< p / s: automatic, k nearest
   int MinimumPointsPerDirection = static_cast<int>(PCURV_DEFAULT("MinimumPointsPerDirection"));
-  /// OrientedCircles: a point whose neighbours' normals oppose its own for
-  /// more than this fraction of them is not estimated (the neighbourhood
+  /// OrientedCircles: a point whose neighbors' normals oppose its own for
+  /// more than this fraction of them is not estimated (the neighborhood
   /// reaches across the surface).
   double MaximumOpposingFraction = 0.05;
   /// NeighborhoodMode::Automatic: how many standard errors the estimates of
   /// two radii may differ by for the larger to be kept.
   double AutomaticScaleTolerance = PCURV_DEFAULT("AutomaticScaleTolerance");
   /// NeighborhoodMode::Automatic: a point near an anchor point whose
-  /// neighbourhood is wide takes the anchor's fitted surface, evaluated at
-  /// its own position, instead of gathering nearly the same neighbours
+  /// neighborhood is wide takes the anchor's fitted surface, evaluated at
+  /// its own position, instead of gathering nearly the same neighbors
   /// again (SharedFits.h). Off: every point fits its own.
   bool ShareFits = PCURV_DEFAULT("ShareFits") != 0;
 

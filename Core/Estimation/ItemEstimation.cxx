@@ -222,7 +222,7 @@ void PointEstimator::StoreScaleEstimate(std::int64_t point, const ScaleEstimate&
 }
 
 /// An anchor's estimate is stored already; a point near an anchor whose
-/// radius is wide takes its fit; any other gathers its own neighbourhood.
+/// radius is wide takes its fit; any other gathers its own neighborhood.
 void PointEstimator::EstimateAutomaticPoint(std::int64_t point, EstimationScratch& scratch)
 {
   if (this->Anchors && this->Anchors->IsAnchor(point))
@@ -325,11 +325,11 @@ void ItemEstimator::PrefetchAhead(std::int64_t item, std::int64_t end) const
 
 /// The paper's sequence within one block: s carries over from point to
 /// point; the block's first point repeats its search with the adjusted s.
-/// Halo points take part in the sequence (their neighbour counts steer s)
+/// Halo points take part in the sequence (their neighbor counts steer s)
 /// but are not estimated: another process outputs them.
 void ItemEstimator::EstimateBlock(std::int64_t block, EstimationScratch& scratch)
 {
-  // Neighbours found, the point itself excluded (as the estimator counts).
+  // Neighbors found, the point itself excluded (as the estimator counts).
   const auto neighborCount = [&scratch]()
   { return std::max(0, static_cast<int>(scratch.Neighbors.Count) - 1); };
   DynamicAdjustment& adjustment = scratch.Adjustment;

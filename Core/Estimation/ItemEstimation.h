@@ -1,7 +1,7 @@
 /**
  * @file ItemEstimation.h
  * @brief The estimation's work items and their estimator: how every point's
- * neighbourhood is chosen (NeighborhoodRule), the order points are
+ * neighborhood is chosen (NeighborhoodRule), the order points are
  * processed in (ProcessingOrder), one point's estimate with its rule
  * (PointEstimator) and a range of items with progress (ItemEstimator).
  * Internal to CloudEstimation. No VTK.
@@ -38,7 +38,7 @@ struct EstimationScratch
   std::vector<std::pair<double, std::int64_t>> Ranked;
 };
 
-/// How neighbourhoods and thresholds are chosen for every point.
+/// How neighborhoods and thresholds are chosen for every point.
 struct NeighborhoodRule
 {
   bool AutomaticScale = false; // per point, by AutomaticScaleRule
@@ -132,7 +132,7 @@ public:
   {
     this->Out.StoreUnestimated(this->Cloud.InputId(point), reason);
   }
-  /// The offsets of the neighbours within s into scratch.Neighbors.
+  /// The offsets of the neighbors within s into scratch.Neighbors.
   void Gather(const double* x, double s, EstimationScratch& scratch) const
   {
     this->Grid.GatherOffsetsWithinRadius(x, s, scratch.Neighbors);
@@ -143,13 +143,13 @@ public:
 
   /// An own point with a fixed radius, k nearest or the automatic scale.
   void EstimateFixed(std::int64_t point, EstimationScratch& scratch);
-  /// The paper's fits on the neighbours gathered in scratch.Neighbors.
+  /// The paper's fits on the neighbors gathered in scratch.Neighbors.
   void EstimateGathered(std::int64_t point,
     double s,
     double p,
     EstimationScratch& scratch,
     int target = 0);
-  /// FitMode::OrientedCircles: every neighbour within s, with its normal.
+  /// FitMode::OrientedCircles: every neighbor within s, with its normal.
   void EstimateOriented(std::int64_t point,
     double s,
     double p,

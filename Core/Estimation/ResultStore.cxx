@@ -209,7 +209,7 @@ double WriteTrusted(const CurvatureBuffers& out,
     }
   }
   // The curvatures that matter in this cloud: its large ones, or, where it
-  // is (nearly) flat, a bending its typical neighbourhood resolves well (a
+  // is (nearly) flat, a bending its typical neighborhood resolves well (a
   // quarter of one over its radius: a larger share would let the errors of
   // gently curved parts, which take large radii, pass as trusted).
   const double typicalRadius = MagnitudeQuantile(radii.data(), numberOfPoints, 0.5, processes);

@@ -28,8 +28,8 @@ enum class FitMode : int
   Previous = 0, ///< eigenvector of the smallest eigenvalue of B (Seibert et al.)
   New01 = 1,    ///< closed form from equations (2) and (3)
   New02 = 2,    ///< better of the closed forms from (1)+(2) and (2)+(3)
-  /// Every neighbour's circle, from its position and its normal, fitted by
-  /// the sine at the neighbours' own angles (OrientedCircleFit.h).
+  /// Every neighbor's circle, from its position and its normal, fitted by
+  /// the sine at the neighbors' own angles (OrientedCircleFit.h).
   OrientedCircles = 3
 };
 
@@ -43,7 +43,7 @@ struct TangentFrame
   Vector3 W0;
 };
 
-/// Builds the frame; `unitNormal` must have length 1. v0 is n x e normalised,
+/// Builds the frame; `unitNormal` must have length 1. v0 is n x e normalized,
 /// with e the coordinate axis least aligned with n (deterministic, stable).
 TangentFrame MakeTangentFrame(const Vector3& unitNormal);
 
@@ -56,13 +56,13 @@ enum class UnestimatedReason : std::uint8_t
   BadCoordinate,
   /// The normal is zero or not finite (given so, or not determinable).
   NoNormal,
-  /// Fewer neighbours than a fit needs.
+  /// Fewer neighbors than a fit needs.
   TooFewNeighbors,
-  /// The neighbours do not surround the point: too few directions, or
+  /// The neighbors do not surround the point: too few directions, or
   /// directions within half a turn.
   TooFewDirections,
-  /// OrientedCircles: the neighbourhood reaches across the surface
-  /// (neighbours with opposing normals on another level).
+  /// OrientedCircles: the neighborhood reaches across the surface
+  /// (neighbors with opposing normals on another level).
   ReachesAcross,
   /// Any other failure of the fit (a singular system, a result beyond the
   /// double range).
@@ -97,11 +97,11 @@ struct FitSettings
   FitMode Mode = FitMode::New01;
   int MinimumPointsPerDirection = 3;
   /// A direction's points must reach this far along it, as a fraction of
-  /// the neighbourhood's size: points bunched near the query point (as
+  /// the neighborhood's size: points bunched near the query point (as
   /// where there is no surface around it, e.g. points on a line) do not
   /// determine a circle. Default 0.5.
   double MinimumDirectionExtent = 0.5;
-  /// OrientedCircles: a point is not estimated when more of its neighbours
+  /// OrientedCircles: a point is not estimated when more of its neighbors
   /// than this fraction have a normal opposing its own.
   double MaximumOpposingFraction = 0.05;
 };
@@ -127,7 +127,7 @@ struct FittedSurface
 /// What the fit of some sums gives: the curvatures (output sign, in
 /// 1/length after `inverseScale`), the positions-only fit's standard error
 /// of them (the automatic scale compares radii by it: the positions' rows
-/// are independent, the neighbours' estimated normals are not), and two
+/// are independent, the neighbors' estimated normals are not), and two
 /// errors that no covariance shows, both in 1/length: how far the
 /// positions-only fit's curvatures lie from the combined ones
 /// (|d offset| + |d amplitude| of the sine), and the second-order error of

@@ -12,7 +12,7 @@ namespace
 using JetVector = small::Vector<HeightJetUnknowns>;
 using JetMatrix = small::Matrix<HeightJetUnknowns>;
 
-/// Fewer neighbours than the unknowns and two leave no residual to weigh
+/// Fewer neighbors than the unknowns and two leave no residual to weigh
 /// the fit by.
 constexpr std::size_t ResidualNeighbors = 2;
 
@@ -94,7 +94,7 @@ constexpr int TriangularIndex(int degree, int a, int b)
 /// The normal equations' sums as moments: every entry of the matrix is a
 /// sum of u^a v^b with a + b <= 8 (45 of them, against the matrix's 120),
 /// every entry of the right side one of h u^a v^b with a + b <= 4. Kept
-/// flat and added in fully unrolled loops: the sums of one neighbour are
+/// flat and added in fully unrolled loops: the sums of one neighbor are
 /// independent of each other.
 struct JetMoments
 {
@@ -262,7 +262,7 @@ void CurvaturesOfGraph(const TangentFrame& frame,
 /// Steps of inverse iteration from the given normal: each takes the other
 /// eigenvectors' parts down by the ratio of the smallest eigenvalue to
 /// theirs, which the heights' small spread across a surface's
-/// neighbourhood makes small.
+/// neighborhood makes small.
 constexpr int PlaneIterations = 3;
 
 } // namespace

@@ -2,9 +2,9 @@
  * @file HeightJet.h
  * @brief The surface as a height of the fourth order over the tangent
  * plane of the point's normal (a jet, the model of CGAL's Monge fitting),
- * fitted to the positions of its nearest neighbours alone. Where positions
+ * fitted to the positions of its nearest neighbors alone. Where positions
  * carry no noise (points of a mesh, of a CAD model, of an analytic
- * surface), a few neighbours suffice and the model's error, of the fifth
+ * surface), a few neighbors suffice and the model's error, of the fifth
  * order in the radius, is far below that of the oriented circles at their
  * smallest radius. No VTK.
  */
@@ -28,10 +28,10 @@ struct HeightJetFit
   double StandardError = std::numeric_limits<double>::quiet_NaN();
 };
 
-/// The normal of the least-squares plane of `count` neighbours at offsets
+/// The normal of the least-squares plane of `count` neighbors at offsets
 /// (dx, dy, dz) (the smallest eigenvector of their covariance), turned to
-/// `side`'s side: the jet's plane. `scale` is the neighbourhood's radius.
-/// `side` itself where the neighbours do not determine a plane (on a line).
+/// `side`'s side: the jet's plane. `scale` is the neighborhood's radius.
+/// `side` itself where the neighbors do not determine a plane (on a line).
 Vector3 NeighborhoodPlaneNormal(const double* dx,
   const double* dy,
   const double* dz,
@@ -43,12 +43,12 @@ Vector3 NeighborhoodPlaneNormal(const double* dx,
 /// third and five fourth derivatives' coefficients.
 constexpr int HeightJetUnknowns = 15;
 
-/// Fits the jet to `count` neighbours at offsets (dx, dy, dz) from the
+/// Fits the jet to `count` neighbors at offsets (dx, dy, dz) from the
 /// point (the point itself among them, at offset zero, if it is one), over
 /// the tangent plane of `frame` (the point's normal and its tangent axes).
-/// `scale` is the neighbourhood's radius: the offsets are divided by it, so
+/// `scale` is the neighborhood's radius: the offsets are divided by it, so
 /// that the normal equations are well scaled. Invalid with fewer than
-/// HeightJetUnknowns + 2 neighbours or where they do not determine the jet
+/// HeightJetUnknowns + 2 neighbors or where they do not determine the jet
 /// (on a line, in a few rows of a scan). The standard error takes the
 /// positions' variance along the normal as at least `heightVarianceFloor`
 /// (length squared: what rounding the coordinates adds).

@@ -19,7 +19,7 @@ template<int N>
 using Matrix = small::Matrix<N>;
 using small::Solution;
 using small::Solve;
-/// Fewer neighbours than the unknowns and two leave the fit without a
+/// Fewer neighbors than the unknowns and two leave the fit without a
 /// residual to weigh it.
 constexpr int ResidualNeighbors = 2;
 
@@ -107,7 +107,7 @@ TangentFrame FittedFrame(const TangentFrame& frame,
   const Vector3d normal(frame.Normal.data()), v0(frame.V0.data()), w0(frame.W0.data());
   const Vector3d fitted = (normal - share * (tiltU * v0 + tiltV * w0)).normalized();
   // v0 turned into the fitted plane: the angles phi of the sine stay those
-  // the neighbours were fitted at, to first order in the tilt.
+  // the neighbors were fitted at, to first order in the tilt.
   const Vector3d v = (v0 - v0.dot(fitted) * fitted).normalized();
   const Vector3d w = fitted.cross(v);
   if (!fitted.allFinite() || !v.allFinite())
@@ -198,7 +198,7 @@ bool OrientedCircleTallies::ReachesAcross(double maximumOpposing) const
   }
   if (this->Opposing == this->Neighbors)
   {
-    return true; // every neighbour's normal opposes the point's own
+    return true; // every neighbor's normal opposes the point's own
   }
   const double opposing = this->Opposing, agreeing = this->Neighbors - this->Opposing;
   const double opposingLevel = this->OpposingHeights / opposing;

@@ -1,16 +1,16 @@
 /**
  * @file OrientedCircleFit.h
- * @brief A fit beyond the paper, in its spirit: every neighbour q defines
- * the osculating circle through the query point x whose centre lies on the
+ * @brief A fit beyond the paper, in its spirit: every neighbor q defines
+ * the osculating circle through the query point x whose center lies on the
  * normal line (the paper's circle, for one point), and, through its normal
  * n_q, an oriented circle (one whose normal at q agrees with n_q). Both give
  * the normal curvature in q's direction; the sine of period pi of the paper,
  * kappa(phi) = C + A cos 2 phi + B sin 2 phi, is fitted to all of them at the
- * neighbours' own angles phi instead of 16 half planes. No VTK.
+ * neighbors' own angles phi instead of 16 half planes. No VTK.
  *
  * In the tangent frame of x (paper sign, lengths in units of a scale):
  * with d = q - x, D = |d|^2, h = d . n, phi the angle of d's tangential part,
- * - position: the circle through x and q centred on the normal line has
+ * - position: the circle through x and q centered on the normal line has
  *   kappa D = 2 h exactly;
  * - normal: for an oriented circle (or sphere) -(n_q - n) . d = kappa D.
  * A tilt delta of the query normal adds delta . d to -(n_q - n) . d and
@@ -28,8 +28,8 @@
  * normals where the positions are noisy (normals' errors grow like |d|,
  * their rows are weighted by 1 / D).
  *
- * Everything the fit needs is a sum over the neighbours (OrientedCircleSums),
- * so that a neighbourhood can grow shell by shell, and the fit of every
+ * Everything the fit needs is a sum over the neighbors (OrientedCircleSums),
+ * so that a neighborhood can grow shell by shell, and the fit of every
  * radius on the way costs one small solve (the automatic scale).
  */
 #ifndef OrientedCircleFit_h
@@ -75,7 +75,7 @@ constexpr double ReportedErrorFactor = 1.5;
 /// suite. The reported error of a fourth-order fit (ReportedStandardError).
 constexpr double CombinedErrorFactor = 4.0;
 
-/// What the sums of a neighbourhood hold besides the normal equations'
+/// What the sums of a neighborhood hold besides the normal equations'
 /// matrices and right-hand sides: the same for a fit of either order.
 struct OrientedCircleTallies
 {
@@ -83,8 +83,8 @@ struct OrientedCircleTallies
   double PositionTargets = 0.0, NormalTargets = 0.0;
   int Neighbors = 0;
   int NeighborsWithNormal = 0;
-  /// Neighbours whose normal points against the query's, and the sums of
-  /// the heights of those and of the others, and of D (all neighbours).
+  /// Neighbors whose normal points against the query's, and the sums of
+  /// the heights of those and of the others, and of D (all neighbors).
   int Opposing = 0;
   double OpposingHeights = 0.0, AgreeingHeights = 0.0, SquaredDistances = 0.0;
   double OpposingSquaredHeights = 0.0, AgreeingSquaredHeights = 0.0;
@@ -92,8 +92,8 @@ struct OrientedCircleTallies
   std::uint32_t Sectors = 0;
   std::uint32_t HalfTurnPositions = 0;
 
-  /// The neighbourhood reaches across the surface (a thin part, two close
-  /// sheets): more than the fraction `maximumOpposing` of the neighbours
+  /// The neighborhood reaches across the surface (a thin part, two close
+  /// sheets): more than the fraction `maximumOpposing` of the neighbors
   /// have a normal opposing the query's, and they lie on another level than
   /// the others (their mean heights differ by more than three standard
   /// errors of that difference, and by a twentieth of the RMS distance).
@@ -102,7 +102,7 @@ struct OrientedCircleTallies
   bool ReachesAcross(double maximumOpposing) const;
 };
 
-/// The least-squares sums of the neighbours added so far, in the frame of
+/// The least-squares sums of the neighbors added so far, in the frame of
 /// the query point and in units of a fixed scale, for a fit of the
 /// surface's terms up to `Order` (3: the cubic, 4: also the quartic; the
 /// unknowns of oriented::Layout).
@@ -121,9 +121,9 @@ struct OrientedCircleSumsOf : OrientedCircleTallies
 using OrientedCircleSums = OrientedCircleSumsOf<3>;
 using QuarticCircleSums = OrientedCircleSumsOf<4>;
 
-/// Adds neighbours to OrientedCircleSumsOf<Order> several at a time (eight
+/// Adds neighbors to OrientedCircleSumsOf<Order> several at a time (eight
 /// lanes of SimdKernels.h's oriented::AddNeighbors): Begin, Add per
-/// neighbour, Sums whenever the sums so far are wanted. The same neighbours
+/// neighbor, Sums whenever the sums so far are wanted. The same neighbors
 /// in the same order give the same sums on every instruction set.
 template<int Order>
 class OrientedCircleAccumulatorOf
@@ -132,7 +132,7 @@ public:
   /// Starts afresh in the tangent frame of a query point.
   void Begin(const TangentFrame& frame);
 
-  /// Adds a neighbour: its offset (in units of the scale) and its unit
+  /// Adds a neighbor: its offset (in units of the scale) and its unit
   /// normal, or null or zero (the position alone is used). At the query
   /// point: ignored. A normal opposing the query's is turned first: scans'
   /// normals are often not consistently oriented, and a normal's line is
@@ -150,7 +150,7 @@ public:
     }
   }
 
-  /// The sums of every neighbour added since Begin.
+  /// The sums of every neighbor added since Begin.
   const OrientedCircleSumsOf<Order>& Sums();
 
 private:
@@ -169,7 +169,7 @@ using QuarticCircleAccumulator = OrientedCircleAccumulatorOf<4>;
 
 /// The standard error reported for `chosen`, 1/length: it covers what the
 /// positions' covariance leaves out (OrientedCircleResult) and, where the
-/// neighbourhood grew (the automatic scale), the bias the chosen radius
+/// neighborhood grew (the automatic scale), the bias the chosen radius
 /// adds over the radius before it (`previous`, or null). `precision`: the
 /// relative precision below which the automatic scale stops growing (a
 /// smaller error is not claimed). The sum is scaled by a factor calibrated
@@ -179,8 +179,8 @@ double ReportedStandardError(const OrientedCircleResult& chosen,
   double precision);
 
 /// Fits the sums; invalid with fewer than `minimumNeighbors` (at least the
-/// positions' unknowns and two: 12 at order 3, 17 at order 4) neighbours,
-/// angles within a closed half-turn of 2 phi, or a neighbourhood that
+/// positions' unknowns and two: 12 at order 3, 17 at order 4) neighbors,
+/// angles within a closed half-turn of 2 phi, or a neighborhood that
 /// reaches across the surface (ReachesAcross). CombinedStandardError only
 /// with `combinedError` (else the positions-only fit's). The positions'
 /// variance along the normal is taken as at least `heightVarianceFloor`
@@ -198,15 +198,15 @@ OrientedCircleResult FitOrientedCircles(const OrientedCircleSumsOf<Order>& sums,
 /// unknowns are a subset of the fourth's).
 OrientedCircleSums ThirdOrderPart(const QuarticCircleSums& sums);
 
-/// One query at one scale: Begin, AddNeighbor per neighbour, Estimate.
+/// One query at one scale: Begin, AddNeighbor per neighbor, Estimate.
 class OrientedCircleEstimator
 {
 public:
   /// Starts a query at a point with unit normal `unitNormal`; lengths are
-  /// divided by `scale` (the neighbourhood's radius, > 0).
+  /// divided by `scale` (the neighborhood's radius, > 0).
   void Begin(const Vector3& unitNormal, double scale);
 
-  /// Adds a neighbour by its offset q - x and its unit normal (zero: the
+  /// Adds a neighbor by its offset q - x and its unit normal (zero: the
   /// position alone is used).
   void AddNeighbor(const double offset[3], const double normal[3]);
 

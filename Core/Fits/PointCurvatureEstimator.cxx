@@ -13,7 +13,7 @@ std::uint32_t PointCurvatureEstimator::DirectionMask(double tx, double ty, doubl
   // coordinates are the offsets themselves.
   const binning::Frame identity{ { 0.0, 0.0, 1.0 }, { 1.0, 0.0, 0.0 }, { 0.0, 1.0, 0.0 }, 1.0, p };
   // A height off the tangent plane, which the plane tests ignore: the
-  // neighbour is never taken for the query point itself, however small t
+  // neighbor is never taken for the query point itself, however small t
   // (its squared length may underflow to 0).
   const double height = 1.0;
   double h[1 + binning::Padding], d[1 + binning::Padding];
@@ -56,7 +56,7 @@ void PointCurvatureEstimator::Reserve(std::size_t neighbors)
   {
     return;
   }
-  // The neighbours added so far keep their places; whole vectors are
+  // The neighbors added so far keep their places; whole vectors are
   // stored past the last one.
   const std::size_t capacity = std::max(neighbors, 2 * this->Capacity);
   for (std::vector<double>* added :
@@ -180,7 +180,7 @@ void PointCurvatureEstimator::FitDirections(const FitSettings& settings)
       wanted |= (candidate12[i].Valid && candidate23[i].Valid) ? 1u << i : 0u;
     }
     const std::size_t stride = this->Capacity + binning::Padding;
-    // One more row: a dead end for the neighbours in no wanted direction.
+    // One more row: a dead end for the neighbors in no wanted direction.
     this->DirectionH.resize((NumberOfDirections + 1) * stride);
     this->DirectionD.resize((NumberOfDirections + 1) * stride);
     // Locals, not members: the stores could alias members.
@@ -199,7 +199,7 @@ void PointCurvatureEstimator::FitDirections(const FitSettings& settings)
     };
     for (std::size_t k = 0; k < this->NumberOfSlots; ++k)
     {
-      // The first direction without a branch (most neighbours have one or
+      // The first direction without a branch (most neighbors have one or
       // none: a loop over the bits mispredicted at nearly every one).
       const std::uint32_t bits = static_cast<std::uint32_t>(mask[k]) & wanted;
       put(k, __builtin_ctz(bits | 1u << NumberOfDirections), bits != 0);

@@ -315,7 +315,7 @@ SineFit FitSine(const std::array<double, NumberOfDirections>& curvature,
   fit.Offset = r0 / n00 - l10 * fit.CosineAmplitude - l20 * fit.SineAmplitude;
   // Residuals relative to the largest curvature, so that their squares
   // cannot overflow where the curvatures are huge (a degenerate
-  // neighbourhood can give 1e283).
+  // neighborhood can give 1e283).
   double largest = 0.0;
   for (int i = 0; i < NumberOfDirections; ++i)
   {

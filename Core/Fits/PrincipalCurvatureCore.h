@@ -6,7 +6,7 @@
  * profiled on its own.
  *
  * Conventions (docs/method.md describes the method as implemented):
- * - Circle fits work in the paper's sign: a circle whose centre lies on the
+ * - Circle fits work in the paper's sign: a circle whose center lies on the
  *   normal's side has positive curvature.
  * - Results leaving the core (PointCurvature) are in the output sign:
  *   positive where the surface bends away from the normal, so a sphere with
@@ -77,7 +77,7 @@ CircleFit FitEquations12(const CgaSums& sums);
 CircleFit FitEquations23(const CgaSums& sums);
 
 /// Geometric distance of a point (height h, squared distance D from the
-/// query point) to the circle through the query point whose centre is
+/// query point) to the circle through the query point whose center is
 /// normal / kappa; stable for kappa -> 0.
 inline double DistanceToCircle(double kappa, double h, double squaredDistance)
 {
@@ -111,11 +111,11 @@ void PrincipalCurvaturesFromSine(const SineFit& fit,
   PointCurvature& out);
 
 /**
- * Estimates the principal curvatures at one point from its neighbours.
+ * Estimates the principal curvatures at one point from its neighbors.
  * Reuse one instance per thread: it keeps its scratch buffers.
  *
- * Usage: Begin(x, n, p); AddNeighbor(q) for each neighbour; Estimate(settings).
- * All geometry is taken relative to x and divided by the largest neighbour
+ * Usage: Begin(x, n, p); AddNeighbor(q) for each neighbor; Estimate(settings).
+ * All geometry is taken relative to x and divided by the largest neighbor
  * distance before fitting, so results do not depend on where the cloud sits
  * or on its unit (up to the unit of the curvature).
  */
@@ -123,39 +123,39 @@ class PointCurvatureEstimator
 {
 public:
   /// Starts a query at `point` with unit normal `unitNormal`, the
-  /// plane-distance-threshold `planeDistance` and the neighbourhood's size
+  /// plane-distance-threshold `planeDistance` and the neighborhood's size
   /// `scale` (the surroundings-threshold; lengths > 0). Lengths are divided
   /// by `scale` before anything is summed, so that the CGA matrix is well
   /// conditioned and the result does not depend on the cloud's unit.
   void Begin(const Vector3& point, const Vector3& unitNormal, double planeDistance, double scale);
 
-  /// Adds `count` neighbours (xyz triplets) in one pass: coordinates in the
+  /// Adds `count` neighbors (xyz triplets) in one pass: coordinates in the
   /// tangent frame, half-plane membership and the six sums of each
-  /// direction. A neighbour that coincides with the query point carries no
+  /// direction. A neighbor that coincides with the query point carries no
   /// information about the curvature and is ignored.
   void AddNeighbors(const double* coordinates, std::size_t count);
   void AddNeighbor(const double q[3]) { this->AddNeighbors(q, 1); }
 
-  /// The same for neighbours given as offsets q - x from the query point,
+  /// The same for neighbors given as offsets q - x from the query point,
   /// one array per axis (as PointGrid::GatherOffsetsWithinRadius writes
   /// them): the same results as AddNeighbors, without the copy.
   void AddNeighborOffsets(const double* dx, const double* dy, const double* dz, std::size_t count);
 
-  /// Number of neighbours added so far (coincident points excluded).
+  /// Number of neighbors added so far (coincident points excluded).
   int GetNumberOfNeighbors() const { return static_cast<int>(this->NumberOfAdded); }
 
-  /// Forms each direction's sums from the neighbours binned into its half
+  /// Forms each direction's sums from the neighbors binned into its half
   /// plane, fits a circle per direction and a sine over the directions.
   PointCurvature Estimate(const FitSettings& settings);
 
-  /// Bit i is set when a neighbour at tangent coordinates (tx, ty) belongs
+  /// Bit i is set when a neighbor at tangent coordinates (tx, ty) belongs
   /// to direction i for the plane-distance-threshold p: t . v_i > 0 and
   /// |t . (n x v_i)| < p. Binned by polar angle: only the few directions
-  /// near the neighbour's angle are tested.
+  /// near the neighbor's angle are tested.
   static std::uint32_t DirectionMask(double tx, double ty, double p);
 
 private:
-  /// Makes room for `neighbors` neighbours in all, keeping those added.
+  /// Makes room for `neighbors` neighbors in all, keeping those added.
   void Reserve(std::size_t neighbors);
   /// The six sums of each direction from its banks and rare record.
   void SumBanks();
@@ -166,10 +166,10 @@ private:
   double InverseScale = 0.0;
   double ScaledPlaneDistance = 0.0;
 
-  /// The neighbours added so far, in the order added (units of the scale):
+  /// The neighbors added so far, in the order added (units of the scale):
   /// height above the tangent plane, squared distance, tangent coordinates,
   /// and the directions each is in (New02's second pass reads them). A
-  /// neighbour at the query point takes a slot but no direction, and is not
+  /// neighbor at the query point takes a slot but no direction, and is not
   /// counted in NumberOfAdded.
   std::size_t NumberOfSlots = 0;
   std::size_t NumberOfAdded = 0;
@@ -177,13 +177,13 @@ private:
   std::vector<double> AddedH, AddedD, AddedTx, AddedTy;
   std::vector<std::int64_t> AddedMask;
 
-  /// The running sums the classification adds every neighbour to
+  /// The running sums the classification adds every neighbor to
   /// (binning::Block): banks by slot for those in one half plane, one
-  /// record per direction for the rare others. Adding each neighbour into
+  /// record per direction for the rare others. Adding each neighbor into
   /// sums picked at run time made each add wait for the previous one's
-  /// store (36 ns per neighbour in the first version); direction lists
+  /// store (36 ns per neighbor in the first version); direction lists
   /// summed afterwards halved that; banks by slot, with a vector add per
-  /// neighbour, need no lists.
+  /// neighbor, need no lists.
   std::vector<double> Banks;
   binning::Block Binned;
 

@@ -1,19 +1,19 @@
 /**
  * @file SimdKernels.h
  * @brief The innermost loops, with SIMD chosen at run time (no VTK): which
- * of the 16 half planes each neighbour of a query point falls into
+ * of the 16 half planes each neighbor of a query point falls into
  * (binning), which points of a run of grid cells lie within the radius
  * or a shell (gather), New02's summed distances to its two circles
  * (circles), and the least-squares sums of OrientedCircles' rows
  * (oriented).
  *
- * Binning is the innermost loop of the method: about 375 neighbours per point,
+ * Binning is the innermost loop of the method: about 375 neighbors per point,
  * each put into its tangent frame, tested against the half planes and added
- * to its direction's sums. Done one neighbour at a time it cost about 100
+ * to its direction's sums. Done one neighbor at a time it cost about 100
  * scalar instructions and 60 % of the filter's time; here the frame
- * coordinates and the tests run on several neighbours at once (2 lanes with
+ * coordinates and the tests run on several neighbors at once (2 lanes with
  * SSE2, 4 with AVX2, 8 with AVX-512), and with AVX-512 the sums too (the
- * rare neighbours in several half planes one direction at a time).
+ * rare neighbors in several half planes one direction at a time).
  *
  * Every instruction set computes the same IEEE operations in the same order,
  * without fused multiply-adds (the file turns contraction off): results are
@@ -21,7 +21,7 @@
  * in the environment picks one (to compare them); by default the widest the
  * processor has.
  *
- * The test, for a neighbour at tangent coordinates (tx, ty) and plane
+ * The test, for a neighbor at tangent coordinates (tx, ty) and plane
  * distance p: direction i (angle i pi / 8) holds it when t . v_i > 0 and
  * |t . (n x v_i)| < p. Farther than p / sin(pi / 4) from the normal line only
  * the four directions nearest to its angle can hold it, all with
@@ -43,14 +43,14 @@ namespace pcurv
 namespace binning
 {
 
-/// Neighbours classified per call.
+/// Neighbors classified per call.
 constexpr std::size_t BlockSize = 64;
 /// Entries written past a block's end (whole vectors): output arrays need
 /// this much room beyond the block.
 constexpr std::size_t Padding = 8;
 
 /// The query: its tangent frame, the factor that takes offsets to units of
-/// the neighbourhood's size, and the plane distance in those units.
+/// the neighborhood's size, and the plane distance in those units.
 struct Frame
 {
   double Normal[3];
@@ -60,14 +60,14 @@ struct Frame
   double PlaneDistance;
 };
 
-/// Running sums of each direction, kept per bank: neighbour (slot) k adds
-/// into bank k mod 8, so that consecutive neighbours, often in the same
+/// Running sums of each direction, kept per bank: neighbor (slot) k adds
+/// into bank k mod 8, so that consecutive neighbors, often in the same
 /// direction, do not wait for each other's adds. A record holds, in this
 /// order, the sums of h^2, h, h D, D, D^2, the count, and the largest
 /// distance along the direction (the extent); record 16 of each bank takes
-/// the neighbours that are in no direction (a branch-free dead end). After
+/// the neighbors that are in no direction (a branch-free dead end). After
 /// the eight banks come 16 more records, one per direction, for the rare
-/// neighbours in several half planes (or near the normal line), added in
+/// neighbors in several half planes (or near the normal line), added in
 /// slot order.
 constexpr int NumberOfBanks = 8;
 constexpr int RecordsPerBank = 17;
@@ -97,7 +97,7 @@ struct DirectionTable
 };
 const DirectionTable& Directions();
 
-/// Adds one neighbour (height h, squared distance d, distance along the
+/// Adds one neighbor (height h, squared distance d, distance along the
 /// direction) to a record; the AVX-512 kernel does the same in one vector.
 inline __attribute__((always_inline)) void AddToRecord(double* r, double h, double d, double along)
 {
@@ -110,7 +110,7 @@ inline __attribute__((always_inline)) void AddToRecord(double* r, double h, doub
   r[Extent] = r[Extent] > along ? r[Extent] : along;
 }
 
-/// Adds a rare neighbour to the rare record of each direction it is in
+/// Adds a rare neighbor to the rare record of each direction it is in
 /// (bit i of `directions`), with its distance along that direction.
 inline __attribute__((always_inline)) void AddToRareRecords(double* rare,
   const DirectionTable& table,
@@ -127,9 +127,9 @@ inline __attribute__((always_inline)) void AddToRareRecords(double* rare,
   }
 }
 
-/// Where a block's results go. Per neighbour, at its slot: coordinates and
-/// the directions it is in (bit i: direction i; none for a neighbour at the
-/// query point, where the plane tests mean nothing). Every neighbour is
+/// Where a block's results go. Per neighbor, at its slot: coordinates and
+/// the directions it is in (bit i: direction i; none for a neighbor at the
+/// query point, where the plane tests mean nothing). Every neighbor is
 /// added to the sums: those in one half plane to the banks, the rare others
 /// to the rare records, direction by direction.
 struct Block
@@ -138,13 +138,13 @@ struct Block
   double* D = nullptr;  ///< squared distance
   double* Tx = nullptr; ///< tangent coordinates
   double* Ty = nullptr;
-  std::int64_t* Mask = nullptr; ///< directions of each neighbour
+  std::int64_t* Mask = nullptr; ///< directions of each neighbor
   double* Banks = nullptr;      ///< BankDoubles values
-  std::size_t FirstSlot = 0;    ///< slot of the block's first neighbour
-  std::size_t AtQueryPoint = 0; ///< neighbours with squared distance 0
+  std::size_t FirstSlot = 0;    ///< slot of the block's first neighbor
+  std::size_t AtQueryPoint = 0; ///< neighbors with squared distance 0
 };
 
-/// Classifies `count` (at most BlockSize) neighbours given as offsets from
+/// Classifies `count` (at most BlockSize) neighbors given as offsets from
 /// the query point (q - x, three arrays of `count` values).
 void Classify(const Frame& frame,
   const double* dx,
@@ -295,7 +295,7 @@ struct Frame
 /// query point's height; those of the normals' rows: the same without the
 /// height. Entries: upper triangles (row by row) and right-hand sides of
 /// both kinds of normal equations, the sums of their weighted squared
-/// targets, the neighbours' counts and the sums of their heights (h, h^2:
+/// targets, the neighbors' counts and the sums of their heights (h, h^2:
 /// those whose normal opposes the query's, and the others) and of their
 /// squared distances D.
 template<int Order>
@@ -327,9 +327,9 @@ struct Layout
 constexpr int FirstCubicColumn = 5;
 constexpr int FirstQuarticColumn = 9;
 
-/// Every sum is kept in eight banks: the j-th neighbour of a call adds to
+/// Every sum is kept in eight banks: the j-th neighbor of a call adds to
 /// bank j mod 8, whatever the vector width, so that every instruction set
-/// adds the same numbers in the same order (and consecutive neighbours do
+/// adds the same numbers in the same order (and consecutive neighbors do
 /// not wait for each other's adds). Entry e of bank b: Banks[e * 8 + b].
 constexpr int NumberOfBanks = 8;
 template<int Order>
@@ -343,7 +343,7 @@ struct BankedSums
 using Sums = BankedSums<3>;
 using QuarticSums = BankedSums<4>;
 
-/// Neighbours of a query: their offsets from the query point in the units
+/// Neighbors of a query: their offsets from the query point in the units
 /// of the fit (Dx, Dy, Dz) and their unit normals (Nx, Ny, Nz; all three 0:
 /// none), Count of each.
 struct NeighborBatch
@@ -357,7 +357,7 @@ struct NeighborBatch
   std::size_t Count;
 };
 
-/// Adds neighbours to `sums` (zeroed before the first call). A neighbour at
+/// Adds neighbors to `sums` (zeroed before the first call). A neighbor at
 /// the query point is ignored. The rows are those of OrientedCircleFit.h.
 void AddNeighbors(const Frame& frame, const NeighborBatch& neighbors, Sums& sums);
 void AddNeighbors(const Frame& frame, const NeighborBatch& neighbors, QuarticSums& sums);

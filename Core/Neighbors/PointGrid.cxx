@@ -247,7 +247,7 @@ void PointGrid::BuildDenseCells(const double* coordinates)
   std::nth_element(counts.begin(), counts.begin() + counts.size() / 2, counts.end());
   // Dense: more than 16 times the median cell and than 256 points, where
   // scanning the whole cell for every query costs far more than the
-  // neighbours found.
+  // neighbors found.
   const std::int64_t dense = std::max<std::int64_t>(256, 16 * counts[counts.size() / 2]);
   for (std::int64_t c = 0; c < numberOfCells; ++c)
   {

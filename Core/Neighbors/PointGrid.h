@@ -1,20 +1,20 @@
 /**
  * @file PointGrid.h
- * @brief Uniform-grid neighbour search over a fixed point set (no VTK).
+ * @brief Uniform-grid neighbor search over a fixed point set (no VTK).
  *
  * Why not vtkStaticPointLocator: its FindPointsWithinRadius reads every
  * candidate through a virtual GetTuple call and was measured to take about
- * two thirds of the whole filter's time at ~375 neighbours per point. Here
+ * two thirds of the whole filter's time at ~375 neighbors per point. Here
  * the points are copied, sorted by cell (a counting sort), so a query reads
  * the candidates of each cell from one contiguous block of memory.
  *
  * The sorted order is also a spatially coherent processing order: points
- * handled one after another are neighbours, which keeps their candidates in
+ * handled one after another are neighbors, which keeps their candidates in
  * cache and is what the dynamic variable adjustment assumes.
  *
  * The cells are those of a GridLattice that every process computes alike
  * from global bounds, and the points of a cell are sorted by coordinates:
- * the order in which a query visits its neighbours, hence every sum, does
+ * the order in which a query visits its neighbors, hence every sum, does
  * not depend on the order of the input points or on how they are split
  * among processes.
  */
@@ -35,9 +35,9 @@
 namespace pcurv
 {
 
-/// Neighbours as offsets q - x from the query point x, one array per axis
+/// Neighbors as offsets q - x from the query point x, one array per axis
 /// (the layout the half-plane binning reads). The arrays only grow: the
-/// first Count values are the neighbours.
+/// first Count values are the neighbors.
 struct NeighborOffsets
 {
   std::vector<double> Dx, Dy, Dz;
@@ -221,7 +221,7 @@ public:
   template<typename Visit>
   void ForEachWithinRadiusFine(const double x[3], double radius, Visit&& visit) const;
   /// The points q with inner <= |q - x| < radius (one shell of a growing
-  /// neighbourhood), in ForEachWithinRadiusFine's order: their offsets
+  /// neighborhood), in ForEachWithinRadiusFine's order: their offsets
   /// q - x and ids replace `out`'s; sets and returns out.Count. Branch
   /// free: a shell's edges cut through its cells too randomly for branch
   /// prediction.
@@ -266,7 +266,7 @@ private:
     const double cell = static_cast<double>(this->Lattice.Cell(coordinate, axis)) -
       static_cast<double>(this->Low[axis]);
     // Comparisons that send NaN to cell 0: a NaN cast to an integer is
-    // undefined behaviour.
+    // undefined behavior.
     const double last = static_cast<double>(this->Dimensions[axis] - 1);
     return static_cast<std::int64_t>(cell > 0.0 ? (cell < last ? cell : last) : 0.0);
   }

@@ -1,12 +1,12 @@
 /**
  * @file NormalEstimation.h
  * @brief Normals of a cloud that has none (no VTK): a plane fitted by PCA to
- * each point's nearest neighbours, the signs made consistent by propagation
+ * each point's nearest neighbors, the signs made consistent by propagation
  * along a minimum spanning tree of normal agreement (Hoppe et al. 1992), one
  * tree per connected part, then the sign of each part chosen globally:
  * outward, towards a viewpoint, or along an axis.
  *
- * Deterministic: points are handled in the neighbour grid's order, which
+ * Deterministic: points are handled in the neighbor grid's order, which
  * depends only on the coordinates, and ties in the tree are broken by that
  * order; so the normals do not depend on the input order, the threads, or
  * how the cloud is split among processes (the caller gathers the cloud).

@@ -32,9 +32,9 @@ enum class NormalOrientation : int
 
 struct NormalSettings
 {
-  /// Neighbours of the PCA plane fit (the point itself not counted).
+  /// Neighbors of the PCA plane fit (the point itself not counted).
   int NumberOfNeighbors = static_cast<int>(PCURV_DEFAULT("NormalNeighbors"));
-  /// Nearest neighbours each point is joined to in the orientation graph.
+  /// Nearest neighbors each point is joined to in the orientation graph.
   int GraphNeighbors = 8;
   NormalOrientation Orientation =
     static_cast<NormalOrientation>(PCURV_DEFAULT("NormalOrientation"));

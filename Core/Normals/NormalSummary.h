@@ -14,7 +14,7 @@ struct NormalSummary
 {
   /// Connected parts of the orientation graph (Outward only).
   std::int64_t Components = 0;
-  /// Points with too few neighbours for a plane (their normal is zero).
+  /// Points with too few neighbors for a plane (their normal is zero).
   std::int64_t Undetermined = 0;
   /// The progress monitor asked to stop: the normals are incomplete.
   bool Aborted = false;

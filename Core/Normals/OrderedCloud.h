@@ -42,10 +42,10 @@ struct Candidates
   }
 };
 
-/// The cloud's points in the neighbour grid's order (the positions), one
+/// The cloud's points in the neighbor grid's order (the positions), one
 /// array per axis, with the first position of each of the grid's cells.
 /// Cells of a row being consecutive in that order, a radius query reads
-/// contiguous runs of positions: it finds the neighbours in position order
+/// contiguous runs of positions: it finds the neighbors in position order
 /// (the order every sum of the fit follows, as before) without looking
 /// positions up, and reads the coordinates where they lie in memory.
 ///

@@ -2,7 +2,7 @@
  * @file OrientationGraph.h
  * @brief The graph along which the estimated normals' signs are propagated
  * (NormalEstimation.h): each point's plane-fit normal and nearest
- * neighbours, and from them adjacency lists in a fixed order, each entry
+ * neighbors, and from them adjacency lists in a fixed order, each entry
  * with its edge's weight bucket and sign relation. No VTK.
  */
 #ifndef OrientationGraph_h
@@ -21,7 +21,7 @@ namespace pcurv
 {
 
 /// What the per-point pass leaves for the orientation: in grid order, the
-/// normal (arbitrary sign) and the nearest neighbours' grid positions.
+/// normal (arbitrary sign) and the nearest neighbors' grid positions.
 struct PlaneFits
 {
   std::vector<double> Normals; // 3 per grid position
@@ -30,7 +30,7 @@ struct PlaneFits
 };
 
 /// Drops the graph edges a -> b the orientation can do without (their
-/// neighbour entry becomes -1): those whose reverse b -> a is an edge too
+/// neighbor entry becomes -1): those whose reverse b -> a is an edge too
 /// and comes later in a's adjacency list (b > a). The traversal pushes
 /// both with the same weight and sign, the later one is popped first (last
 /// in, first out within a bucket), and the earlier one then always finds b
@@ -126,7 +126,7 @@ struct Graph
   Graph(const PlaneFits& fits, WorkRunner& runner)
   {
     // A point has its own edges and those of the points it is nearest to:
-    // far fewer than 256 entries, but for a hub of many neighbourhoods,
+    // far fewer than 256 entries, but for a hub of many neighborhoods,
     // which makes the build start again with wider counts.
     if (!this->Build<std::uint8_t>(fits, runner))
     {

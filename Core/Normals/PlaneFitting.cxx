@@ -21,17 +21,17 @@ namespace
 {
 
 /// Below this share of the largest variance, the middle one leaves the
-/// neighbours on a line: any plane through it fits them (a scan line's
+/// neighbors on a line: any plane through it fits them (a scan line's
 /// points, 12 times denser along the lines than across them, often are
 /// all one line's), and the PCA normal is a random turn about the line.
 constexpr double LinearShare = 0.05;
 
-/// The normal of the plane through the neighbours (offsets from the point,
+/// The normal of the plane through the neighbors (offsets from the point,
 /// in units of the radius) by PCA: the eigenvector of the smallest
 /// eigenvalue of their covariance; signed so that its largest component is
 /// positive (any fixed rule: the orientation decides the sign later). The
-/// sums run in the neighbours' order, one accumulator a matrix entry.
-/// Returns whether the neighbours span a plane (LinearShare).
+/// sums run in the neighbors' order, one accumulator a matrix entry.
+/// Returns whether the neighbors span a plane (LinearShare).
 bool FitPlane(const NeighborOffsets& offsets, double inverseRadius, double* normal)
 {
   const std::size_t count = offsets.Count;
@@ -207,10 +207,10 @@ void KeepWithinRadius(const OrderedCloud& ordered,
 }
 
 /// The graph edges of the point at `position`: its `count` nearest others
-/// among the kept neighbours (within `radius`, `kept` of them), by
+/// among the kept neighbors (within `radius`, `kept` of them), by
 /// (squared distance, position), nearest first, -1 padded. Only those
 /// within a distance that holds about 1.5 times as many on a surface are
-/// ranked; all of them where that is too few. The kept neighbours come in
+/// ranked; all of them where that is too few. The kept neighbors come in
 /// position order, so a stable sort by distance ranks ties by position.
 void WriteNearestOthers(std::int64_t position,
   double radius,
@@ -255,7 +255,7 @@ void WriteNearestOthers(std::int64_t position,
   }
 }
 
-/// Where the k nearest lie on a line: the plane through the neighbours of
+/// Where the k nearest lie on a line: the plane through the neighbors of
 /// a radius grown until they span one (twice as many each time, on a
 /// surface), up to 8 times as many; `normal` unchanged where none does (a
 /// point on a line has no plane).
@@ -283,7 +283,7 @@ void FitBeyondLine(const OrderedCloud& ordered,
 
 } // namespace
 
-/// One point's plane and graph neighbours: the k nearest found with one
+/// One point's plane and graph neighbors: the k nearest found with one
 /// radius query (usually), kept in position order for the fit, the nearest
 /// others for the graph.
 void FitPoint(const OrderedCloud& ordered,

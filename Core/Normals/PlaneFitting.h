@@ -35,7 +35,7 @@ struct NearestSearch
   double Guess = 0.0;
 };
 
-/// One point's plane and graph neighbours: the k nearest found with one
+/// One point's plane and graph neighbors: the k nearest found with one
 /// radius query (usually), kept in position order for the fit, the nearest
 /// others for the graph.
 void FitPoint(const OrderedCloud& ordered,

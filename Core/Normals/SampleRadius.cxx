@@ -218,7 +218,7 @@ std::int64_t SampleNeighborhoods::Work(const std::vector<std::int64_t>& sample) 
 /// TypicalRadius(cloud, alone, boxes, k) (CloudStatistics.cxx) without its
 /// grid over the whole cloud, which took as long as a tenth of the normals:
 /// the same sample (InSpacingSample), the same exact distances to the
-/// (k + 1)-th nearest point, the same median; the neighbours of the ~512
+/// (k + 1)-th nearest point, the same median; the neighbors of the ~512
 /// sample points found in one parallel pass (SampleNeighborhoods). False
 /// where it cannot vouch for the value (a sample point whose k nearest lie
 /// beyond the cells searched, few points, a cloud far from a surface): the

@@ -19,7 +19,7 @@ constexpr double NormalTiltAllowance = 2.4;
 /// NormalFollowsSurface's radius, in first radii.
 constexpr double NormalTestRadius = 4.0;
 /// The first radius of the ladder fitted at the fourth order too: four
-/// first radii, about 256 neighbours (the test's radius). Fewer determine
+/// first radii, about 256 neighbors (the test's radius). Fewer determine
 /// its 15 unknowns poorly where the sampling is uneven (scan lines), and
 /// only noisy clouds grow this far.
 constexpr int FourthOrderFirstLevel = 4;
@@ -27,17 +27,17 @@ constexpr int FourthOrderFirstLevel = 4;
 /// each the combined fit's covariance's inflated as the reported error's.
 constexpr double OrderTolerance = 2.0 * CombinedErrorFactor;
 /// Jets are tried where the ladder reached its precision within its first
-/// three radii (up to twice the first, about 64 neighbours): where noise
+/// three radii (up to twice the first, about 64 neighbors): where noise
 /// grows it further, or where its growth stopped for want of agreement
-/// early (a feature, a thin part), a jet of a few neighbours is far less
+/// early (a feature, a thin part), a jet of a few neighbors is far less
 /// precise or no more right.
 constexpr double JetTrialRadius = 2.0;
-/// The jet's neighbours (the point among them): few, for the smallest
+/// The jet's neighbors (the point among them): few, for the smallest
 /// radius and so the smallest bias, yet some above its 15 unknowns.
 constexpr int JetCount = 20;
 /// The jet's standard error over its residual's: the truncation that makes
 /// the residual where positions have no noise biases the curvatures too,
-/// by about as much and of one sign over a neighbourhood, which the
+/// by about as much and of one sign over a neighborhood, which the
 /// residual's covariance does not show. Calibrated on the shared accuracy
 /// suite's noise-free clouds (a bias estimated from a second, wider jet
 /// covered as well and cost twice the time).
@@ -50,12 +50,12 @@ constexpr double JetAgreement = 2.0;
 /// where the jet was right and its error not below the ladder's, the
 /// ladder's real error was about 4 times its reported one (the median).
 constexpr double LadderBiasAllowance = 3.0;
-/// How far the jet's neighbours may reach, in first radii, where that is
+/// How far the jet's neighbors may reach, in first radii, where that is
 /// beyond the largest radius (the first radius is then about the largest).
 constexpr double JetReach = 1.3;
 
 /// A fit beside the fourth order's (either order, where the normals follow
-/// the surface) whose neighbourhood the surface turns through more than a
+/// the surface) whose neighborhood the surface turns through more than a
 /// radian across (radius times the largest |curvature|): a height over the
 /// tangent plane, even of the fourth order, no longer follows it there (an
 /// ellipsoid's tips, a thin torus's tube), and its covariance does not show
@@ -82,7 +82,7 @@ double RoundingVariance(const std::array<double, 3>& step, const Vector3& normal
 }
 
 /// The fit of the sums so far into `result`; false (no fit) where the
-/// neighbourhood reaches across the surface.
+/// neighborhood reaches across the surface.
 template<int Order>
 bool FitSums(OrientedCircleAccumulatorOf<Order>& accumulator,
   const TangentFrame& frame,
@@ -105,7 +105,7 @@ bool FitSums(OrientedCircleAccumulatorOf<Order>& accumulator,
   return true;
 }
 
-/// Of two fits of the same neighbours, the third order's where it agrees
+/// Of two fits of the same neighbors, the third order's where it agrees
 /// with the fourth's within what the fourth's extra unknowns add to the
 /// error (the standard error of their difference: of nested least squares,
 /// the root of the difference of their variances), the fourth's where the
@@ -135,7 +135,7 @@ const OrientedCircleResult& Simplest(const OrientedCircleResult& third,
 
 /// The fit of the fourth order's sums so far, or of their third order's
 /// part where that agrees (Simplest); false (no fit) where the
-/// neighbourhood reaches across the surface.
+/// neighborhood reaches across the surface.
 bool FitEitherOrder(QuarticCircleAccumulator& accumulator,
   const TangentFrame& frame,
   double inverseUnit,
@@ -223,13 +223,13 @@ ScaleEstimate AutomaticScaleEstimator::Estimate(std::int64_t point,
     const double r = std::min(unit * std::pow(2.0, 0.5 * level), rule.LargestRadius);
     if (rule.FourthOrder && level >= FourthOrderFirstLevel && !fourthOrder)
     {
-      // The inner radii's neighbours again, into the fourth order's sums.
+      // The inner radii's neighbors again, into the fourth order's sums.
       fourthOrder = true;
       quartic.Begin(frame);
       this->Grid.GatherShell(x, 0.0, inner, scratch.Shell);
       this->AddShell(scratch.Shell, inverseUnit, quartic);
     }
-    // The inner radii's neighbours are in the sums already.
+    // The inner radii's neighbors are in the sums already.
     this->GatherLevel(x, inner, r, scratch);
     if (fourthOrder)
     {
@@ -262,7 +262,7 @@ ScaleEstimate AutomaticScaleEstimator::Estimate(std::int64_t point,
       accepted.push_back(result);
       chosen = result;
       chosenRadius = r;
-      // More neighbours would not change the estimate measurably: done.
+      // More neighbors would not change the estimate measurably: done.
       const double magnitude = std::max({ std::fabs(result.Curvature.MinimumCurvature),
         std::fabs(result.Curvature.MaximumCurvature),
         1.0 / r });
@@ -329,14 +329,14 @@ void AutomaticScaleEstimator::PreferJet(const double* x,
   // As near as the limit or nearer (below the next number up).
   ShellPoints& neighbors = scratch.Jet;
   const std::size_t count = KeepNearerThan(nearest, std::nextafter(limit, HUGE_VAL), neighbors);
-  // The other points among them (the estimate's neighbour count).
+  // The other points among them (the estimate's neighbor count).
   const int others = static_cast<int>(std::count_if(nearest.Squared.begin(),
     nearest.Squared.end(),
     [limit](double squared) { return squared > 0.0 && squared <= limit; }));
   const double radius = std::sqrt(limit);
-  // Over the neighbours' own plane: there the heights, and with them the
+  // Over the neighbors' own plane: there the heights, and with them the
   // terms the quartic leaves out, are the smallest (a given normal, even
-  // an exact one, tilts against an uneven neighbourhood).
+  // an exact one, tilts against an uneven neighborhood).
   const TangentFrame plane = MakeTangentFrame(NeighborhoodPlaneNormal(
     neighbors.Dx.data(), neighbors.Dy.data(), neighbors.Dz.data(), count, radius, frame.Normal));
   const HeightJetFit jet = FitHeightJet(neighbors.Dx.data(),
@@ -354,7 +354,7 @@ void AutomaticScaleEstimator::PreferJet(const double* x,
   const PointCurvature& near = jet.Curvature;
   // As precise as the ladder's precision stop asks (its error below
   // Precision times the curvature or the inverse radius), or the
-  // positions have some noise after all, which the jet's few neighbours
+  // positions have some noise after all, which the jet's few neighbors
   // do not average (a fifth of a spacing's thousandth already puts some
   // jets 20 % off).
   const double magnitude =
@@ -370,7 +370,7 @@ void AutomaticScaleEstimator::PreferJet(const double* x,
   // truncation (no smaller radius to compare with); the jet, of a higher
   // order, shows it: where the two differ by more than the jet's error,
   // the ladder is off by at least the excess, but by no more than
-  // LadderBiasAllowance times its error (a jet whose few neighbours barely
+  // LadderBiasAllowance times its error (a jet whose few neighbors barely
   // determine it, on the rings of a latitude-longitude grid's pole, can
   // differ by far more with a small error). The jet is taken where its
   // error is the smaller.
@@ -397,7 +397,7 @@ void AutomaticScaleEstimator::PreferJet(const double* x,
   out.MinimumDirection = near.MinimumDirection;
   out.MaximumDirection = near.MaximumDirection;
   out.FittedNormal = near.FittedNormal;
-  // The neighbours, as the ladder counts them: the other points, those
+  // The neighbors, as the ladder counts them: the other points, those
   // strictly within the radius.
   out.NeighborCount = others;
   estimate.Radius = std::nextafter(radius, HUGE_VAL);

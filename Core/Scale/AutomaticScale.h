@@ -1,7 +1,7 @@
 /**
  * @file AutomaticScale.h
  * @brief NeighborhoodMode::Automatic with OrientedCircles: per point, the
- * largest neighbourhood whose estimate agrees with those of the smaller
+ * largest neighborhood whose estimate agrees with those of the smaller
  * ones (Lepski's rule). The anchors of shared fits, which serve the points
  * near them, are in SharedFits.h. No VTK.
  */
@@ -75,25 +75,25 @@ public:
   {
   }
 
-  /// The neighbourhood grows from the BaseCount nearest by a factor of 2
+  /// The neighborhood grows from the BaseCount nearest by a factor of 2
   /// in count (sqrt 2 in radius), shell by shell into the same sums, and
   /// the largest radius is kept whose curvatures agree with those of every
   /// smaller radius within Tolerance times their standard errors (Lepski's
-  /// rule): as long as the estimates agree, a larger neighbourhood only
+  /// rule): as long as the estimates agree, a larger neighborhood only
   /// averages the noise out; once they part, the surface's shape (bias)
-  /// has begun to show. A radius at which too many neighbours' normals
-  /// oppose the point's stops the growth (the neighbourhood would reach
+  /// has begun to show. A radius at which too many neighbors' normals
+  /// oppose the point's stops the growth (the neighborhood would reach
   /// across the surface).
   /// With FourthOrder, the radii from four first radii on fit the
   /// surface's fourth-order terms too. Where the growth stopped within the
   /// first radii (positions with little or no noise), a height jet of the
-  /// nearest neighbours (HeightJet.h) replaces the estimate where its error
+  /// nearest neighbors (HeightJet.h) replaces the estimate where its error
   /// is the smaller (PreferJet).
   ScaleEstimate Estimate(std::int64_t point, AutomaticScaleScratch& scratch) const;
 
   /// Whether the point's normal follows the surface as closely as exact
   /// normals of a noisy cloud do: at four first radii (about 256
-  /// neighbours), the tilt the fit finds in it is within what the point's
+  /// neighbors), the tilt the fit finds in it is within what the point's
   /// own displacement along the surface explains (the square of the tilt
   /// at most NormalTiltAllowance times its expected square). An estimated
   /// normal is off by its own error, several times more. 1: it follows,
@@ -102,7 +102,7 @@ public:
 
 private:
   /// Replaces `estimate` by the height jet of the JetCount nearest
-  /// neighbours where the jet's error (its standard error, inflated for
+  /// neighbors where the jet's error (its standard error, inflated for
   /// the bias its residual does not show) is below `ladderError` (the
   /// ladder's reported error without the precision floor).
   /// `roundingVariance`: the coordinates' rounding along the normal.
@@ -114,7 +114,7 @@ private:
     AutomaticScaleScratch& scratch,
     ScaleEstimate& estimate) const;
 
-  /// The distance from `x` to its BaseCount-th nearest neighbour: the
+  /// The distance from `x` to its BaseCount-th nearest neighbor: the
   /// first radius of its ladder. Gathers the nearest points into the
   /// scratch's Nearest on the way, as many as the jet needs.
   double FirstRadius(const double* x, AutomaticScaleScratch& scratch) const;

@@ -23,7 +23,7 @@ struct SharingRule
   double OffsetFraction = 0.15;
   /// Only anchors whose radius is at least this (a length) are shared:
   /// small radii cost little, and there the circles' exactness on a sphere
-  /// or a cylinder beats any polynomial surface evaluated off its centre.
+  /// or a cylinder beats any polynomial surface evaluated off its center.
   double MinimumRadius = 0.0;
   /// The point's normal within this cosine of the fitted surface's there.
   double MinimumNormalCosine = 0.866;
@@ -37,17 +37,17 @@ struct SharingRule
 /// that picks one (AutomaticScaleEstimator).
 struct AutomaticScaleRule
 {
-  int BaseCount = 16;       // the first radius holds this many neighbours
-  int Levels = 8;           // radii base 2^(i/2), i < Levels: about 2000 neighbours at most
+  int BaseCount = 16;       // the first radius holds this many neighbors
+  int Levels = 8;           // radii base 2^(i/2), i < Levels: about 2000 neighbors at most
   double Precision = 1e-3;  // a standard error this small (times the curvature) ends the growth
-  int MinimumCount = 12;    // fewer neighbours give no estimate to compare
+  int MinimumCount = 12;    // fewer neighbors give no estimate to compare
   double Tolerance = 2.0;   // standard errors two estimates may differ by
   double LargestRadius = 0; // no radius beyond this (a length)
   double TypicalRadius = 0; // the cloud's typical first radius (a length)
   bool ShareFits = false;   // points near an anchor take its fit (SharedFits.h)
   bool FourthOrder = false; // wide radii fit the surface's fourth order too
   /// Levels where the normals do not follow the surface (FourthOrder
-  /// false): one radius more, about 4000 neighbours. Estimated normals are
+  /// false): one radius more, about 4000 neighbors. Estimated normals are
   /// about as uncertain as the positions, so the ladder's band (the
   /// positions' standard error) is the estimate's own and shows the bias
   /// of a wider radius; where the normals follow the surface the combined
@@ -56,7 +56,7 @@ struct AutomaticScaleRule
   int WideLevels = 9;
   /// The coordinates' lattice step per axis (CoordinateSteps; 0: none):
   /// rounding to it is noise the positions' residual need not show (where
-  /// a few neighbours round to one plane), so it floors their variance.
+  /// a few neighbors round to one plane), so it floors their variance.
   std::array<double, 3> CoordinateStep{};
   SharingRule Sharing;
 

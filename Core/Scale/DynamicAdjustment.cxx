@@ -45,8 +45,8 @@ double DynamicAdjustment::Adjust(int neighborCount)
 {
   const AdjustmentSettings& c = this->Settings;
   const double target = c.TargetNeighborCounts[this->Level];
-  // No neighbour at all: the formulas divide by zero; grow s by the largest
-  // factor one neighbour would give instead (the paper is silent here).
+  // No neighbor at all: the formulas divide by zero; grow s by the largest
+  // factor one neighbor would give instead (the paper is silent here).
   const double found = std::max(1, neighborCount);
   const double planeDistance = c.TargetPlaneDistances[this->Level] * c.LengthUnit * target / found;
 

@@ -5,7 +5,7 @@
  * p while points are processed one after another. No VTK.
  *
  * State: a target combination (N_t, p_t), initially the first of three, and
- * s, initially InitialSurroundingsThreshold. After the N neighbours of a
+ * s, initially InitialSurroundingsThreshold. After the N neighbors of a
  * point within s are gathered:
  *  1. p = p_t * N_t / N for this point (fewer points than targeted: wider
  *     planes, so each direction still gets points);
@@ -61,7 +61,7 @@ AdjustmentSettings BandedLadder(double firstCount, double planeDistance);
 /// and for clouds with noise of about half a point spacing.
 enum class AdjustmentPreset : int
 {
-  Paper = 0,      ///< 375, 750, 1500 neighbours; p 0.1, 0.05, 0.025 L; switches 2, 1, 4 L
+  Paper = 0,      ///< 375, 750, 1500 neighbors; p 0.1, 0.05, 0.025 L; switches 2, 1, 4 L
   Ladder = 1,     ///< BandedLadder(375, 0.2)
   NoisyLadder = 2 ///< BandedLadder(1000, 0.6)
 };
@@ -76,19 +76,19 @@ public:
   /// Back to the initial state, as at the paper's very first point.
   void Restart();
 
-  /// The surroundings-threshold to gather the current point's neighbours with.
+  /// The surroundings-threshold to gather the current point's neighbors with.
   double GetSurroundingsThreshold() const { return this->Surroundings; }
 
   /// Index (0..2) of the current target combination.
   int GetLevel() const { return this->Level; }
 
-  /// The current combination's target neighbour count N_t (rounded).
+  /// The current combination's target neighbor count N_t (rounded).
   int GetTargetNeighborCount() const
   {
     return static_cast<int>(this->Settings.TargetNeighborCounts[this->Level] + 0.5);
   }
 
-  /// Takes the number of neighbours found within GetSurroundingsThreshold(),
+  /// Takes the number of neighbors found within GetSurroundingsThreshold(),
   /// returns the plane-distance-threshold for this point and updates s and
   /// the target combination for the next point.
   double Adjust(int neighborCount);

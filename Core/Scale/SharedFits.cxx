@@ -353,9 +353,9 @@ bool AnchorCells::Precedes(std::int64_t a, std::int64_t b, const CellKey& cell) 
   double da = 0.0, db = 0.0;
   for (int k = 0; k < 3; ++k)
   {
-    const double centre = this->Origin[k] + (static_cast<double>(index[k]) + 0.5) * this->CellSide;
-    da += (xa[k] - centre) * (xa[k] - centre);
-    db += (xb[k] - centre) * (xb[k] - centre);
+    const double center = this->Origin[k] + (static_cast<double>(index[k]) + 0.5) * this->CellSide;
+    da += (xa[k] - center) * (xa[k] - center);
+    db += (xb[k] - center) * (xb[k] - center);
   }
   if (da != db)
   {
@@ -378,13 +378,13 @@ void AnchorCells::Offer(const CellKey& cell, std::int64_t point)
 
 bool AnchorCells::AnchorsAround(const double x[3], Around& around) const
 {
-  const CellKey centre = this->KeyOf(x);
-  if (around.Known && around.Cell == centre)
+  const CellKey center = this->KeyOf(x);
+  if (around.Known && around.Cell == center)
   {
     return false;
   }
   around.Known = true;
-  around.Cell = centre;
+  around.Cell = center;
   around.Anchors.clear();
   for (std::int64_t dk = -1; dk <= 1; ++dk)
   {
@@ -393,7 +393,7 @@ bool AnchorCells::AnchorsAround(const double x[3], Around& around) const
       for (std::int64_t di = -1; di <= 1; ++di)
       {
         const auto found =
-          this->Anchors.find(CellKey{ centre.I + di, centre.J + dj, centre.K + dk });
+          this->Anchors.find(CellKey{ center.I + di, center.J + dj, center.K + dk });
         if (found != this->Anchors.end() && found->second >= 0)
         {
           around.Anchors.push_back(found->second);

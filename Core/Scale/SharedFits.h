@@ -1,21 +1,21 @@
 /**
  * @file SharedFits.h
- * @brief One neighbourhood fit serving the points near its centre. No VTK.
+ * @brief One neighborhood fit serving the points near its center. No VTK.
  *
- * Where the automatic scale grows a neighbourhood many spacings wide (every
- * noisy scan), the neighbourhoods of nearby points are nearly the same set,
+ * Where the automatic scale grows a neighborhood many spacings wide (every
+ * noisy scan), the neighborhoods of nearby points are nearly the same set,
  * and so are their fits. OrientedCircles fits a surface over the query's
  * tangent plane: the sine's C, A, B are its second derivatives, the tilt
  * its slope, the cubic coefficients its third order, the height its level.
  * That surface can be evaluated at a nearby point's own position (its
  * slope, its shape operator there), and the cubic terms carry the change of
  * curvature over the offset. So only some points, the anchors, gather their
- * neighbourhoods; the others take the fit of the nearest anchor when it is
+ * neighborhoods; the others take the fit of the nearest anchor when it is
  * close against the anchor's radius, and gather their own otherwise (small
  * radii: noise-free clouds, fine features).
  *
  * Anchors are chosen in space, not by counting points: one per cell of a
- * global lattice, the point nearest the cell's centre. So the choice, and
+ * global lattice, the point nearest the cell's center. So the choice, and
  * every result, is the same for any thread count, split among processes
  * or input order.
  */
@@ -43,7 +43,7 @@ namespace pcurv
 struct AnchorFit
 {
   FittedSurface Surface;
-  double Radius = 0.0; ///< the neighbourhood's radius it was fitted over
+  double Radius = 0.0; ///< the neighborhood's radius it was fitted over
   double Error = 0.0;  ///< its reported standard error
   double SineFitRms = 0.0;
   int NeighborCount = 0;
@@ -91,7 +91,7 @@ SharedEstimate EstimateFromAnchors(const std::vector<AnchorEstimate>& anchors,
   const SharingRule& rule);
 
 /// The anchors of a cloud, one per occupied cell of a global lattice: the
-/// eligible point nearest the cell's centre (ties by coordinates, then by
+/// eligible point nearest the cell's center (ties by coordinates, then by
 /// normal), a strict order on distinct points, so no visiting order
 /// changes the choice.
 class AnchorCells

@@ -1,6 +1,6 @@
 /**
  * @file CloudFilterNames.h
- * @brief Which proxies are this plugin's filters, for the GUI behaviours.
+ * @brief Which proxies are this plugin's filters, for the GUI behaviors.
  */
 #ifndef CloudFilterNames_h
 #define CloudFilterNames_h

@@ -28,7 +28,7 @@ pqCloudColorMapBehavior::pqCloudColorMapBehavior(QObject* parent)
 void pqCloudColorMapBehavior::watchView(pqView* view)
 {
   // A view reports a display once it is added to it, which ParaView does
-  // after it has given the display the shared colour map of its array.
+  // after it has given the display the shared color map of its array.
   QObject::connect(
     view, &pqView::representationAdded, this, &pqCloudColorMapBehavior::giveOwnColorMap);
 }
@@ -46,8 +46,8 @@ void pqCloudColorMapBehavior::giveOwnColorMap(pqRepresentation* representation)
     return;
   }
   vtkSMPropertyHelper(display, "UseSeparateColorMap").Set(1);
-  // The display is already coloured (by the output's active scalars) with
-  // the shared map: colouring again picks the display's own map, which is
+  // The display is already colored (by the output's active scalars) with
+  // the shared map: coloring again picks the display's own map, which is
   // then scaled to this output alone.
   vtkSMPropertyHelper colorArray(display, "ColorArrayName");
   const std::string arrayName =

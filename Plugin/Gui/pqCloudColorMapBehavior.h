@@ -1,17 +1,17 @@
 /**
  * @class pqCloudColorMapBehavior
- * @brief Gives each display of this plugin's filters its own colour map,
+ * @brief Gives each display of this plugin's filters its own color map,
  * scaled to that output's range when it is first shown.
  *
- * ParaView keeps one colour map per array name, and its default rescale
- * mode only grows that map's range at each Apply: a second cloud coloured
+ * ParaView keeps one color map per array name, and its default rescale
+ * mode only grows that map's range at each Apply: a second cloud colored
  * by the same array (Mean_Curvature_Clipped) kept the first one's range and
- * showed in one colour when its curvatures were a hundredth of the first's.
+ * showed in one color when its curvatures were a hundredth of the first's.
  * Setting the map's mode to "Update on 'Apply'" is not enough: the range
  * then spans every visible display using the map, the first cloud's too.
- * A separate colour map per display (ParaView's "Use Separate Color Map")
- * gives each cloud its own range, and leaves the others' colours as they
- * were. Not applied while a state file loads: its colour maps are kept.
+ * A separate color map per display (ParaView's "Use Separate Color Map")
+ * gives each cloud its own range, and leaves the others' colors as they
+ * were. Not applied while a state file loads: its color maps are kept.
  */
 #ifndef pqCloudColorMapBehavior_h
 #define pqCloudColorMapBehavior_h
@@ -29,7 +29,7 @@ public:
 
 private Q_SLOTS:
   void watchView(pqView* view);
-  /// A new display of one of the plugin's filters: its own colour map.
+  /// A new display of one of the plugin's filters: its own color map.
   void giveOwnColorMap(pqRepresentation* representation);
 };
 

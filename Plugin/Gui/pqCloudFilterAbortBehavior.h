@@ -7,7 +7,7 @@
  * and the GUI handles no input while a filter runs (the progress bar is
  * only repainted), so a click waits until the run is over. While one of
  * this plugin's filters runs in the GUI's own process (the builtin
- * session), this behaviour enables the button, lets the GUI handle events
+ * session), this behavior enables the button, lets the GUI handle events
  * at the filter's progress events, passing mouse and key presses to the
  * Abort button alone, and on Abort sets the filter's abort flag, which the
  * filter reads at its next progress pass (a tenth of a second) before

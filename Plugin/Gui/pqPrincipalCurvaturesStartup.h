@@ -2,7 +2,7 @@
  * @class pqPrincipalCurvaturesStartup
  * @brief The plugin's GUI part, started when ParaView's GUI loads the
  * plugin: Abort that stops the filters (pqCloudFilterAbortBehavior) and a
- * colour map per output (pqCloudColorMapBehavior). pvpython and pvbatch
+ * color map per output (pqCloudColorMapBehavior). pvpython and pvbatch
  * do not start it.
  */
 #ifndef pqPrincipalCurvaturesStartup_h

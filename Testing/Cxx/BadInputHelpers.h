@@ -118,7 +118,7 @@ inline Outcome Run(vtkDataObject* input, const Configure& configure = nullptr)
   return outcome;
 }
 
-/// The three ways of choosing neighbourhoods, each with its own code path
+/// The three ways of choosing neighborhoods, each with its own code path
 /// for the radius: automatic radius, k nearest, dynamic adjustment.
 struct NeighborhoodMode
 {

@@ -48,10 +48,10 @@ void TestConfigurationErrors(Checks& checks)
           bare->GetNumberOfPoints());
   }
   {
-    // A PLY's colours: ParaView offers the first 3-component array as the
+    // A PLY's colors: ParaView offers the first 3-component array as the
     // normals, and RGB was taken for normals (5 % of the points estimated,
     // all nonsense).
-    const std::string row = "colours (unsigned char RGB) chosen as normals";
+    const std::string row = "colors (unsigned char RGB) chosen as normals";
     Row(row);
     auto input = PointsOnly(cloud);
     input->GetPointData()->SetActiveNormals(nullptr);
@@ -266,14 +266,14 @@ void TestSettings(Checks& checks)
         f->SetPlaneDistanceThreshold(0.5);
       });
     checks.Equal(Label(row, "no error").c_str(), o.Errors, 0);
-    checks.Equal(Label(row, "every other point is a neighbour").c_str(),
+    checks.Equal(Label(row, "every other point is a neighbor").c_str(),
       static_cast<long long>(o.Value("Neighbor_Count", 0)),
       cloud->GetNumberOfPoints() - 1);
     CheckContract(checks, row, o, normals);
     CheckPassedThrough(checks, row, cloud, o);
   }
   {
-    const std::string row = "a neighbour count below the minimum";
+    const std::string row = "a neighbor count below the minimum";
     Row(row);
     vtkNew<vtkPrincipalCurvatureEstimation> f;
     f->SetNumberOfNeighbors(1);

@@ -45,7 +45,7 @@ const char* const CurvatureArrays[] = { "Minimum_Curvature",
   "Plane_Distance_Threshold" };
 
 /// The first `count` points have the same output arrays in both runs: bit
-/// for bit, or within `tolerance` (a change of the neighbour grid's cells
+/// for bit, or within `tolerance` (a change of the neighbor grid's cells
 /// may reorder the sums).
 bool SameFirstPoints(const Outcome& a, const Outcome& b, vtkIdType count, double tolerance = 0.0)
 {
@@ -110,10 +110,10 @@ void TestFlaggedPoints(Checks& checks)
     const Outcome o = Run(input, FixedRadius);
     checks.True(Label(row, "those points flagged").c_str(),
       o.Valid(n) == 0 && o.Valid(n + 1) == 0 && o.Valid(n + 2) == 0 && o.Valid(n + 3) == 0);
-    checks.Equal(Label(row, "they have no neighbours").c_str(),
+    checks.Equal(Label(row, "they have no neighbors").c_str(),
       static_cast<long long>(o.Value("Neighbor_Count", n) + o.Value("Neighbor_Count", n + 3)),
       0);
-    checks.True(Label(row, "other points bit-identical (left out of every neighbourhood)").c_str(),
+    checks.True(Label(row, "other points bit-identical (left out of every neighborhood)").c_str(),
       SameFirstPoints(o, clean, n));
     CheckContract(checks, row, o, input->GetPointData()->GetNormals());
     CheckPassedThrough(checks, row, input, o);
@@ -142,7 +142,7 @@ void TestFlaggedPoints(Checks& checks)
     checks.Equal(Label(row, "four unestimated").c_str(), flagged.Unestimated, 4);
     CheckContract(checks, row, flagged, normals);
     // The paper's fits use only the point's own normal, so the others are
-    // bit-identical there (OrientedCircles also uses the neighbours'
+    // bit-identical there (OrientedCircles also uses the neighbors'
     // normals: a bad one then just adds no normal row to their fits).
     const auto paperFixed = [](vtkPrincipalCurvatureEstimation* f)
     {
@@ -206,7 +206,7 @@ void TestFlaggedPoints(Checks& checks)
     const Outcome o = Run(input, FixedRadius);
     checks.Equal(Label(row, "flagged").c_str(), o.Valid(n), 0);
     checks.Equal(
-      Label(row, "0 neighbours").c_str(), static_cast<int>(o.Value("Neighbor_Count", n)), 0);
+      Label(row, "0 neighbors").c_str(), static_cast<int>(o.Value("Neighbor_Count", n)), 0);
     // It widens the bounding box, hence the grid's cells and the order of
     // the sums: equal to rounding.
     checks.True(
@@ -306,8 +306,8 @@ void TestDegenerateClouds(Checks& checks)
 
 /// One far outlier, as a "missing value" sentinel in a file makes: the
 /// torus must keep its estimates (as in a clean run, to the accuracy of the
-/// method) and the outlier is flagged, in every neighbourhood mode. At 1e110
-/// the neighbour grid would need more cells than a double counts.
+/// method) and the outlier is flagged, in every neighborhood mode. At 1e110
+/// the neighbor grid would need more cells than a double counts.
 void TestFarOutlier(Checks& checks)
 {
   auto cloud = PointsOnly(Torus());

@@ -1,6 +1,6 @@
 // Bad input, scale and types: point sets other than vtkPolyData, integer
 // and float coordinates, clouds translated and scaled far from unit size,
-// near-planar and nearly umbilic neighbourhoods, one sub-test per row of
+// near-planar and nearly umbilic neighborhoods, one sub-test per row of
 // docs/bad-input.md's table (see BadInputHelpers.h for what every sub-test
 // also checks); and clouds at the edges of the double range, each its own
 // test (TestBadInputScale --extreme NAME, see the end).
@@ -139,7 +139,7 @@ void TestTypesAndInputs(Checks& checks)
     grid->SetPoints(points);
     grid->GetPointData()->SetNormals(normals);
     // New01 with its fixed radius estimates every point; the automatic
-    // neighbourhood starts from the 16 nearest, which near the poles lie on
+    // neighborhood starts from the 16 nearest, which near the poles lie on
     // one parallel (no spread of directions), and flags the few points
     // where no radius up to its largest gives a determined fit.
     CheckSphereOfRadius2(checks,
@@ -161,7 +161,7 @@ void TestTypesAndInputs(Checks& checks)
     Row(row);
     // A sphere of radius 1000 rounded to integers, normals times 1000 as ints.
     auto cloud = TypedCloud<vtkIntArray>(Sample(Sphere(1000.0), 20000, 9), VTK_INT, true);
-    // Integer "normals" are refused (colours are integers, normals are not);
+    // Integer "normals" are refused (colors are integers, normals are not);
     // the integer points are estimated with normals the filter estimates.
     const Outcome refused = Run(cloud);
     checks.True(Label(row, "integer normals: an error naming the type").c_str(),
@@ -262,7 +262,7 @@ void TestNumericalHardening(Checks& checks)
     // warning; in float, the coordinates are rounded to a fraction of a
     // metre, and a warning says by how much. At 5e6 the doubles are
     // themselves rounded to 1e-9, a noise that a noise-free cloud's height
-    // jets (of 20 neighbours) see: a point whose choice between the jet and
+    // jets (of 20 neighbors) see: a point whose choice between the jet and
     // the ladder's estimate lies at the threshold may flip (one of the 8000
     // here), and then its two values differ within their reported errors.
     const std::string row = "georeferenced: translated by (600000, 5000000, 100)";
@@ -401,7 +401,7 @@ void TestNumericalHardening(Checks& checks)
 /// Powers of two, so that the scaled clouds are exact copies: the filter
 /// works in a power-of-two unit of its own and must then give the clean
 /// run's numbers; with another factor, rounding moves the automatic
-/// radius by an ulp and with it neighbours that lie exactly on it.
+/// radius by an ulp and with it neighbors that lie exactly on it.
 ///  - FarApart: a torus and one point 1e300 away;
 ///  - FullRange: a torus and two points at -1e308 and +1e308 (the box's
 ///    extent overflows).

@@ -487,7 +487,7 @@ void TestCircleDistanceKernelsAgree(Checks& checks)
   checks.Near("circle sums against DistanceToCircle (relative)", largestRelative, 0.0, 1e-13);
 }
 
-/// OrientedCircleFit.h's rows written out one neighbour at a time: the
+/// OrientedCircleFit.h's rows written out one neighbor at a time: the
 /// positions' row (D, D cos 2 phi, D sin 2 phi, 2 u, 2 v, 2 u^3, 2 u^2 v,
 /// 2 u v^2, 2 v^3, [2 u^4, 2 u^3 v, 2 u^2 v^2, 2 u v^3, 2 v^4,] 1) with target
 /// 2 h; the normals' row (D, D cos 2 phi, D sin 2 phi, u, v, 3 u^3, 3 u^2 v,
@@ -630,7 +630,7 @@ bool SameSums(const OrientedCircleSums& a, const OrientedCircleSums& b)
 
 /// OrientedCircleAccumulator's sums (eight lanes of oriented::AddNeighbors),
 /// of the third and of the fourth order, are the rows' sums, and bit for
-/// bit the same on every instruction set: neighbours with and without
+/// bit the same on every instruction set: neighbors with and without
 /// normals, opposing ones, some at the query point or on the normal line,
 /// in batches of every length. The third order's part of the fourth's sums
 /// is the third order's sums, bit for bit.
@@ -720,12 +720,12 @@ void TestOrientedSumKernelsAgree(Checks& checks)
   }
   checks.Equal("oriented sums where a kernel differs from the generic one", differences, 0L);
   checks.Equal("oriented sums differing when added eight at a time", groupingDiffers, 0L);
-  checks.Equal("oriented sums' neighbour counts wrong", countsWrong, 0L);
+  checks.Equal("oriented sums' neighbor counts wrong", countsWrong, 0L);
   checks.Near("oriented sums against the rows one by one (relative)", largestRelative, 0.0, 1e-12);
   checks.Equal("third order's part of the fourth's sums differs from its own", partsDiffer, 0L);
 }
 
-/// Neighbours given as coordinates or as offsets: the same estimate.
+/// Neighbors given as coordinates or as offsets: the same estimate.
 void TestOffsetsEqualCoordinates(Checks& checks)
 {
   Random random(23);
@@ -754,11 +754,11 @@ void TestOffsetsEqualCoordinates(Checks& checks)
   checks.True("estimated", ra.Valid && rb.Valid);
   checks.True("identical minimum", ra.MinimumCurvature == rb.MinimumCurvature);
   checks.True("identical maximum", ra.MaximumCurvature == rb.MaximumCurvature);
-  checks.Equal("identical neighbour counts", a.GetNumberOfNeighbors(), b.GetNumberOfNeighbors());
+  checks.Equal("identical neighbor counts", a.GetNumberOfNeighbors(), b.GetNumberOfNeighbors());
 }
 
-/// Points of a circle through the origin with centre (0, 1/kappa) in the
-/// (along, h) plane; paper sign: centre on the normal's side is positive.
+/// Points of a circle through the origin with center (0, 1/kappa) in the
+/// (along, h) plane; paper sign: center on the normal's side is positive.
 CgaSums CirclePoints(double kappa, int count, double extent, double noise, Random& random)
 {
   CgaSums sums;
@@ -857,10 +857,10 @@ void TestPreviousMatchesEigenSolver(Checks& checks)
 
 void TestDistanceToCircle(Checks& checks)
 {
-  // Circle of curvature 1 (radius 1, centre (0, 1)); the point (0, 3) lies 1
-  // outside it, the point (0, 1) (the centre) 1 inside; h = 0, D = 0 on it.
+  // Circle of curvature 1 (radius 1, center (0, 1)); the point (0, 3) lies 1
+  // outside it, the point (0, 1) (the center) 1 inside; h = 0, D = 0 on it.
   checks.Near("distance outside", DistanceToCircle(1.0, 3.0, 9.0), 1.0, 1e-12);
-  checks.Near("distance centre", DistanceToCircle(1.0, 1.0, 1.0), 1.0, 1e-12);
+  checks.Near("distance center", DistanceToCircle(1.0, 1.0, 1.0), 1.0, 1e-12);
   checks.Near("distance on circle", DistanceToCircle(1.0, 0.0, 0.0), 0.0, 1e-12);
   // kappa = 0 is the tangent line h = 0: distance |h|.
   checks.Near("distance to line", DistanceToCircle(0.0, 0.25, 1.0), 0.25, 1e-12);
@@ -903,7 +903,7 @@ void TestSineFit(Checks& checks)
   checks.True("two directions rejected", !FitSine(kappa, valid).Valid);
 }
 
-/// One point on a sphere, ellipsoid and saddle with exact neighbours: the
+/// One point on a sphere, ellipsoid and saddle with exact neighbors: the
 /// estimator must recover the exact values in every mode.
 void TestEstimatorOnSurfaces(Checks& checks)
 {
@@ -978,11 +978,11 @@ void TestDegenerateNeighborhoods(Checks& checks)
   PointCurvatureEstimator estimator;
   FitSettings settings;
   estimator.Begin({ { 0, 0, 0 } }, { { 0, 0, 1 } }, 0.1, 1.0);
-  checks.True("no neighbours: invalid", !estimator.Estimate(settings).Valid);
+  checks.True("no neighbors: invalid", !estimator.Estimate(settings).Valid);
   estimator.Begin({ { 0, 0, 0 } }, { { 0, 0, 1 } }, 0.1, 1.0);
   const double same[3] = { 0, 0, 0 };
   estimator.AddNeighbor(same);
-  checks.Equal("coincident neighbour ignored", estimator.GetNumberOfNeighbors(), 0);
+  checks.Equal("coincident neighbor ignored", estimator.GetNumberOfNeighbors(), 0);
   // Points on a line: only two directions get points.
   estimator.Begin({ { 0, 0, 0 } }, { { 0, 0, 1 } }, 0.01, 1.0);
   for (int j = -20; j <= 20; ++j)
@@ -995,7 +995,7 @@ void TestDegenerateNeighborhoods(Checks& checks)
   checks.Equal("points on a line: 2 valid directions", line.ValidDirections, 2);
 }
 
-/// Translating and scaling the neighbourhood must not change the result
+/// Translating and scaling the neighborhood must not change the result
 /// beyond the unit.
 void TestInvariance(Checks& checks)
 {
@@ -1039,7 +1039,7 @@ void TestInvariance(Checks& checks)
 }
 } // namespace
 
-/// OrientedCircleAccumulator files each neighbour under its sixteenth of the turn
+/// OrientedCircleAccumulator files each neighbor under its sixteenth of the turn
 /// (phi) and its eighth of 2 phi, by comparisons instead of atan2: the
 /// same as floor((atan2 + pi) / (2 pi) * 16) and its 2 phi counterpart for
 /// directions off the boundaries, in every quadrant.
@@ -1076,7 +1076,7 @@ void TestNeighborSectors(Checks& checks)
         sums.HalfTurnPositions != (1u << std::min(position, 7));
     }
   }
-  checks.Equal("oriented circles: neighbours' sectors as atan2 gives them", wrong, 0);
+  checks.Equal("oriented circles: neighbors' sectors as atan2 gives them", wrong, 0);
 }
 
 int main()

@@ -44,8 +44,8 @@ void TestStateMachine(Checks& checks)
   checks.Equal("below 1: level 2", adjustment.GetLevel(), 2);
   adjustment.Adjust(1500 / 64); // s grows 8x to above 4: one step back
   checks.Equal("above 4: back to level 1", adjustment.GetLevel(), 1);
-  adjustment.Adjust(0); // no neighbour: s grows, no division by zero
-  checks.True("no neighbour: s finite", std::isfinite(adjustment.GetSurroundingsThreshold()));
+  adjustment.Adjust(0); // no neighbor: s grows, no division by zero
+  checks.True("no neighbor: s finite", std::isfinite(adjustment.GetSurroundingsThreshold()));
   adjustment.Restart();
   checks.Near("restart s", adjustment.GetSurroundingsThreshold(), 4.0, 0.0);
   checks.Equal("restart level", adjustment.GetLevel(), 0);
@@ -227,9 +227,9 @@ double BestFixedRadius(Checks& checks,
 void CheckCountBand(Checks& checks, const Result& r, const char* what)
 {
   char label[128];
-  std::snprintf(label, sizeof(label), "%s: neighbour count p5 >= 0.8 x target", what);
+  std::snprintf(label, sizeof(label), "%s: neighbor count p5 >= 0.8 x target", what);
   checks.True(label, r.CountP5 >= 0.8);
-  std::snprintf(label, sizeof(label), "%s: neighbour count p95 <= 1.25 x target", what);
+  std::snprintf(label, sizeof(label), "%s: neighbor count p95 <= 1.25 x target", what);
   checks.True(label, r.CountP95 <= 1.25);
 }
 
@@ -267,7 +267,7 @@ void TestVaryingDensity(Checks& checks)
     // best that estimates them all); the banded ladder 1.06x, every point
     // estimated. The paper's constant count takes the sparse side's radius
     // beyond what the curvature there allows; the ladder steps down to
-    // fewer neighbours.
+    // fewer neighbors.
     checks.Below("DVA (ladder) within 10% of the best fixed radius (noise-free)",
       ladderResult.Error,
       1.1 * best);

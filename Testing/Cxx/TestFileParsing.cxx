@@ -87,13 +87,12 @@ void TestLayouts(Checks& checks)
   cloud = TextCloud();
   Parse("1 2 3 255 0 10\n4 5 6 0 128 255\n", cloud);
   layout = ChooseColumnLayout(cloud, false);
-  checks.True(
-    "x y z r g b: colours, no normals", layout.Normal.empty() && layout.Colour.size() == 3);
+  checks.True("x y z r g b: colors, no normals", layout.Normal.empty() && layout.Color.size() == 3);
   cloud = TextCloud();
   Parse("2\n1 2 3 -5 10 20 30\n4 5 6 7 40 50 60\n", cloud, true);
   layout = ChooseColumnLayout(cloud, true);
-  checks.True(".pts: intensity and colours",
-    layout.Normal.empty() && layout.Colour.size() == 3 && layout.Scalars.size() == 1 &&
+  checks.True(".pts: intensity and colors",
+    layout.Normal.empty() && layout.Color.size() == 3 && layout.Scalars.size() == 1 &&
       layout.Scalars[0].second == "Intensity");
 }
 

@@ -59,7 +59,7 @@ bool HasGps(int format)
   return format != 0 && format != 2;
 }
 
-bool HasColour(int format)
+bool HasColor(int format)
 {
   return format == 2 || format == 3 || format == 5 || format == 7 || format == 8 || format == 10;
 }
@@ -102,7 +102,7 @@ std::string Record(const LasSpec& spec, const LasPoint& p)
       Append(r, p.GpsTime);
     }
   }
-  if (HasColour(spec.Format))
+  if (HasColor(spec.Format))
   {
     Append(r, p.Red);
     Append(r, p.Green);
@@ -247,7 +247,7 @@ void CheckGoodFile(Checks& checks, const LasSpec& spec, const std::string& folde
       checks.Near("ScanAngleRank", ValueOf(cloud, "ScanAngleRank", i), p.ScanAngle, 0);
     }
     const bool gps = HasGps(spec.Format);
-    const bool rgb = HasColour(spec.Format);
+    const bool rgb = HasColor(spec.Format);
     checks.True(
       "GpsTime present as the format says", (TypeOf(cloud, "GpsTime") == VTK_DOUBLE) == gps);
     if (gps)

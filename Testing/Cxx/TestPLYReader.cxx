@@ -1,7 +1,7 @@
 // vtkPLYPointCloudReader on small PLY files written here: ascii, binary
 // little and big endian, with an element before the vertices and faces
 // after them, double x y z kept exactly, float ones as float, normals under
-// two naming schemes, uchar colours as RGB, every other vertex property as
+// two naming schemes, uchar colors as RGB, every other vertex property as
 // its own array of its type, a vertex list property skipped; then bad
 // files, each with the error it must give (and no points, no crash).
 #include "ReaderTestHelpers.h"
@@ -23,7 +23,7 @@ struct Vertex
 {
   double X, Y, Z;
   float Normal[3];
-  std::uint8_t Colour[3];
+  std::uint8_t Color[3];
   std::int32_t Label;
   float Quality;
 };
@@ -35,7 +35,7 @@ const std::vector<Vertex> Vertices = {
 };
 
 /// A PLY file of Vertices: a camera element before them, faces after,
-/// x y z double (or float), normals, colours, label, quality and a list.
+/// x y z double (or float), normals, colors, label, quality and a list.
 std::string PlyFile(const std::string& format, bool floatPoints, const char* normal = "normal_")
 {
   const std::string point = floatPoints ? "float" : "double";
@@ -73,9 +73,9 @@ std::string PlyFile(const std::string& format, bool floatPoints, const char* nor
         v.Normal[0],
         v.Normal[1],
         v.Normal[2],
-        v.Colour[0],
-        v.Colour[1],
-        v.Colour[2],
+        v.Color[0],
+        v.Color[1],
+        v.Color[2],
         v.Label,
         v.Quality);
       text += line;
@@ -97,7 +97,7 @@ std::string PlyFile(const std::string& format, bool floatPoints, const char* nor
     }
     for (float c : v.Normal)
       put(c);
-    for (std::uint8_t c : v.Colour)
+    for (std::uint8_t c : v.Color)
       put(c);
     put(v.Label);
     put(std::uint8_t(2));
@@ -174,7 +174,7 @@ void CheckGoodFile(Checks& checks,
       const double want = floatPoints ? static_cast<float>(expected[c]) : expected[c];
       checks.Near("coordinate, exactly", x[c], want, 0);
       checks.Near("normal", pd->GetNormals()->GetComponent(i, c), v.Normal[c], 0);
-      checks.Near("colour", pd->GetScalars()->GetComponent(i, c), v.Colour[c], 0);
+      checks.Near("color", pd->GetScalars()->GetComponent(i, c), v.Color[c], 0);
     }
     checks.Near("label", ValueOf(cloud, "label", i), v.Label, 0);
     checks.Near("quality", ValueOf(cloud, "quality", i), v.Quality, 0);
@@ -197,7 +197,7 @@ void CheckBadFiles(Checks& checks, const std::string& folder)
     { "no_vertex.ply",
       "ply\nformat ascii 1.0\nelement face 0\nproperty list uchar int v\nend_header\n",
       "no vertex element (elements: face), so no points" },
-    { "colours_only.ply",
+    { "colors_only.ply",
       "ply\nformat ascii 1.0\nelement vertex 1\nproperty uchar red\nproperty uchar green\n"
       "property uchar blue\nend_header\n1 2 3\n",
       "the vertex element has no x, y, z properties (it has: red green blue), so no points" },

@@ -204,8 +204,8 @@ void TestOutputContract(Checks& checks)
   }
   checks.Equal("points breaking the output contract", bad, 0);
   const double meanCount = countSum / output->GetNumberOfPoints();
-  std::printf("automatic radius: mean neighbour count %.1f (target 375)\n", meanCount);
-  checks.Near("automatic radius gives about 375 neighbours", meanCount, 375.0, 40.0);
+  std::printf("automatic radius: mean neighbor count %.1f (target 375)\n", meanCount);
+  checks.Near("automatic radius gives about 375 neighbors", meanCount, 375.0, 40.0);
   checks.True("paper fits: no Fitted_Normal (directions tangent to the given normal)",
     pd->GetArray("Fitted_Normal") == nullptr);
 
@@ -404,7 +404,7 @@ void TestSignsAndNormals(Checks& checks)
   checks.Near(
     "sphere k-nearest: mean curvature", meanOf(knn->GetOutput(), "Mean_Curvature"), 0.5, 0.005);
   checks.Near(
-    "sphere k-nearest: neighbour count", meanOf(knn->GetOutput(), "Neighbor_Count"), 300.0, 0.5);
+    "sphere k-nearest: neighbor count", meanOf(knn->GetOutput(), "Neighbor_Count"), 300.0, 0.5);
 
   vtkNew<vtkPrincipalCurvatureEstimation> fixed;
   fixed->SetInputData(cloud);
@@ -573,7 +573,7 @@ void TestBadInput(Checks& checks)
       filter->GetNumberOfUnestimatedPoints(),
       cloud->GetNumberOfPoints());
     checks.Equal("tiny radius: one warning (most points fail)", events.Warnings, 1);
-    checks.Equal("tiny radius: field data says too few neighbours",
+    checks.Equal("tiny radius: field data says too few neighbors",
       FieldCount(filter->GetOutput(), "Unestimated_Too_Few_Neighbors"),
       cloud->GetNumberOfPoints());
   }

@@ -3,29 +3,29 @@
 //
 // Estimate (in contract: finite coordinates, unit normal, s and p > 0; the
 // VTK class drops non-finite points and zero normals before the core):
-// random, coplanar, collinear, coincident, curved and extreme neighbourhoods.
+// random, coplanar, collinear, coincident, curved and extreme neighborhoods.
 // - a valid estimate has finite curvatures, max >= min, unit principal
 //   directions orthogonal to the normal and to each other, 3..16 valid
-//   directions, a finite RMS, at most as many neighbours as were added;
+//   directions, a finite RMS, at most as many neighbors as were added;
 // - the result does not depend on the unit: everything times 2^k gives
 //   curvatures times 2^-k (to 1e-12, bit for bit in exact arithmetic);
-// - reusing an estimator (Begin again) and adding the neighbours in two
+// - reusing an estimator (Begin again) and adding the neighbors in two
 //   calls give bit-identical results.
-// Estimate beyond contract (NaN/Inf neighbours, NaN or zero or non-unit
+// Estimate beyond contract (NaN/Inf neighbors, NaN or zero or non-unit
 // normal, zero/negative/NaN/Inf s and p): no crash, no undefined
-// behaviour, and a result marked valid is still finite with max >= min.
+// behavior, and a result marked valid is still finite with max >= min.
 // Sine fit: valid exactly when the documented rule says (at least three
 // distinct positions of 2 theta, not inside a closed half-turn); a valid fit
 // of an exact sine recovers it.
 // Direction mask: equals the definition's 16-plane test, except within
 // rounding of a plane's boundary.
-// Grid: radius queries and k-th neighbour distances equal a brute-force
+// Grid: radius queries and k-th neighbor distances equal a brute-force
 // scan, for clustered and for widely spread points.
 // Dynamic adjustment: s and p stay finite, positive and bounded.
 // Cloud estimation (first byte 253, which the older checks' inputs never
 // start with): small clouds of any coordinates and normals (NaN and Inf
 // included) with any settings, through the core's cloud-level entry point:
-// no crash, no undefined behaviour; a valid point has finite curvatures
+// no crash, no undefined behavior; a valid point has finite curvatures
 // with max >= min, an invalid one NaN curvatures; the summary's count of
 // unestimated points matches the flags.
 // LAS and PLY files (first bytes 251 and 252): FuzzReaders.cxx.
@@ -136,7 +136,7 @@ bool SameResult(const pcurv::PointCurvature& a, const pcurv::PointCurvature& b)
 /// normal given was not a unit vector (beyond contract).
 void CheckValidResult(const pcurv::PointCurvature& r, const pcurv::Vector3* unitNormal, int added)
 {
-  Require(r.NeighborCount >= 0 && r.NeighborCount <= added, "0 <= neighbour count <= added");
+  Require(r.NeighborCount >= 0 && r.NeighborCount <= added, "0 <= neighbor count <= added");
   if (!r.Valid)
   {
     return;
@@ -267,13 +267,13 @@ void CheckEstimate(Bytes& in)
     Require(SameResult(Estimate(x, n, p, s, neighbors, settings, used), r),
       "a reused estimator gives the fresh result");
   }
-  // Neighbours added in two calls.
+  // Neighbors added in two calls.
   {
     const std::size_t split = added > 0 ? in.Byte() % (added + 1) : 0;
     fresh.Begin(x, n, p, s);
     fresh.AddNeighbors(neighbors.data(), split);
     fresh.AddNeighbors(neighbors.data() + 3 * split, added - split);
-    Require(SameResult(fresh.Estimate(settings), r), "neighbours added in two calls");
+    Require(SameResult(fresh.Estimate(settings), r), "neighbors added in two calls");
   }
   // Everything times 2^k: curvatures times 2^-k, when no value leaves the
   // range of normal doubles.

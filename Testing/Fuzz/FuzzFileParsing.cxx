@@ -1,6 +1,6 @@
 // libFuzzer target on the core's file parsers (text clouds, OFF meshes):
 // any bytes give either an error message or a result that holds together;
-// never a crash, a hang or undefined behaviour. The first byte chooses the
+// never a crash, a hang or undefined behavior. The first byte chooses the
 // parser: even a text cloud (.pts rules when its second bit is set), odd an
 // OFF mesh.
 #include "FileFormats/OffMesh.h"
@@ -37,7 +37,7 @@ void FuzzText(const char* data, std::size_t size, bool pts)
   Require(cloud.Values.size() == cloud.Rows() * cloud.Columns, "whole rows");
   Require(cloud.Rows() >= 1, "at least one point");
   const pcurv::ColumnLayout layout = pcurv::ChooseColumnLayout(cloud, pts);
-  for (const auto* columns : { &layout.Position, &layout.Normal, &layout.Colour })
+  for (const auto* columns : { &layout.Position, &layout.Normal, &layout.Color })
   {
     for (std::size_t column : *columns)
     {

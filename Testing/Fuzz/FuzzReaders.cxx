@@ -1,5 +1,5 @@
 // The LAS and PLY parsers of the core on any bytes, as a file (fmemopen):
-// no crash, no undefined behaviour, no hang, and
+// no crash, no undefined behavior, no hang, and
 // - LAS: a header that is accepted describes points inside the file, and
 //   reading them all then succeeds;
 // - PLY: an accepted header has a vertex element with x, y and z, declares

@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # The real ParaView GUI under Xvfb: load the plugin, open a normals-less
 # .xyz, apply the filter with defaults and show it as a first Apply does,
-# capture the whole screen, and check that it shows as points coloured by
+# capture the whole screen, and check that it shows as points colored by
 # the clipped mean curvature, (by OCR) that the filter's Properties panel is
-# showing, and (by counting colours) that the view shows the coloured cloud.
+# showing, and (by counting colors) that the view shows the colored cloud.
 #   RunGuiTest.sh PARAVIEW PLUGIN CLOUD SCREENSHOT.png
 set -u
 paraview=$1 plugin=$2 cloud=$3 screenshot=$4
@@ -31,19 +31,19 @@ marker=$(cat "$GUI_TEST_MARKER" 2>/dev/null || echo "no marker: the GUI script d
 echo "GUI script: $marker"
 case "$marker" in ok*) ;; *) status=1; tail -n 20 "$work/paraview.log" ;; esac
 # A normals-less .xyz: read by the plugin's reader, normals estimated.
-case "$marker" in *"reader ASCIIPointCloudReader, normals estimated True, coloured by Mean_Curvature_Clipped, representation 'Points'"*) ;;
-  *) echo "FAILED: the .xyz was not read by the plugin's reader with estimated normals and shown as points coloured by Mean_Curvature_Clipped"; status=1 ;; esac
-# The colour range is the clipped array's: symmetric about zero (white is
+case "$marker" in *"reader ASCIIPointCloudReader, normals estimated True, colored by Mean_Curvature_Clipped, representation 'Points'"*) ;;
+  *) echo "FAILED: the .xyz was not read by the plugin's reader with estimated normals and shown as points colored by Mean_Curvature_Clipped"; status=1 ;; esac
+# The color range is the clipped array's: symmetric about zero (white is
 # zero curvature, although this torus's mean curvature is positive
 # everywhere), its end the clip, at most a histogram bin (2^(1/16), 4.4 %)
 # beyond the largest |mean curvature|.
-read -r low high mean_low mean_high <<< "$(sed -n 's/.*colour range \([^ ]*\) \([^,]*\), mean curvature \([^ ]*\) \([^,]*\),.*/\1 \2 \3 \4/p' <<< "$marker")"
+read -r low high mean_low mean_high <<< "$(sed -n 's/.*color range \([^ ]*\) \([^,]*\), mean curvature \([^ ]*\) \([^,]*\),.*/\1 \2 \3 \4/p' <<< "$marker")"
 if awk -v l="$low" -v h="$high" -v ml="$mean_low" -v mh="$mean_high" 'BEGIN {
     m = (mh > -ml) ? mh : -ml; d = l + h; if (d < 0) d = -d
     exit !(h > 0 && d <= 1e-6 * h && h <= 1.05 * m) }'; then
-  echo "colour range $low $high symmetric about zero (mean curvature $mean_low $mean_high)"
+  echo "color range $low $high symmetric about zero (mean curvature $mean_low $mean_high)"
 else
-  echo "FAILED: colour range '$low' '$high' not symmetric about zero (mean curvature '$mean_low' '$mean_high')"
+  echo "FAILED: color range '$low' '$high' not symmetric about zero (mean curvature '$mean_low' '$mean_high')"
   status=1
 fi
 if [ ! -s "$screenshot" ]; then
@@ -74,13 +74,13 @@ else
 fi
 grep -q "PrincipalCurvatures1" <<< "$text" && echo "pipeline browser shows PrincipalCurvatures1" ||
   { echo "FAILED: no PrincipalCurvatures1 in the pipeline browser"; status=1; }
-# The render view (right of the panels): the cloud coloured by curvature
-# shows many colours; an uncoloured or empty view has a handful.
-colours=$(convert "$screenshot" -crop 1000x700+500+150 +repage -unique-colors -format "%w" info: 2>/dev/null || echo 0)
-if [ "${colours:-0}" -gt 50 ]; then
-  echo "render view shows $colours colours"
+# The render view (right of the panels): the cloud colored by curvature
+# shows many colors; an uncolored or empty view has a handful.
+colors=$(convert "$screenshot" -crop 1000x700+500+150 +repage -unique-colors -format "%w" info: 2>/dev/null || echo 0)
+if [ "${colors:-0}" -gt 50 ]; then
+  echo "render view shows $colors colors"
 else
-  echo "FAILED: the render view shows $colours colours (no coloured cloud?)"
+  echo "FAILED: the render view shows $colors colors (no colored cloud?)"
   status=1
 fi
 echo "screenshot: $screenshot"

@@ -4,9 +4,9 @@ RunColorMapTest.sh: one session, three tori of very different scales
 written as text clouds with normals and opened as File > Open would
 (OpenDataFile), each applied Principal Curvatures and shown as the GUI's
 Apply shows a new output: Show (the same pipeline controller), then every
-colour map's range updated from the visible data as pqApplyBehavior does
+color map's range updated from the visible data as pqApplyBehavior does
 (by default growing it), side by side in three views. Writes
-GUI_TEST_MARKER: for each cloud the range of its display's colour map and
+GUI_TEST_MARKER: for each cloud the range of its display's color map and
 of its Mean_Curvature_Clipped."""
 
 import os
@@ -22,7 +22,7 @@ work = os.environ["GUI_TEST_WORK"]
 def write_torus(path, scale, count=20000, seed=5):
     """A torus (radii 1.5 and 1, times `scale`) with its exact outward normals: its
     mean curvature is negative on the inner side (the ring radius is below twice
-    the tube's), so a map centred on zero shows both of its ends."""
+    the tube's), so a map centered on zero shows both of its ends."""
     generator = numpy.random.default_rng(seed)
     u, v = generator.uniform(0.0, 2.0 * numpy.pi, (2, count))
     ring = 1.5 + numpy.cos(v)
@@ -63,11 +63,11 @@ try:
         vtkSMTransferFunctionManager().ResetAllTransferFunctionRangesUsingCurrentData(
             servermanager.ProxyManager().SMProxyManager, False)
         simple.Render(view)
-        colour_map = display.LookupTable
-        points = colour_map.RGBPoints
+        color_map = display.LookupTable
+        points = color_map.RGBPoints
         clipped = servermanager.Fetch(curvatures).GetPointData().GetArray("Mean_Curvature_Clipped").GetRange()
-        lines.append("cloud %s scale %g coloured by %s map %s range %.9g %.9g data %.9g %.9g"
-                     % (name, scale, display.ColorArrayName[1], colour_map.GetXMLName() and colour_map.SMProxy.GetGlobalIDAsString(),
+        lines.append("cloud %s scale %g colored by %s map %s range %.9g %.9g data %.9g %.9g"
+                     % (name, scale, display.ColorArrayName[1], color_map.GetXMLName() and color_map.SMProxy.GetGlobalIDAsString(),
                         points[0], points[-4], clipped[0], clipped[1]))
     with open(marker, "w") as handle:
         handle.write("ok\n" + "\n".join(lines) + "\n")

@@ -2,7 +2,7 @@
 opens a cloud as File > Open would (OpenDataFile: a normals-less .xyz goes
 to the plugin's text reader), applies Principal Curvatures with its
 defaults (the normals are estimated), shows it as a first Apply does (no
-representation, point size or colouring set here), and writes a marker
+representation, point size or coloring set here), and writes a marker
 file with what it found (read by RunGuiTest.sh)."""
 
 import os
@@ -23,11 +23,11 @@ try:
     display = Show(curvatures, view)
     Hide(cloud, view)
     # No ColorBy, no representation, no rescaling: the plugin's hint makes
-    # it Points, and the active scalars (Mean_Curvature_Clipped) colour it
+    # it Points, and the active scalars (Mean_Curvature_Clipped) color it
     # over their robust range.
-    coloured_by = list(display.ColorArrayName)
+    colored_by = list(display.ColorArrayName)
     lookup = display.LookupTable  # the display's own (the plugin's GUI part)
-    colour_range = (lookup.RGBPoints[0], lookup.RGBPoints[-4])
+    color_range = (lookup.RGBPoints[0], lookup.RGBPoints[-4])
     display.SetScalarBarVisibility(view, True)
     view.CameraPosition = [6, -9, 8]
     view.CameraViewUp = [0, 0, 1]
@@ -38,10 +38,10 @@ try:
     valid = output.GetPointData().GetArray("Curvature_Valid").GetRange()
     estimated = output.GetPointData().GetNormals() is not None
     with open(marker, "w") as handle:
-        handle.write("ok reader %s, normals estimated %s, coloured by %s, representation %s, point size %g, "
-                     "colour range %g %g, mean curvature %g %g, valid %g %g\n"
-                     % (cloud.GetXMLName(), estimated, coloured_by[-1], display.Representation,
-                        display.PointSize, colour_range[0], colour_range[1], mean[0], mean[1], valid[0], valid[1]))
+        handle.write("ok reader %s, normals estimated %s, colored by %s, representation %s, point size %g, "
+                     "color range %g %g, mean curvature %g %g, valid %g %g\n"
+                     % (cloud.GetXMLName(), estimated, colored_by[-1], display.Representation,
+                        display.PointSize, color_range[0], color_range[1], mean[0], mean[1], valid[0], valid[1]))
 except Exception as error:  # report to the driver instead of a silent GUI
     with open(marker, "w") as handle:
         handle.write("error %s\n" % error)

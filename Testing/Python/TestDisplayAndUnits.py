@@ -1,8 +1,8 @@
-"""What the output says about its colours and its scale:
+"""What the output says about its colors and its scale:
 
     pvpython TestDisplayAndUnits.py PLUGIN.so TORUS.xyz TOOL.py FOLDER
 
-* Mean_Curvature_Clipped, the active scalars ParaView colours a new display
+* Mean_Curvature_Clipped, the active scalars ParaView colors a new display
   by over their range, reports a range symmetric about zero (so that white
   is zero) on a torus, whose mean curvature is positive everywhere (only
   one tail is clipped);

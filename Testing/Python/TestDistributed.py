@@ -14,11 +14,11 @@ adjustment are both checked: max |k - k_serial| / max |k| below 1e-12, and
 the same points unestimated. A noisy cloud checks the default's shared fits
 (anchors from other ranks' parts among them) and, its normals being exact,
 its fits of the fourth order; a clean one (last argument --clean) its
-height jets (neighbours from other ranks' parts among them); one with its
+height jets (neighbors from other ranks' parts among them); one with its
 positions rounded to a grid (--rounded) the lattice every rank must find
 the same from its own part; a noisy sphere whose normals are tilted at
 random (--tilted), as estimated normals are off, the longer ladder (nine
-radii, past 3,000 neighbours) such normals get, and its wider halo.
+radii, past 3,000 neighbors) such normals get, and its wider halo.
 """
 
 import sys
@@ -37,7 +37,7 @@ VARIANTS = {"fixed": {}, "dva": {"DynamicAdjustment": 1}}
 
 def variants_of(kind):
     """The variants run on a cloud: with tilted normals also every point
-    fitting its own neighbourhood, whose largest radius the halo alone must
+    fitting its own neighborhood, whose largest radius the halo alone must
     reach (shared fits widen it by the anchors' cells)."""
     if kind == "--tilted":
         return dict(VARIANTS, unshared={"ShareFits": 0})
@@ -206,7 +206,7 @@ def main(plugin, cloud, action, prefix, kind="--noisy"):
                 if read_field_value(output, "Fourth_Order_Fits") != 0:
                     failures.append("%s: fourth-order fits with tilted normals" % label)
                 if not largest > 3000:
-                    failures.append("%s: no point past eight radii (%d neighbours)" % (label, largest))
+                    failures.append("%s: no point past eight radii (%d neighbors)" % (label, largest))
     for failure in failures:
         print("FAILED " + failure)
     print("%d failed" % len(failures))

@@ -4,10 +4,10 @@
 
 * a sphere of radius 2 with points only: PrincipalCurvatures(Input=...) with
   defaults estimates the normals (output array Normals, outward), and gives
-  k = +1/2 at every point; paraview.simple.Show shows it as points coloured
+  k = +1/2 at every point; paraview.simple.Show shows it as points colored
   by Mean_Curvature_Clipped;
-* the same sphere with colours (unsigned char RGB, the first 3-component
-  array, which the Normals property picks by default): the colours are not
+* the same sphere with colors (unsigned char RGB, the first 3-component
+  array, which the Normals property picks by default): the colors are not
   used, the normals are estimated; with Normals Source 'Input Array' the
   filter fails and says how to estimate normals instead;
 * Point Cloud Normals on the sphere: unit, outward, within a degree of the
@@ -71,10 +71,10 @@ points, exact = sphere()
 bare = cloud(points)
 shown = PrincipalCurvatures(Input=bare)  # noqa: F821 (from LoadPlugin)
 result = fetch(shown)
-# paraview.simple.Show as a first Apply: points, coloured by the display array.
+# paraview.simple.Show as a first Apply: points, colored by the display array.
 display = simple.Show(shown)
 check(display.Representation == "Points" and list(display.ColorArrayName)[-1] == "Mean_Curvature_Clipped",
-      "Show: Points, coloured by Mean_Curvature_Clipped (%s, %s)"
+      "Show: Points, colored by Mean_Curvature_Clipped (%s, %s)"
       % (display.Representation, list(display.ColorArrayName)))
 simple.Hide(shown)
 normals = array(result, "Normals")
@@ -87,24 +87,24 @@ check(kmin is not None and numpy.all(numpy.isfinite(kmin)), "points only: every 
 check(kmin is not None and abs(numpy.mean(kmin) - 0.5) < 0.01 and abs(numpy.mean(kmax) - 0.5) < 0.01,
       "points only: k_min = k_max = +1/2 (%.4f, %.4f)" % (numpy.mean(kmin), numpy.mean(kmax)))
 
-# Colours only.
+# Colors only.
 rgb = ((points - points.min(axis=0)) / numpy.ptp(points, axis=0) * 255).astype(numpy.uint8)
-coloured = cloud(points, [("RGB", rgb)])
-curvatures = PrincipalCurvatures(Input=coloured)  # noqa: F821
+colored = cloud(points, [("RGB", rgb)])
+curvatures = PrincipalCurvatures(Input=colored)  # noqa: F821
 # The panel's entry for no array comes first, so ParaView no longer picks
 # the first 3-component array (RGB) by default; chosen by hand, RGB is
 # still not taken for normals.
 check(list(curvatures.Normals)[-1] == "None (automatic)",
-      "colours: the Normals property defaults to 'None (automatic)', not RGB (%s)" % list(curvatures.Normals))
+      "colors: the Normals property defaults to 'None (automatic)', not RGB (%s)" % list(curvatures.Normals))
 curvatures.Normals = ["POINTS", "RGB"]
 result = fetch(curvatures)
 kmean = array(result, "Mean_Curvature")
 check(kmean is not None and abs(numpy.nanmean(kmean) - 0.5) < 0.01 and numpy.all(numpy.isfinite(kmean)),
-      "colours: not used as normals; normals estimated, k = +1/2 everywhere")
-strict = PrincipalCurvatures(Input=coloured, NormalsSource="Input Array")  # noqa: F821
+      "colors: not used as normals; normals estimated, k = +1/2 everywhere")
+strict = PrincipalCurvatures(Input=colored, NormalsSource="Input Array")  # noqa: F821
 strict.Normals = ["POINTS", "RGB"]
 result = fetch(strict)
-check(result.GetNumberOfPoints() == 0, "colours as 'Input Array': the filter fails (empty output)")
+check(result.GetNumberOfPoints() == 0, "colors as 'Input Array': the filter fails (empty output)")
 
 # The normals filter alone.
 normals_filter = PointCloudNormals(Input=bare)  # noqa: F821
@@ -118,7 +118,7 @@ check(numpy.all(dots > 0.0), "Point Cloud Normals: outward")
 check(numpy.median(angles) < 1.0, "Point Cloud Normals: median angle %.3f degrees < 1" % numpy.median(angles))
 inward = fetch(PointCloudNormals(Input=bare, Orientation="Towards Viewpoint", Viewpoint=[0.0, 0.0, 0.0]))  # noqa: F821
 check(numpy.all(numpy.sum(array(inward, "Normals") * exact, axis=1) < 0.0),
-      "Point Cloud Normals towards the centre: all inward")
+      "Point Cloud Normals towards the center: all inward")
 
 # All-zero normals.
 zero = cloud(points, [("Normals", numpy.zeros_like(points))])

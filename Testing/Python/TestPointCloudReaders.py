@@ -44,7 +44,7 @@ from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
 
 from test_checks import check, failures  # noqa: E402 (the tests' folder is on sys.path)
 
-CENTRE = numpy.array([596700.0, 243650.0, 80.0])
+CENTER = numpy.array([596700.0, 243650.0, 80.0])
 RADIUS = 2.0
 
 
@@ -55,7 +55,7 @@ def sphere(count):
     phi = i * math.pi * (3.0 - math.sqrt(5.0))
     r = numpy.sqrt(1.0 - z * z)
     normals = numpy.column_stack([r * numpy.cos(phi), r * numpy.sin(phi), z])
-    return CENTRE + RADIUS * normals, normals
+    return CENTER + RADIUS * normals, normals
 
 
 def write_ply(path, points, normals):
@@ -75,9 +75,9 @@ def write_ply(path, points, normals):
 
 
 def write_las(path, points, scale=1e-4, compressed=False):
-    """LAS 1.4, point format 7 (RGB), offset the sphere's centre."""
+    """LAS 1.4, point format 7 (RGB), offset the sphere's center."""
     count = len(points)
-    offset = CENTRE
+    offset = CENTER
     integers = numpy.round((points - offset) / scale).astype("<i4")
     record = numpy.zeros(count, dtype=[("xyz", "<i4", 3), ("intensity", "<u2"), ("returns", "u1"),
                                        ("flags", "u1"), ("class", "u1"), ("user", "u1"), ("angle", "<i2"),
@@ -195,8 +195,8 @@ def check_las(folder, pvpython, script, plugin):
 
 
 def check_bad_files(folder, pvpython, script, plugin):
-    colours = os.path.join(folder, "colours_only.ply")
-    with open(colours, "w") as handle:
+    colors = os.path.join(folder, "colors_only.ply")
+    with open(colors, "w") as handle:
         handle.write("ply\nformat ascii 1.0\nelement vertex 2\nproperty uchar red\nproperty uchar green\n"
                      "property uchar blue\nend_header\n1 2 3\n4 5 6\n")
     laz = os.path.join(folder, "compressed.laz")
@@ -204,7 +204,7 @@ def check_bad_files(folder, pvpython, script, plugin):
     # The tool's reading (open_cloud) in this process: it exits with status
     # 2 and the message on stderr.
     tool = load_tool(script)
-    for path, expected in ((colours, "the vertex element has no x, y, z properties (it has: red green blue)"),
+    for path, expected in ((colors, "the vertex element has no x, y, z properties (it has: red green blue)"),
                            (laz, "the file is LAZ-compressed")):
         stderr, sys.stderr = sys.stderr, io.StringIO()
         try:

@@ -16,7 +16,7 @@
   after the request, and not at all in a serial stage), with no output. A
   request is made only while the run is short of its end (progress below
   1); one that missed its stage (a serial stage ended before it, or was too
-  short to be recognised) is checked the same way, then made again, up to
+  short to be recognized) is checked the same way, then made again, up to
   three runs;
 * Point Cloud Normals on a 2M-point torus (the normals alone are too quick
   on 600k for ten updates): progress on the main thread too.
@@ -189,14 +189,14 @@ def check_abort(stage, log_options, source, attempts=3):
         aborted.UpdatePipeline()
         run = "Abort in the %s (run %d)" % (stage, attempt)
         requested = abort_log.abort_time is not None
-        honoured = True
+        honored = True
         if requested:
-            honoured = check(aborted.GetDataInformation().GetNumberOfPoints() == 0,
+            honored = check(aborted.GetDataInformation().GetNumberOfPoints() == 0,
                              "%s, requested at progress %.3f: no output" % (run, abort_log.abort_value))
         check(abort_log.on_main_thread(), "%s: progress on the main thread" % run)
         in_stage = abort_log.stopped_in_stage()
         simple.Delete(aborted)
-        if in_stage or not honoured:
+        if in_stage or not honored:
             break
         missed = "stopped after the stage" if requested else "no request before the end"
         print("       %s: %s%s" % (run, missed, "; again" if attempt < attempts else ""))

@@ -8,14 +8,14 @@ PLUGIN.so is loaded with LoadPlugin; with --autoload the plugin must already
 be loaded (PV_PLUGIN_CONFIG_FILE). CLOUDS_DIR holds torus.xyz (6 columns,
 from GenerateAnalyticCloud). With PVPYTHON and CLI_SCRIPT
 (Scripts/estimate_curvatures.py) the tool is run on a copy of torus.xyz to
-.ply and .csv outputs, on a copy with colours to .ply, and on a 3-column file (which must either work or
+.ply and .csv outputs, on a copy with colors to .ply, and on a 3-column file (which must either work or
 exit with status 2 and a message, never crash).
 
 The reader checks write small files into a temporary folder and read them
 with OpenDataFile (the reader factory must choose this reader for .xyz .pwn
 .txt .pts: ParaView also offers PLOT3D and the molecule reader for .xyz, the
 CSV reader for .txt, its PTS reader for .pts): 3 columns with comments and
-blank lines, 6 columns (Normals), 6 columns and colours (Normals, RGB), a PTS
+blank lines, 6 columns (Normals), 6 columns and colors (Normals, RGB), a PTS
 file with its count line (Intensity, RGB), comma and semicolon separated
 files, a header of names, CRLF line ends, number syntax, pieces, and bad
 files (a non-numeric word, a line with another column count, too few
@@ -125,7 +125,7 @@ def check_rgb(cloud, expected, label):
     check(rgb is not None and rgb.GetDataType() == VTK_UNSIGNED_CHAR and rgb.GetNumberOfComponents() == 3,
           "%s: RGB unsigned char, 3 components" % label)
     if rgb is not None:
-        check(vtk_to_numpy(rgb).tolist() == expected, "%s: colours %s" % (label, vtk_to_numpy(rgb).tolist()))
+        check(vtk_to_numpy(rgb).tolist() == expected, "%s: colors %s" % (label, vtk_to_numpy(rgb).tolist()))
         scalars = cloud.GetPointData().GetScalars()
         check(scalars is not None and scalars.GetName() == "RGB", "%s: RGB is the scalars attribute" % label)
 
@@ -155,14 +155,14 @@ def check_reader(folder):
                        [[0, 0, 1], [1, 0, 0], [0, 2, 0]], ["Normals"], "6 columns")
     check_normals(cloud, [[0, 0, 1], [1, 0, 0], [0, -1, 0]], "6 columns")
 
-    cloud = check_read(folder, "colour.xyz", "1 2 3 0 0 1 255 0 10\n4 5 6 0 1 0 0 128 255\n",
+    cloud = check_read(folder, "color.xyz", "1 2 3 0 0 1 255 0 10\n4 5 6 0 1 0 0 128 255\n",
                        [[1, 2, 3], [4, 5, 6]], ["Normals", "RGB"], "6 columns + RGB")
     check_normals(cloud, [[0, 0, 1], [0, 1, 0]], "6 columns + RGB")
     check_rgb(cloud, [[255, 0, 10], [0, 128, 255]], "6 columns + RGB")
 
     cloud = check_read(folder, "rgb.xyz", "1 2 3 255 0 10\n4 5 6 0 128 255\n",
                        [[1, 2, 3], [4, 5, 6]], ["RGB"], "x y z r g b")
-    check(cloud.GetPointData().GetNormals() is None, "x y z r g b: colours, not normals")
+    check(cloud.GetPointData().GetNormals() is None, "x y z r g b: colors, not normals")
     check_rgb(cloud, [[255, 0, 10], [0, 128, 255]], "x y z r g b")
     cloud = check_read(folder, "axes.xyz", "1 2 3 0 0 1\n4 5 6 1 0 0\n",
                        [[1, 2, 3], [4, 5, 6]], ["Normals"], "axis-aligned normals (0 and 1)")
@@ -347,20 +347,20 @@ def check_command_line(folder, clouds, pvpython, script, plugin, rows):
             check(all(len(v) == len(names) for v in values), "csv: every row has %d values" % len(names))
             check([v[:6] for v in values] == rows, "csv: x y z nx ny nz are the input's, exactly")
 
-    # Colours (x y z nx ny nz r g b) go to the PLY file as red green blue.
-    coloured = write(folder, "coloured.xyz", "".join("%r %r %r %r %r %r %d %d %d\n" % (
+    # Colors (x y z nx ny nz r g b) go to the PLY file as red green blue.
+    colored = write(folder, "colored.xyz", "".join("%r %r %r %r %r %r %d %d %d\n" % (
         tuple(row) + (i % 256, (7 * i) % 256, 255)) for i, row in enumerate(rows)))
-    output = os.path.join(folder, "coloured.ply")
-    run = subprocess.run([pvpython, script] + plugin_arguments + [coloured, output],
+    output = os.path.join(folder, "colored.ply")
+    run = subprocess.run([pvpython, script] + plugin_arguments + [colored, output],
                          stdout=subprocess.PIPE, stderr=subprocess.STDOUT, universal_newlines=True)
-    check(run.returncode == 0, "command line with colours: exit %d" % run.returncode)
+    check(run.returncode == 0, "command line with colors: exit %d" % run.returncode)
     if os.path.isfile(output):
         header, names, records, rest = read_ply(output)
         check(all("property uchar %s" % c in header for c in ("red", "green", "blue")),
-              "ply: colours as uchar red green blue")
+              "ply: colors as uchar red green blue")
         red, green = names.index("red"), names.index("green")
         check(all(r[red] == i % 256 and r[green] == (7 * i) % 256 for i, r in enumerate(records)),
-              "ply: colour values are the input's")
+              "ply: color values are the input's")
 
     three = write(folder, "three_columns.xyz", "".join("%r %r %r\n" % tuple(row[:3]) for row in rows[:2000]))
     output = os.path.join(folder, "three_columns.ply")
@@ -381,14 +381,14 @@ def check_command_line(folder, clouds, pvpython, script, plugin, rows):
               "3 columns: outward normals, positive mean curvature at %d of %d points"
               % (sum(1 for m in estimated if m > 0), len(estimated)))
 
-    # x y z r g b: the colours are colours, never normals.
+    # x y z r g b: the colors are colors, never normals.
     rgb_only = write(folder, "rgb_only.xyz", "".join("%r %r %r %d %d %d\n" % (
         tuple(row[:3]) + (i % 256, (7 * i) % 256, 200)) for i, row in enumerate(rows[:2000])))
     output = os.path.join(folder, "rgb_only.ply")
     run = subprocess.run([pvpython, script] + plugin_arguments + [rgb_only, output],
                          stdout=subprocess.PIPE, stderr=subprocess.STDOUT, universal_newlines=True)
     check(run.returncode == 0 and "estimated (outward)" in run.stdout,
-          "x y z r g b: colours not taken for normals, normals estimated (exit %d)" % run.returncode)
+          "x y z r g b: colors not taken for normals, normals estimated (exit %d)" % run.returncode)
     run = subprocess.run([pvpython, script] + plugin_arguments + ["--normals", "RGB", rgb_only, output],
                          stdout=subprocess.PIPE, stderr=subprocess.STDOUT, universal_newlines=True)
     check(run.returncode != 0 and "To estimate normals instead" in run.stdout,
@@ -399,7 +399,7 @@ def check_command_line_bad_files(folder, pvpython, script, plugin):
     """The tool reads text through the same reader: each bad file exits with
     status 2 and the reader's message (file and line) on stderr; NaN
     coordinates are kept with the same warning. Its stderr, piped, is plain
-    text: no terminal colour codes, no VTK log prefixes."""
+    text: no terminal color codes, no VTK log prefixes."""
     plugin_arguments = ["--plugin", plugin] if plugin else []
     output = os.path.join(folder, "bad_out.vtp")
     bad = (("cli_empty.xyz", "", "cli_empty.xyz: the file is empty"),
@@ -420,7 +420,7 @@ def check_command_line_bad_files(folder, pvpython, script, plugin):
           % path in run.stderr and "bad coordinate" in run.stdout,
           "command line on NaN coordinates: kept, one warning, counted (exit %d, %s)"
           % (run.returncode, run.stderr.strip().splitlines()[:1]))
-    check("\x1b[" not in run.stderr, "command line, piped: no terminal colour codes on stderr")
+    check("\x1b[" not in run.stderr, "command line, piped: no terminal color codes on stderr")
     check(re.search(r"\(\s*[0-9.]+s\) \[", run.stderr) is None and "ERROR: In" not in run.stderr,
           "command line, piped: no VTK log prefixes on stderr (%s)" % run.stderr.strip().splitlines()[:1])
 

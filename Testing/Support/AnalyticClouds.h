@@ -83,7 +83,7 @@ inline vtkSmartPointer<vtkPolyData> MakeCloud(const std::vector<SurfaceSample>& 
 }
 
 /// Errors of an estimate against the exact values, over the points whose
-/// neighbourhood lies inside the surface (boundary distance above the
+/// neighborhood lies inside the surface (boundary distance above the
 /// surroundings-threshold used there).
 struct CurvatureErrors
 {

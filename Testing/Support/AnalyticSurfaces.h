@@ -3,7 +3,7 @@
  * @brief Point clouds on surfaces with exact normals, principal curvatures
  * and principal directions, for tests, the demo and the benchmarks. No VTK.
  *
- * Each surface is a parametrisation X(u, v) with analytic first and second
+ * Each surface is a parametrization X(u, v) with analytic first and second
  * derivatives; the exact curvatures follow from the two fundamental forms.
  * Sign convention as the filter's output: positive where the surface bends
  * away from the normal (sphere with outward normals: +1/R).
@@ -71,7 +71,7 @@ private:
   std::mt19937_64 Engine;
 };
 
-/// Position and derivatives of a parametrisation at (u, v).
+/// Position and derivatives of a parametrization at (u, v).
 struct Jet
 {
   Vec X, Xu, Xv, Xuu, Xuv, Xvv;
@@ -88,7 +88,7 @@ struct SurfaceSample
   double BoundaryDistance; // distance to the patch's edge (infinity if closed)
 };
 
-/// A parametrised surface patch [u0,u1] x [v0,v1].
+/// A parametrized surface patch [u0,u1] x [v0,v1].
 struct Surface
 {
   std::string Name;
@@ -198,7 +198,7 @@ inline Surface Sphere(double r)
     j.Xvv = { { -r * cu * sv, -r * su * sv, -r * cv } };
     return j;
   };
-  s.OutwardFlip = true; // X_u x X_v points inward for this parametrisation
+  s.OutwardFlip = true; // X_u x X_v points inward for this parametrization
   return s;
 }
 
