@@ -33,13 +33,6 @@ struct OffMesh
 /// what is wrong ("line N: ...").
 std::string ParseOffMesh(const char* data, std::size_t size, OffMesh& mesh);
 
-/**
- * Whether most normals point towards the centroid of the points (the median
- * of (p - centroid) . n is negative): a closed, roughly star-shaped mesh
- * whose faces are ordered clockwise. n points and normals, 3 values each.
- */
-bool NormalsMostlyInward(const double* points, const double* normals, std::size_t n);
-
 } // namespace pcurv
 
 #endif

@@ -1,7 +1,9 @@
 #include "vtkPointCloudNormalEstimation.h"
 
 #include "Estimation/CloudEstimation.h"
-#include "PrincipalCurvatureCloud.h"
+#include "CloudData.h"
+#include "ControllerCollectives.h"
+#include "FilterProgress.h"
 
 #include "vtkDoubleArray.h"
 #include "vtkInformation.h"

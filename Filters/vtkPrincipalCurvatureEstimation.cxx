@@ -4,7 +4,9 @@
 #include "CurvatureArrays.h"
 #include "EstimationReport.h"
 #include "NormalsChoice.h"
-#include "PrincipalCurvatureCloud.h"
+#include "CloudData.h"
+#include "ControllerCollectives.h"
+#include "FilterProgress.h"
 
 #include "vtkDataArray.h"
 #include "vtkDataSetAttributes.h"

@@ -13,6 +13,7 @@
 #include "vtkPolyData.h"
 #include "vtkPolyDataNormals.h"
 
+#include "FileFormats/MeshOrientation.h"
 #include "FileFormats/OffMesh.h"
 #include "PointCloudReaderSupport.h"
 

@@ -338,7 +338,9 @@ def read_off_mesh(path):
 
 def with_outward_normals(mesh):
     """The polydata mesh with point normals computed from its polygons,
-    made consistent, and turned to point away from the centroid."""
+    made consistent, and turned to point away from the centroid: the OFF
+    Mesh Reader's rule (FileFormats/MeshOrientation.h), for the OBJ meshes
+    it does not read; TestCommandLineMeshes checks that both agree."""
     import numpy
     from vtkmodules.numpy_interface import dataset_adapter
     from vtkmodules.vtkFiltersCore import vtkPolyDataNormals

@@ -2,6 +2,7 @@
 // bad input with its message, the column layout, the NaN policy, and the
 // tests that tell other formats sharing the .xyz extension apart. Fast and
 // small, so that the sanitizer builds run it too.
+#include "FileFormats/MeshOrientation.h"
 #include "FileFormats/OffMesh.h"
 #include "TestChecks.h"
 #include "FileFormats/TextPointCloud.h"

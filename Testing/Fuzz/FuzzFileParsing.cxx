@@ -3,6 +3,7 @@
 // never a crash, a hang or undefined behavior. The first byte chooses the
 // parser: even a text cloud (.pts rules when its second bit is set), odd an
 // OFF mesh.
+#include "FileFormats/MeshOrientation.h"
 #include "FileFormats/OffMesh.h"
 #include "FileFormats/TextPointCloud.h"
 

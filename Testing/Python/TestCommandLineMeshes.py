@@ -104,8 +104,43 @@ def main(tool, plugin, folder):
     check(done.returncode == 2 and "empty.obj: no vertices" in done.stderr,
           "OBJ without vertices: exit %d, %s" % (done.returncode, done.stderr.strip().splitlines()[-1:]))
     check_off(tool, plugin, folder, points, polys)
+    check_same_orientation(tool, plugin, folder, points, polys)
     print("%d failed" % len(failures))
     return 1 if failures else 0
+
+
+def output_normals(path):
+    reader = vtkXMLPolyDataReader()
+    reader.SetFileName(path)
+    reader.Update()
+    return vtk_to_numpy(reader.GetOutput().GetPointData().GetArray("Normals"))
+
+
+def check_same_orientation(tool, plugin, folder, points, polys):
+    """The same mesh, faces clockwise (normals from them point inward), as
+    OBJ (the tool turns them) and as OFF (the OFF Mesh Reader turns them):
+    the same outward normals, so that the rule is the same in both."""
+    inward = polys[:, ::-1]
+    obj = os.path.join(folder, "inward.obj")
+    with open(obj, "w") as handle:
+        handle.writelines("v %.17g %.17g %.17g\n" % tuple(p) for p in points)
+        handle.writelines("f %d %d %d\n" % tuple(t + 1) for t in inward)
+    off = os.path.join(folder, "inward.off")
+    with open(off, "w") as handle:
+        handle.write("OFF\n%d %d 0\n" % (len(points), len(inward)))
+        handle.writelines("%.17g %.17g %.17g\n" % tuple(p) for p in points)
+        handle.writelines("3 %d %d %d\n" % tuple(t) for t in inward)
+    outputs = [os.path.join(folder, "inward_obj.vtp"), os.path.join(folder, "inward_off.vtp")]
+    done = [run(tool, plugin, path, output) for path, output in zip((obj, off), outputs)]
+    if not check(all(d.returncode == 0 for d in done), "inward-wound OBJ and OFF: exit %s"
+                 % [d.returncode for d in done]):
+        return
+    from_obj, from_off = (output_normals(path) for path in outputs)
+    outward = float(numpy.median(numpy.sum(points * from_obj, axis=1) / numpy.linalg.norm(points, axis=1)))
+    check(outward > 0.9, "inward-wound OBJ: normals turned outward (median n . x / |x| %.3f)" % outward)
+    check(from_obj.shape == from_off.shape and numpy.allclose(from_obj, from_off, atol=1e-6),
+          "inward-wound mesh: the tool's OBJ normals equal the OFF Mesh Reader's (largest difference %.2g)"
+          % (numpy.abs(from_obj - from_off).max() if from_obj.shape == from_off.shape else float("inf")))
 
 
 def open_with_errors(path):

@@ -1,17 +1,14 @@
 /**
- * @file PrincipalCurvatureCloud.h
- * @brief The VTK side of the core's cloud (private to the module): reading a
- * vtkPointSet and its normals into pcurv::CloudPoints, the collectives of a
- * parallel run implemented with vtkMultiProcessController, and the core's
- * work run on vtkSMPTools threads.
+ * @file FilterProgress.h
+ * @brief How the core's threads run under VTK and report to ParaView
+ * (private to the module): vtkSMPTools threads, progress passed to the
+ * filter's thread with the time left, and the filter's abort flag.
  */
-#ifndef PrincipalCurvatureCloud_h
-#define PrincipalCurvatureCloud_h
+#ifndef FilterProgress_h
+#define FilterProgress_h
 
-#include "Cloud/Collectives.h"
 #include "Common/Progress.h"
 #include "Common/WorkRunner.h"
-#include "Cloud/CloudPoints.h"
 
 #include <atomic>
 #include <chrono>
@@ -20,61 +17,9 @@
 #include <utility>
 
 class vtkAlgorithm;
-class vtkDataArray;
-class vtkMultiProcessController;
-class vtkPointSet;
-class vtkPolyData;
 
 namespace pcurv
 {
-
-/// The input's points and normals (non-unit normals normalized; zero or
-/// non-finite ones become zero: such points are not estimated). Without
-/// normals (null) every normal is zero, for the core to estimate.
-CloudPoints ReadCloud(vtkPointSet* input, vtkDataArray* normals);
-
-/// The global controller's processes when ParaView runs in parallel (more
-/// than one process); a single process otherwise.
-class ControllerCollectives : public Collectives
-{
-public:
-  ControllerCollectives();
-  bool IsDistributed() const override { return this->Controller != nullptr; }
-  int GetNumberOfProcesses() const override;
-  int GetLocalProcessId() const override;
-
-  std::int64_t Sum(std::int64_t value) const override;
-  void Sum(std::vector<std::int64_t>& values) const override;
-  double Max(double value) const override;
-  int Min(int value) const override;
-  void Bounds(double lower[3], double upper[3]) const override;
-  std::vector<double> Gather(const std::vector<double>& values,
-    std::vector<std::int64_t>* lengths = nullptr) const override;
-
-private:
-  vtkMultiProcessController* Controller = nullptr;
-};
-
-/// The output's geometry: the input's points, its point data and, for a
-/// vtkPolyData with cells, its cells; otherwise one vertex cell per point,
-/// so that a cloud shows in a render view.
-void CopyGeometry(vtkPointSet* input, vtkPolyData* output);
-
-/// What the curvature arrays are measured in, as ParaView shows it (the
-/// Information panel lists field data): the string array Curvature_Unit,
-/// "1/length unit of the input coordinates".
-void AddCurvatureUnit(vtkPolyData* output);
-
-/**
- * The range that VTK reports for `array` (and ParaView colors a new
- * display over), set to [-clip, clip]: symmetric about zero, so that a
- * diverging color map's middle (white in Cool to Warm) is zero even where
- * only one tail was clipped (a torus's mean curvature is positive
- * everywhere, and its clipped array's own range put white at +0.31). VTK
- * keeps the range in the array's information and forgets it when the array
- * is modified. Nothing is set for a clip that is zero or not finite.
- */
-void SetSymmetricRange(vtkDataArray* array, double clip);
 
 /// "Principal curvatures: about 2 min left": `label` and the time left if
 /// the rest goes at the pace so far (`elapsedSeconds` since the start, the
