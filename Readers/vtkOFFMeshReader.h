@@ -9,7 +9,7 @@
  * consistent, no splitting) and turned to point away from the centroid when
  * most pointed towards it, for a closed, roughly star-shaped scan such as
  * the Stanford bunny: the same normals the command-line tool
- * Scripts/estimate_curvatures.py gives an .off input, which it reads with
+ * Tools/estimate_curvatures.py gives an .off input, which it reads with
  * this reader. A file without faces gives its vertices, one vertex cell
  * each, and no normals (the curvature filter then estimates them).
  *

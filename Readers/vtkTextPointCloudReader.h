@@ -17,7 +17,7 @@
  *   skipped (PTS files that concatenate scans repeat it).
  * - The first remaining line may be a header of column names (it is one when
  *   its first word is not a number), as the command-line tool
- *   Scripts/estimate_curvatures.py has always accepted.
+ *   Tools/estimate_curvatures.py has always accepted.
  * - Every other line must hold the same number of numbers, at least 3.
  *
  * Columns (the rules the command-line tool applied before it used this

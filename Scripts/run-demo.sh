@@ -17,4 +17,4 @@ fi
 if [ "$input" = "Data/torus.vtp" ] && [ ! -f "$input" ]; then
   ./build/bin/GenerateAnalyticCloud torus 200000 "$input" 1
 fi
-pvpython Scripts/estimate_curvatures.py "$input" "$output" "$@"
+pvpython Tools/estimate_curvatures.py "$input" "$output" "$@"

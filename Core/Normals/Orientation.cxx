@@ -218,18 +218,19 @@ bool OrientOutward(PlaneFits& fits,
   return true;
 }
 
-template bool OrientOutward<std::int32_t>(PlaneFits& fits,
-  const OrderedCloud& ordered,
-  WorkRunner& runner,
-  std::vector<double>& normals,
-  NormalSummary& summary,
-  StageProgress* progress);
-template bool OrientOutward<std::int64_t>(PlaneFits& fits,
-  const OrderedCloud& ordered,
-  WorkRunner& runner,
-  std::vector<double>& normals,
-  NormalSummary& summary,
-  StageProgress* progress);
+// The two widths of positions EstimateNormals uses.
+template bool OrientOutward<std::int32_t>(PlaneFits&,
+  const OrderedCloud&,
+  WorkRunner&,
+  std::vector<double>&,
+  NormalSummary&,
+  StageProgress*);
+template bool OrientOutward<std::int64_t>(PlaneFits&,
+  const OrderedCloud&,
+  WorkRunner&,
+  std::vector<double>&,
+  NormalSummary&,
+  StageProgress*);
 
 } // namespace normals
 } // namespace pcurv

@@ -167,7 +167,7 @@ def check_sphere_ply(folder, pvpython, script, plugin):
 
 
 def load_tool(script):
-    """Scripts/estimate_curvatures.py as a module (its main() not run)."""
+    """Tools/estimate_curvatures.py as a module (its main() not run)."""
     sys.path.insert(0, os.path.dirname(os.path.abspath(script)))
     import estimate_curvatures
 

@@ -7,7 +7,7 @@
 PLUGIN.so is loaded with LoadPlugin; with --autoload the plugin must already
 be loaded (PV_PLUGIN_CONFIG_FILE). CLOUDS_DIR holds torus.xyz (6 columns,
 from GenerateAnalyticCloud). With PVPYTHON and CLI_SCRIPT
-(Scripts/estimate_curvatures.py) the tool is run on a copy of torus.xyz to
+(Tools/estimate_curvatures.py) the tool is run on a copy of torus.xyz to
 .ply and .csv outputs, on a copy with colors to .ply, and on a 3-column file (which must either work or
 exit with status 2 and a message, never crash).
 

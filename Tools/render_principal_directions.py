@@ -1,7 +1,7 @@
 """Render a point cloud colored by curvature, with short line glyphs along
 the maximum principal direction. Needs an X display (xvfb-run works):
 
-    xvfb-run -a pvpython Scripts/render_principal_directions.py INPUT OUTPUT.png
+    xvfb-run -a pvpython Tools/render_principal_directions.py INPUT OUTPUT.png
         [--fit-mode OrientedCircles|Previous|New01|New02] [--color Mean_Curvature]
         [--glyph-every 8] [--view x,y,z]
 
@@ -9,7 +9,7 @@ The fit is the filter's default, OrientedCircles with the automatic
 neighborhood, unless --fit-mode names one of the paper's (which then use a
 radius holding about 375 neighbors).
 
-INPUT: any cloud Scripts/estimate_curvatures.py reads (.vtp .vtu .ply .off
+INPUT: any cloud Tools/estimate_curvatures.py reads (.vtp .vtu .ply .off
 .xyz .pwn .txt .csv).
 """
 

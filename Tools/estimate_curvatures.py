@@ -2,7 +2,7 @@
 
 Run with ParaView's Python:
 
-    pvpython Scripts/estimate_curvatures.py INPUT OUTPUT(.vtp|.ply|.csv)
+    pvpython Tools/estimate_curvatures.py INPUT OUTPUT(.vtp|.ply|.csv)
         [--fit-mode OrientedCircles|Previous|New01|New02] [--neighbors N] [--k-nearest]
         [--radius S [--plane-distance P]]
         [--dynamic-adjustment [paper|ladder|noisy-ladder]]
@@ -770,7 +770,7 @@ def write_ply(cloud, normals, path, single=False):
     element (no faces), one property per column."""
     columns = output_columns(cloud, normals, single)
     header = ["ply", "format binary_little_endian 1.0",
-              "comment principal curvatures by Scripts/estimate_curvatures.py",
+              "comment principal curvatures by Tools/estimate_curvatures.py",
               "element vertex %d" % cloud.GetNumberOfPoints()]
     header += ["property %s %s" % (kind, name) for name, _, kind in columns]
     header.append("end_header")

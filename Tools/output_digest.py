@@ -2,7 +2,7 @@
 and settings, so that a refactoring can be checked to leave the results
 bit-identical: run it before and after, and compare the two listings.
 
-    pvpython Scripts/output_digest.py CLOUD.(vtp|bin) [...] > digest.txt
+    pvpython Tools/output_digest.py CLOUD.(vtp|bin) [...] > digest.txt
 
 A .bin is a cloud of the shared accuracy suite (little-endian float64 rows
 of x y z nx ny nz and eight more columns). Every cloud is also run without
