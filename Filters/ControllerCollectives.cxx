@@ -1,26 +1,7 @@
 #include "ControllerCollectives.h"
 
-#include "vtkArrayDispatch.h"
-#include "vtkCellArray.h"
-#include "vtkDataArrayRange.h"
-#include "vtkCellData.h"
 #include "vtkCommunicator.h"
-#include "vtkDataArray.h"
-#include "vtkFieldData.h"
-#include "vtkIdTypeArray.h"
-#include "vtkInformation.h"
-#include "vtkInformationVector.h"
-#include "vtkStringArray.h"
-#include "vtkTypeInt32Array.h"
-#include "vtkTypeInt64Array.h"
 #include "vtkMultiProcessController.h"
-#include "vtkNew.h"
-#include "vtkPointData.h"
-#include "vtkPointSet.h"
-#include "vtkPolyData.h"
-#include "vtkPoints.h"
-#include "vtkSMPTools.h"
-#include "vtkAlgorithm.h"
 
 #include <algorithm>
 #include <chrono>
