@@ -17,7 +17,6 @@ namespace pcurv
 namespace
 {
 constexpr double NaN = std::numeric_limits<double>::quiet_NaN();
-/// Points (or cells) per range of a parallel grid build.
 
 /// The adjustment's target counts within [1, 1e6] (NaN: 1): a count outside
 /// it has no meaning, and beyond the int range it could not be reported in
