@@ -96,6 +96,10 @@ struct CurvatureArrays
       standardError ? this->Add<vtkUnsignedCharArray>("Curvature_Trusted", 1, n) : nullptr;
     // With the same fits: the normal their directions are tangent to.
     b.FittedNormal = standardError ? this->AddReal("Fitted_Normal", 3, n) : nullptr;
+    // With the same fits: the points moved onto their neighbors' surface,
+    // and every point's distance to it.
+    b.Outlier = standardError ? this->Add<vtkUnsignedCharArray>("Outlier", 1, n) : nullptr;
+    b.SurfaceDistance = standardError ? this->AddReal("Surface_Distance", 1, n, true) : nullptr;
   }
 
   /// A float or double array (Single), as the core's buffer.

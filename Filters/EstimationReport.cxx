@@ -4,9 +4,12 @@
 #include "Estimation/CurvatureOutputs.h"
 #include "vtkPrincipalCurvatureEstimation.h"
 
+#include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkIdTypeArray.h"
+#include "vtkIntArray.h"
 #include "vtkNew.h"
+#include "vtkPointData.h"
 #include "vtkPointSet.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -101,6 +104,44 @@ void WarnOnCoarseCoordinates(vtkPrincipalCurvatureEstimation* self,
         << "). The positions are rounded as if by noise of that size, and the curvatures "
            "degrade. Keep the coordinates in double (the plugin's PLY, LAS and text readers "
            "do), or subtract an offset before converting them to float.");
+  }
+}
+
+namespace
+{
+template<typename ArrayT, typename ValueT>
+void AddField(vtkPolyData* output, const char* name, ValueT value)
+{
+  vtkNew<ArrayT> array;
+  array->SetName(name);
+  array->InsertNextValue(value);
+  output->GetFieldData()->AddArray(array);
+}
+} // namespace
+
+void AddRunFields(vtkPolyData* output,
+  const pcurv::EstimationSummary& summary,
+  bool trusted,
+  bool automaticScale,
+  bool shareFits)
+{
+  if (trusted)
+  {
+    // What Curvature_Trusted compared the standard errors with.
+    AddField<vtkDoubleArray>(output, "Trusted_Curvature_Scale", summary.TrustedCurvatureScale);
+  }
+  if (output->GetPointData()->GetArray("Outlier"))
+  {
+    AddField<vtkIdTypeArray>(output, "Outlier_Points", summary.NumberOfOutliers);
+  }
+  if (shareFits && automaticScale)
+  {
+    AddField<vtkIdTypeArray>(output, "Shared_Fit_Points", summary.NumberOfSharedPoints);
+  }
+  if (automaticScale)
+  {
+    AddField<vtkIntArray>(output, "Fourth_Order_Fits", summary.FourthOrderFits ? 1 : 0);
+    AddField<vtkIdTypeArray>(output, "Jet_Fit_Points", summary.NumberOfJetPoints);
   }
 }
 

@@ -26,6 +26,16 @@ void ReportUnestimated(vtkPrincipalCurvatureEstimation* self,
   const pcurv::Collectives& processes,
   vtkPolyData* output);
 
+/// What the run found, in the output's field data: Trusted_Curvature_Scale
+/// (with Curvature_Trusted), Outlier_Points (with the Outlier array),
+/// Fourth_Order_Fits and Jet_Fit_Points (with the automatic scale) and
+/// Shared_Fit_Points (with it and `shareFits`).
+void AddRunFields(vtkPolyData* output,
+  const pcurv::EstimationSummary& summary,
+  bool trusted,
+  bool automaticScale,
+  bool shareFits);
+
 /// Float coordinates keep 24 bits: at magnitude M neighboring floats lie
 /// up to M 2^-23 apart. A georeferenced scan (UTM metres, 1e5 to 1e7) in
 /// float is rounded to centimetres or decimetres, which is noise of that

@@ -243,34 +243,12 @@ int vtkPrincipalCurvatureEstimation::RequestData(vtkInformation*,
         settings.Mode == pcurv::FitMode::OrientedCircles
       ? 16
       : settings.NumberOfNeighbors);
-  if (arrays.Buffers.Trusted)
-  {
-    // What Curvature_Trusted compared the standard errors with.
-    vtkNew<vtkDoubleArray> scale;
-    scale->SetName("Trusted_Curvature_Scale");
-    scale->InsertNextValue(summary.TrustedCurvatureScale);
-    output->GetFieldData()->AddArray(scale);
-  }
-  const bool automaticScale = settings.Mode == pcurv::FitMode::OrientedCircles &&
-    settings.Neighborhood == pcurv::NeighborhoodMode::Automatic;
-  if (settings.ShareFits && automaticScale)
-  {
-    vtkNew<vtkIdTypeArray> shared;
-    shared->SetName("Shared_Fit_Points");
-    shared->InsertNextValue(summary.NumberOfSharedPoints);
-    output->GetFieldData()->AddArray(shared);
-  }
-  if (automaticScale)
-  {
-    vtkNew<vtkIntArray> fourthOrder;
-    fourthOrder->SetName("Fourth_Order_Fits");
-    fourthOrder->InsertNextValue(summary.FourthOrderFits ? 1 : 0);
-    output->GetFieldData()->AddArray(fourthOrder);
-    vtkNew<vtkIdTypeArray> jets;
-    jets->SetName("Jet_Fit_Points");
-    jets->InsertNextValue(summary.NumberOfJetPoints);
-    output->GetFieldData()->AddArray(jets);
-  }
+  pcurv::report::AddRunFields(output,
+    summary,
+    arrays.Buffers.Trusted != nullptr,
+    settings.Mode == pcurv::FitMode::OrientedCircles &&
+      settings.Neighborhood == pcurv::NeighborhoodMode::Automatic,
+    settings.ShareFits);
   if (estimatedNormals)
   {
     output->GetPointData()->SetNormals(estimatedNormals);

@@ -8,7 +8,13 @@
 // survey's results are read from the workplace's folder, not copied here.
 //
 //   SurveyStudy SURVEY_FOLDER [--shapes a,b] [--conditions clean,pos0.01,...]
-//                             [--threads N] [--details]
+//                             [--threads N] [--details] [--keep-outliers] [--dump FOLDER]
+//
+// --details: per shape, also the error of the points left in place and of
+// those made outliers, and the share of each flagged as outliers;
+// --keep-outliers: the estimation without its outlier step (to compare);
+// --dump: every point's position, truth, estimate and verdict as CSV, one
+// file per condition, shape and normals.
 //
 // The noise is one realization per shape and condition (std::mt19937_64,
 // seed 1), not the survey's own sequence. Study/REPORT.md, "The survey's
@@ -89,6 +95,7 @@ const std::set<std::string> PositionOnly = { "3DQuadric",
 struct Shape
 {
   std::vector<double> Points, Normals, K1, K2, D1, D2; // 3 per point for vectors
+  std::vector<unsigned char> Moved;                    // 1: made an outlier (Perturb)
   std::size_t Size() const { return this->K1.size(); }
 };
 
@@ -173,6 +180,7 @@ void Perturb(const Shape& shape, const std::string& condition, Shape& noisy)
     rate = std::atof(condition.c_str() + 3);
     sigma = std::atof(condition.c_str() + condition.find('s') + 1);
   }
+  noisy.Moved.assign(shape.Size(), 0);
   std::mt19937_64 generator(1);
   std::normal_distribution<double> gaussian;
   std::uniform_real_distribution<double> uniform;
@@ -181,6 +189,7 @@ void Perturb(const Shape& shape, const std::string& condition, Shape& noisy)
     const double g[3] = { gaussian(generator), gaussian(generator), gaussian(generator) };
     const bool outlier = uniform(generator) < rate;
     const double move = outlier ? sigma : pos;
+    noisy.Moved[i] = outlier ? 1 : 0;
     double length = 0.0;
     for (int c = 0; c < 3; ++c)
     {
@@ -198,12 +207,13 @@ void Perturb(const Shape& shape, const std::string& condition, Shape& noisy)
 struct Estimate
 {
   std::vector<double> Minimum, Maximum, MinimumDirection, MaximumDirection;
-  std::vector<unsigned char> Valid;
+  std::vector<unsigned char> Valid, Outlier;
+  std::vector<double> SurfaceDistance;
 };
 
 /// The core with the filter's defaults (estimating the normals when none
 /// are given), on all cores.
-Estimate Run(const Shape& cloud, bool givenNormals, int threads)
+Estimate Run(const Shape& cloud, bool givenNormals, int threads, bool moveOutliers)
 {
   const std::size_t n = cloud.Size();
   CloudPoints points;
@@ -217,12 +227,15 @@ Estimate Run(const Shape& cloud, bool givenNormals, int threads)
   }
   EstimationSettings settings;
   settings.EstimateNormals = !givenNormals;
+  settings.MoveOutliers = moveOutliers;
   Estimate e;
   e.Minimum.resize(n);
   e.Maximum.resize(n);
   e.MinimumDirection.resize(3 * n);
   e.MaximumDirection.resize(3 * n);
   e.Valid.resize(n);
+  e.Outlier.resize(n);
+  e.SurfaceDistance.resize(n);
   std::vector<double> mean(n), gauss(n), rms(n), surroundings(n), plane(n), error(n), fitted(3 * n),
     normals(3 * n);
   std::vector<int> count(n), directions(n);
@@ -244,6 +257,8 @@ Estimate Run(const Shape& cloud, bool givenNormals, int threads)
   out.Trusted = trusted.data();
   out.FittedNormal = fitted.data();
   out.Normals = givenNormals ? nullptr : normals.data();
+  out.Outlier = e.Outlier.data();
+  out.SurfaceDistance = e.SurfaceDistance.data();
   testing::ThreadRunner runner(threads);
   EstimateCloud(std::move(points), settings, Collectives{}, runner, nullptr, out);
   return e;
@@ -275,11 +290,36 @@ struct Score
   /// The share of the squared error of k1 and k2 carried by the worst 1 %
   /// of the points.
   double WorstShare = 0.0;
+  /// k over the points left in place and over those made outliers; the
+  /// share of each flagged as outliers.
+  double KKept = 0.0, KMoved = 0.0, FlaggedKept = 0.0, FlaggedMoved = 0.0;
 };
+
+/// k, and the share flagged, over the points of `truth` with Moved == moved.
+void ScoreGroup(const std::vector<double>& squared,
+  const Estimate& e,
+  const Shape& noisy,
+  unsigned char moved,
+  double& k,
+  double& flagged)
+{
+  double sum = 0.0, count = 0.0, flags = 0.0;
+  for (std::size_t i = 0; i < squared.size(); ++i)
+  {
+    if (noisy.Moved[i] == moved)
+    {
+      sum += squared[i];
+      count += 1.0;
+      flags += e.Outlier[i] != 0 ? 1.0 : 0.0;
+    }
+  }
+  k = count > 0.0 ? std::sqrt(0.5 * sum / count) : 0.0;
+  flagged = count > 0.0 ? flags / count : 0.0;
+}
 
 /// The survey's metric over all points; a point not estimated is k = 0 with
 /// Ponca's default directions.
-Score ScoreOf(const Estimate& e, const Shape& truth)
+Score ScoreOf(const Estimate& e, const Shape& truth, const Shape& noisy)
 {
   const std::size_t n = truth.Size();
   const double x[3] = { 1.0, 0.0, 0.0 }, y[3] = { 0.0, 1.0, 0.0 };
@@ -309,6 +349,8 @@ Score ScoreOf(const Estimate& e, const Shape& truth)
   score.K = std::sqrt(0.5 * (score.K1 * score.K1 + score.K2 * score.K2));
   score.D1 = std::sqrt(sd / n);
   score.Unestimated /= static_cast<double>(n);
+  ScoreGroup(squared, e, noisy, 0, score.KKept, score.FlaggedKept);
+  ScoreGroup(squared, e, noisy, 1, score.KMoved, score.FlaggedMoved);
   std::sort(squared.begin(), squared.end(), std::greater<double>());
   const std::size_t worst = std::max<std::size_t>(1, n / 100);
   double all = 0.0, top = 0.0;
@@ -319,6 +361,22 @@ Score ScoreOf(const Estimate& e, const Shape& truth)
   }
   score.WorstShare = all > 0.0 ? top / all : 0.0;
   return score;
+}
+
+/// Every point's position, truth, estimate and verdicts, as CSV (for a
+/// closer look at the worst points).
+void Dump(const std::string& path, const Estimate& e, const Shape& truth, const Shape& noisy)
+{
+  std::ofstream file(path);
+  file << "x,y,z,moved,outlier,surface_distance,valid,k1,k2,true_k1,true_k2\n";
+  file.precision(9);
+  for (std::size_t i = 0; i < truth.Size(); ++i)
+  {
+    file << noisy.Points[3 * i] << ',' << noisy.Points[3 * i + 1] << ',' << noisy.Points[3 * i + 2]
+         << ',' << int(noisy.Moved[i]) << ',' << int(e.Outlier[i]) << ',' << e.SurfaceDistance[i]
+         << ',' << int(e.Valid[i]) << ',' << e.Minimum[i] << ',' << e.Maximum[i] << ','
+         << truth.K1[i] << ',' << truth.K2[i] << '\n';
+  }
 }
 
 /// survey[condition][estimator][metric] = mean over the shapes run of the
@@ -387,13 +445,14 @@ int main(int argc, char* argv[])
   {
     std::fprintf(stderr,
       "usage: SurveyStudy SURVEY_FOLDER [--shapes a,b] [--conditions c,d] "
-      "[--threads N] [--details]\n");
+      "[--threads N] [--details] [--keep-outliers] [--dump FOLDER]\n");
     return EXIT_FAILURE;
   }
   const std::string folder = argv[1];
   std::vector<std::string> shapes = Shapes, conditions = Conditions;
   int threads = std::max(1u, std::thread::hardware_concurrency());
-  bool details = false;
+  bool details = false, moveOutliers = true;
+  std::string dump;
   for (int a = 2; a < argc; ++a)
   {
     const std::string arg = argv[a];
@@ -412,6 +471,14 @@ int main(int argc, char* argv[])
     else if (arg == "--details")
     {
       details = true;
+    }
+    else if (arg == "--keep-outliers")
+    {
+      moveOutliers = false;
+    }
+    else if (arg == "--dump" && a + 1 < argc)
+    {
+      dump = argv[++a];
     }
   }
   std::map<std::string, Shape> clouds;
@@ -447,16 +514,31 @@ int main(int argc, char* argv[])
       Score both[2];
       for (int g = 0; g < 2; ++g)
       {
-        both[g] = ScoreOf(Run(noisy, g == 0, threads), clouds[name]);
+        const Estimate e = Run(noisy, g == 0, threads, moveOutliers);
+        both[g] = ScoreOf(e, clouds[name], noisy);
+        if (!dump.empty())
+        {
+          Dump(dump + "/" + condition + "_" + name + (g == 0 ? "_given" : "_estimated") + ".csv",
+            e,
+            clouds[name],
+            noisy);
+        }
       }
       if (details)
       {
-        std::printf("  %-15s %-13s given k %.4f (worst 1 %% %.0f %%), estimated k %.4f\n",
+        std::printf("  %-15s %-13s given k %.4f (worst 1 %% %.0f %%), estimated k %.4f; "
+                    "k kept %.4f %.4f, moved %.4f %.4f; flagged kept %.2f %%, moved %.1f %%\n",
           condition.c_str(),
           name.c_str(),
           both[0].K,
           100 * both[0].WorstShare,
-          both[1].K);
+          both[1].K,
+          both[0].KKept,
+          both[1].KKept,
+          both[0].KMoved,
+          both[1].KMoved,
+          100 * both[0].FlaggedKept,
+          100 * both[0].FlaggedMoved);
       }
       for (Score* sum : { &given, &estimated })
       {

@@ -235,6 +235,27 @@ std::vector<RepeatedPoint> RemoveRepeatedPoints(CloudPoints& cloud)
   return repeats;
 }
 
+std::vector<std::int64_t> RemoveOwnPoints(CloudPoints& cloud,
+  const std::vector<unsigned char>& remove)
+{
+  std::vector<std::int64_t> removed;
+  for (std::int64_t i = 0; i < static_cast<std::int64_t>(remove.size()); ++i)
+  {
+    if (remove[i])
+    {
+      removed.push_back(cloud.InputId(i));
+    }
+  }
+  if (!removed.empty())
+  {
+    cloud.DropHalo();
+    KeepPoints(cloud,
+      [&](std::int64_t i)
+      { return i >= static_cast<std::int64_t>(remove.size()) || remove[i] == 0; });
+  }
+  return removed;
+}
+
 void RemoveRepeatedHalo(CloudPoints& cloud)
 {
   if (cloud.GetNumberOfPoints() == cloud.NumberOfOwnPoints)

@@ -77,6 +77,12 @@ struct RepeatedPoint
 /// is.
 std::vector<RepeatedPoint> RemoveRepeatedPoints(CloudPoints& cloud);
 
+/// Removes the own points i with remove[i] nonzero (no halo: before it is
+/// exchanged; `remove` may be shorter than the own points), and returns
+/// their input ids.
+std::vector<std::int64_t> RemoveOwnPoints(CloudPoints& cloud,
+  const std::vector<unsigned char>& remove);
+
 /// Removes the halo points that repeat an own point or an earlier halo
 /// point exactly, so that each distinct point counts once whatever the split
 /// among processes.

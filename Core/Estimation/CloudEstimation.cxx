@@ -3,8 +3,10 @@
 #include "Cloud/Halo.h"
 #include "Common/ScratchPool.h"
 #include "Estimation/ItemEstimation.h"
+#include "Estimation/RemoteCopies.h"
 #include "Estimation/ResultStore.h"
 #include "Normals/NormalEstimation.h"
+#include "Outliers/SurfaceOutliers.h"
 
 #include <algorithm>
 #include <atomic>
@@ -453,6 +455,30 @@ bool EstimateEveryPoint(CloudPoints cloud,
     std::count(jetMarks.begin(), jetMarks.end(), static_cast<unsigned char>(1))));
   return true;
 }
+/// The outlier flags and surface distances of the own points into their
+/// buffers (every other input point, and every point when none were
+/// looked for: not an outlier, no distance).
+void StoreOutliers(const CurvatureBuffers& out,
+  const CloudPoints& cloud,
+  const SurfaceOutliers& outliers)
+{
+  for (std::int64_t i = 0; i < cloud.GetNumberOfInputPoints(); ++i)
+  {
+    out.Outlier[i] = 0;
+    if (out.SurfaceDistance)
+    {
+      out.SurfaceDistance.Set(i, NaN);
+    }
+  }
+  for (std::int64_t i = 0; i < static_cast<std::int64_t>(outliers.Flag.size()); ++i)
+  {
+    out.Outlier[cloud.InputId(i)] = outliers.Flag[i];
+    if (out.SurfaceDistance)
+    {
+      out.SurfaceDistance.Set(cloud.InputId(i), outliers.Distance[i]);
+    }
+  }
+}
 } // namespace
 
 EstimationSummary EstimateCloud(CloudPoints cloud,
@@ -467,6 +493,24 @@ EstimationSummary EstimateCloud(CloudPoints cloud,
   summary.NumberOfRepeatedPoints = static_cast<std::int64_t>(repeats.size());
   const WorkingUnit unit{ WorkingLengthScale(cloud, processes) };
   cloud.ScaleCoordinates(unit.Scale);
+  // Before the normals, which they would pull too.
+  SurfaceOutliers outliers;
+  if (settings.MoveOutliers && settings.Mode == FitMode::OrientedCircles)
+  {
+    outliers = MoveOutliersOntoSurface(cloud, processes, runner);
+    summary.NumberOfOutliers = outliers.Count;
+  }
+  if (out.Outlier)
+  {
+    StoreOutliers(out, cloud, outliers);
+  }
+  // Outliers moved onto a point of the surface are its exact repeats (or,
+  // that point in another process's part, take its results from there).
+  RemoteCopies remote;
+  remote.TakeOut(cloud, outliers);
+  const std::vector<RepeatedPoint> movedOutliers =
+    outliers.Count > 0 ? RemoveRepeatedPoints(cloud) : std::vector<RepeatedPoint>{};
+  remote.FindAnswers(cloud, processes);
   // The normals' plane fits cost about as much as the curvatures, their
   // orientation a little more; the shares of the progress bar follow.
   const double normalsShare = settings.EstimateNormals ? 0.45 : 0.0;
@@ -512,6 +556,11 @@ EstimationSummary EstimateCloud(CloudPoints cloud,
     summary.Aborted = true;
     return summary;
   }
+  for (const RepeatedPoint& moved : movedOutliers)
+  {
+    writer.Copy(moved.Original, moved.Copy, false);
+  }
+  remote.Deliver(writer, processes);
   for (const RepeatedPoint& repeat : repeats)
   {
     writer.Copy(repeat.Original, repeat.Copy);

@@ -60,6 +60,13 @@ struct CurvatureBuffers
   /// surface's unit normal, 3 per point, to which the directions are
   /// tangent (zero where not estimated).
   RealBuffer FittedNormal = nullptr;
+  /// With FitMode::OrientedCircles and MoveOutliers only (may be null): 1
+  /// where the point lies off the surface its neighbors sample, far beyond
+  /// the noise there (its results are the nearest surface's), and every
+  /// point's distance to that surface (NaN where the cloud is too small
+  /// to fit one), length.
+  unsigned char* Outlier = nullptr;
+  RealBuffer SurfaceDistance = nullptr;
   /// With EstimateNormals only (may be null): the normals estimated, 3 per
   /// input point (zero where undetermined or the coordinates not finite).
   RealBuffer Normals = nullptr;
@@ -106,6 +113,8 @@ struct EstimationSummary
   /// NeighborhoodMode::Automatic: the points whose estimate is a height
   /// jet's (positions with little or no noise; HeightJet.h).
   std::int64_t NumberOfJetPoints = 0;
+  /// Points flagged and moved onto the surface (CurvatureBuffers::Outlier).
+  std::int64_t NumberOfOutliers = 0;
   /// Whether the automatic scale also fitted the surface's fourth order at
   /// its wide radii (the normals follow the surface closely).
   bool FourthOrderFits = false;

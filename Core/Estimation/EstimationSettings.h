@@ -52,6 +52,11 @@ struct EstimationSettings
   /// its own position, instead of gathering nearly the same neighbors
   /// again (SharedFits.h). Off: every point fits its own.
   bool ShareFits = PCURV_DEFAULT("ShareFits") != 0;
+  /// OrientedCircles: points far from the surface their neighbors sample
+  /// are flagged and moved onto it first (SurfaceOutliers.h), so that they
+  /// pull no neighbor's normal or fit and get the nearest surface's
+  /// curvatures. The paper's fits take the cloud as it is.
+  bool MoveOutliers = true;
 
   /// The paper's dynamic variable adjustment instead of the above.
   bool DynamicAdjustment = PCURV_DEFAULT("DynamicAdjustment") != 0;

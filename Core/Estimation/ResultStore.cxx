@@ -1,6 +1,7 @@
 #include "Estimation/ResultStore.h"
 #include "Cloud/CloudStatistics.h"
 
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -39,6 +40,9 @@ constexpr RealBuffer CurvatureBuffers::*Scalars[] = { &CurvatureBuffers::Minimum
   &CurvatureBuffers::StandardError,
   &CurvatureBuffers::ShapeIndex,
   &CurvatureBuffers::Curvedness };
+
+/// A record: the scalars, four vectors and five integers.
+static_assert(sizeof(Scalars) / sizeof(Scalars[0]) + 4 * 3 + 5 == ResultStore::RecordLength);
 
 } // namespace
 
@@ -137,13 +141,13 @@ void ToInputUnit(const CurvatureBuffers& out, std::int64_t numberOfPoints, const
     scaleBy(*curvature, lengthScale);
   }
   scaleBy(out.Gauss, lengthScale * lengthScale);
-  for (const RealBuffer* length : { &out.Surroundings, &out.PlaneDistance })
+  for (const RealBuffer* length : { &out.Surroundings, &out.PlaneDistance, &out.SurfaceDistance })
   {
     scaleBy(*length, unit.ToInputLength(1.0));
   }
 }
 
-void ResultStore::Copy(std::int64_t from, std::int64_t to) const
+void ResultStore::Copy(std::int64_t from, std::int64_t to, bool verdicts) const
 {
   for (const auto member : Scalars)
   {
@@ -163,12 +167,74 @@ void ResultStore::Copy(std::int64_t from, std::int64_t to) const
     }
   }
   this->Out.Valid[to] = this->Out.Valid[from];
+  if (verdicts && this->Out.Outlier)
+  {
+    this->Out.Outlier[to] = this->Out.Outlier[from];
+    this->Out.SurfaceDistance.CopyRange(from, to, 1);
+  }
   this->Reasons[to] = this->Reasons[from];
   this->Out.NeighborCount[to] = this->Out.NeighborCount[from];
   this->Out.ValidDirections[to] = this->Out.ValidDirections[from];
   if (this->Out.TargetCount)
   {
     this->Out.TargetCount[to] = this->Out.TargetCount[from];
+  }
+}
+
+namespace
+{
+/// The buffers of three values a point, in the order of a record.
+std::array<const RealBuffer*, 4> VectorsOf(const CurvatureBuffers& out)
+{
+  return { &out.MinimumDirection, &out.MaximumDirection, &out.FittedNormal, &out.Normals };
+}
+} // namespace
+
+void ResultStore::Pack(std::int64_t i, double* record) const
+{
+  std::size_t at = 0;
+  for (const auto member : Scalars)
+  {
+    const RealBuffer& values = this->Out.*member;
+    record[at++] = values ? values.Get(i) : NaN;
+  }
+  for (const RealBuffer* vectors : VectorsOf(this->Out))
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      record[at++] = *vectors ? vectors->Get(3 * i + c) : NaN;
+    }
+  }
+  record[at++] = this->Out.Valid[i];
+  record[at++] = this->Reasons[i];
+  record[at++] = this->Out.NeighborCount[i];
+  record[at++] = this->Out.ValidDirections[i];
+  record[at] = this->Out.TargetCount ? this->Out.TargetCount[i] : 0;
+}
+
+void ResultStore::Unpack(const double* record, std::int64_t i) const
+{
+  std::size_t at = 0;
+  for (const auto member : Scalars)
+  {
+    const RealBuffer& values = this->Out.*member;
+    values ? values.Set(i, record[at]) : void();
+    ++at;
+  }
+  for (const RealBuffer* vectors : VectorsOf(this->Out))
+  {
+    for (int c = 0; c < 3; ++c, ++at)
+    {
+      *vectors ? vectors->Set(3 * i + c, record[at]) : void();
+    }
+  }
+  this->Out.Valid[i] = static_cast<unsigned char>(record[at++]);
+  this->Reasons[i] = static_cast<std::uint8_t>(record[at++]);
+  this->Out.NeighborCount[i] = static_cast<int>(record[at++]);
+  this->Out.ValidDirections[i] = static_cast<int>(record[at++]);
+  if (this->Out.TargetCount)
+  {
+    this->Out.TargetCount[i] = static_cast<int>(record[at]);
   }
 }
 
@@ -218,7 +284,9 @@ double WriteTrusted(const CurvatureBuffers& out,
   for (std::int64_t i = 0; i < numberOfPoints; ++i)
   {
     const double error = out.StandardError ? out.StandardError.Get(i) : NaN;
-    out.Trusted[i] = out.Valid[i] && 2.0 * error <= TrustedErrorShare * scale ? 1 : 0;
+    // An outlier's values are the nearest surface's, not its own.
+    const bool outlier = out.Outlier && out.Outlier[i];
+    out.Trusted[i] = out.Valid[i] && !outlier && 2.0 * error <= TrustedErrorShare * scale ? 1 : 0;
   }
   return scale;
 }

@@ -62,8 +62,16 @@ public:
   /// Asks for the cache lines Store(i, ...) will write.
   void Prefetch(std::int64_t i) const;
 
-  /// Point `to` gets every result of point `from` (an exact repeat of it).
-  void Copy(std::int64_t from, std::int64_t to) const;
+  /// Point `to` gets every result of point `from` (an exact repeat of it);
+  /// the outlier verdicts too unless `verdicts` is false (an outlier moved
+  /// onto `from` has its own).
+  void Copy(std::int64_t from, std::int64_t to, bool verdicts = true) const;
+  /// Point i's results as RecordLength values (for another process, which
+  /// has the same buffers), and back to point i; the outlier verdicts are
+  /// not part of them.
+  static constexpr std::size_t RecordLength = 27;
+  void Pack(std::int64_t i, double* record) const;
+  void Unpack(const double* record, std::int64_t i) const;
 
 private:
   CurvatureBuffers Out;

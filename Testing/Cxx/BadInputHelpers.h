@@ -265,7 +265,10 @@ inline void CheckContract(Checks& checks,
         ok = std::fabs(dot(f, f) - 1) < 1e-9 && std::fabs(dot(a, f)) < 1e-9 &&
           std::fabs(dot(b, f)) < 1e-9;
       }
-      if (ok && normals)
+      // An outlier has the results of the surface point nearest to it,
+      // fitted normal included: on that point's side, not its own.
+      const bool outlier = o.Array("Outlier") && o.Value("Outlier", i) == 1;
+      if (ok && normals && !outlier)
       {
         double n[3];
         normals->GetTuple(i, n);

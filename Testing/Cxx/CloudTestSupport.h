@@ -49,12 +49,14 @@ struct Results
     , NeighborCount(n)
     , ValidDirections(n)
     , TargetCount(adjusted ? n : 0)
+    , Outlier(n)
+    , SurfaceDistance(n)
   {
   }
 
   CurvatureBuffers Buffers()
   {
-    return CurvatureBuffers{ Minimum.data(),
+    CurvatureBuffers buffers{ Minimum.data(),
       Maximum.data(),
       Mean.data(),
       Gauss.data(),
@@ -67,6 +69,9 @@ struct Results
       NeighborCount.data(),
       ValidDirections.data(),
       TargetCount.empty() ? nullptr : TargetCount.data() };
+    buffers.Outlier = Outlier.data();
+    buffers.SurfaceDistance = SurfaceDistance.data();
+    return buffers;
   }
 
   bool BitIdentical(const Results& other) const
@@ -82,13 +87,16 @@ struct Results
       same(MaximumDirection, other.MaximumDirection) && same(SineFitRms, other.SineFitRms) &&
       same(Surroundings, other.Surroundings) && same(PlaneDistance, other.PlaneDistance) &&
       same(Valid, other.Valid) && same(NeighborCount, other.NeighborCount) &&
-      same(ValidDirections, other.ValidDirections) && same(TargetCount, other.TargetCount);
+      same(ValidDirections, other.ValidDirections) && same(TargetCount, other.TargetCount) &&
+      same(Outlier, other.Outlier) && same(SurfaceDistance, other.SurfaceDistance);
   }
 
   std::vector<double> Minimum, Maximum, Mean, Gauss, MinimumDirection, MaximumDirection, SineFitRms,
     Surroundings, PlaneDistance;
   std::vector<unsigned char> Valid;
   std::vector<int> NeighborCount, ValidDirections, TargetCount;
+  std::vector<unsigned char> Outlier;
+  std::vector<double> SurfaceDistance;
 };
 
 inline CloudPoints MakeCloud(const std::vector<testing::SurfaceSample>& samples, double scale = 1.0)

@@ -50,15 +50,16 @@ int main(int argc, char* argv[])
     std::fprintf(stderr,
       "usage: %s <torus|sphere|cylinder|saddle|ellipsoid|plane|paraboloid|wave> <points> "
       "<output.vtp|output.xyz> [seed] [noise in spacings] [--points-only] [--rounded] "
-      "[--tilted-normals]\n"
+      "[--tilted-normals] [--outliers]\n"
       "  (--points-only: a .xyz of x y z alone, as most scans come; --rounded: the\n"
       "  positions rounded to a grid of that many spacings instead of the noise;\n"
       "  --tilted-normals: each normal turned by about 0.05 rad at random, as\n"
-      "  estimated normals are off)\n",
+      "  estimated normals are off; --outliers: 5 %% of the points also moved by\n"
+      "  Gaussian noise of 10 spacings, as stray returns are)\n",
       argv[0]);
     return EXIT_FAILURE;
   }
-  bool pointsOnly = false, rounded = false, tilted = false;
+  bool pointsOnly = false, rounded = false, tilted = false, outliers = false;
   int numbers = argc; // the optional numbers come before the flags
   for (int a = 4; a < argc; ++a)
   {
@@ -66,6 +67,7 @@ int main(int argc, char* argv[])
     pointsOnly = pointsOnly || flag == "--points-only";
     rounded = rounded || flag == "--rounded";
     tilted = tilted || flag == "--tilted-normals";
+    outliers = outliers || flag == "--outliers";
     if (flag.rfind("--", 0) == 0)
     {
       numbers = std::min(numbers, a);
@@ -76,7 +78,7 @@ int main(int argc, char* argv[])
   const unsigned long long seed = argc > 4 ? std::strtoull(argv[4], nullptr, 10) : 1;
   const double noise = argc > 5 ? std::atof(argv[5]) : 0.0;
   auto samples = pcurv::testing::Sample(surface, count, seed);
-  if (noise > 0.0)
+  if (noise > 0.0 || outliers)
   {
     // Spacing: sqrt(area per point), with the area estimated by sampling.
     double area = 0.0;
@@ -111,6 +113,10 @@ int main(int argc, char* argv[])
     else
     {
       pcurv::testing::AddPositionNoise(samples, noise * spacing, seed + 2);
+    }
+    if (outliers)
+    {
+      pcurv::testing::AddOutliers(samples, 0.05, 10.0 * spacing, seed + 4);
     }
   }
   if (tilted)

@@ -18,7 +18,10 @@ height jets (neighbors from other ranks' parts among them); one with its
 positions rounded to a grid (--rounded) the lattice every rank must find
 the same from its own part; a noisy sphere whose normals are tilted at
 random (--tilted), as estimated normals are off, the longer ladder (nine
-radii, past 3,000 neighbors) such normals get, and its wider halo.
+radii, past 3,000 neighbors) such normals get, and its wider halo; a
+noisy torus with 5 % outliers (--outliers), with given and estimated
+normals, the outliers' verdicts and the surface points they are moved
+onto, from any rank's part.
 """
 
 import sys
@@ -29,9 +32,9 @@ from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkIOXML import vtkXMLPolyDataReader, vtkXMLPolyDataWriter, vtkXMLPPolyDataReader
 
 ARRAYS = ("Minimum_Curvature", "Maximum_Curvature", "Neighbor_Count")
-COUNTS = ("Neighbor_Count", "Target_Neighbor_Count", "Curvature_Trusted")  # compared absolutely
+COUNTS = ("Neighbor_Count", "Target_Neighbor_Count", "Curvature_Trusted", "Outlier")  # absolutely
 OPTIONAL = ("Target_Neighbor_Count",  # the dynamic adjustment's only
-            "Curvature_Standard_Error", "Curvature_Trusted")  # OrientedCircles only
+            "Curvature_Standard_Error", "Curvature_Trusted", "Outlier")  # OrientedCircles only
 VARIANTS = {"fixed": {}, "dva": {"DynamicAdjustment": 1}}
 
 
@@ -41,6 +44,8 @@ def variants_of(kind):
     reach (shared fits widen it by the anchors' cells)."""
     if kind == "--tilted":
         return dict(VARIANTS, unshared={"ShareFits": 0})
+    if kind == "--outliers":
+        return dict(VARIANTS, estimated={"NormalsSource": 2})
     return VARIANTS
 
 
@@ -200,6 +205,13 @@ def main(plugin, cloud, action, prefix, kind="--noisy"):
                 # decided on a sample drawn from every rank's part.
                 if read_field_value(output, "Fourth_Order_Fits") != 1:
                     failures.append("%s: no fourth-order fits with exact normals" % label)
+            elif variant in ("fixed", "estimated") and kind == "--outliers":
+                # Outliers moved onto points of the surface that may lie in
+                # another rank's part, before the normals and the fits.
+                outliers = read_field_value(output, "Outlier_Points")
+                print("%-32s Outlier_Points  %d" % (label, outliers))
+                if not outliers > 0.03 * len(result["ids"]):
+                    failures.append("%s: only %d outliers" % (label, outliers))
             elif variant in ("fixed", "unshared") and kind == "--tilted":
                 largest = int(result["Neighbor_Count"].max())
                 print("%-32s largest Neighbor_Count  %d" % (label, largest))

@@ -355,6 +355,28 @@ inline void AddPositionNoise(std::vector<SurfaceSample>& samples, double sigma, 
   }
 }
 
+/// Moves a share of the points (each with that chance) by isotropic
+/// Gaussian noise of standard deviation sigma, as stray returns are; their
+/// normals and exact values stay those of the point they came from.
+/// Returns which were moved.
+inline std::vector<bool> AddOutliers(std::vector<SurfaceSample>& samples,
+  double share,
+  double sigma,
+  std::uint64_t seed)
+{
+  Random random(seed);
+  std::vector<bool> moved(samples.size(), false);
+  for (std::size_t i = 0; i < samples.size(); ++i)
+  {
+    moved[i] = random.Uniform() < share;
+    for (int k = 0; k < 3 && moved[i]; ++k)
+    {
+      samples[i].Point[k] += sigma * random.Normal();
+    }
+  }
+  return moved;
+}
+
 /// Turns every normal by a random tangential vector (Gaussian, standard
 /// deviation `angle` radians along each tangent axis), as estimated
 /// normals are off: normals that no longer follow the surface as exact
