@@ -620,6 +620,11 @@ def summarize(output, seconds, description):
         count = field.GetArray(index).GetTuple1(0) if field.GetArray(index) is not None else 0
         if name.startswith("Unestimated_") and name != "Unestimated_Points" and count > 0:
             print("%-26s %d" % ("  " + name[len("Unestimated_"):].replace("_", " ").lower(), count))
+    outliers = field.GetArray("Outlier_Points")
+    if outliers is not None:
+        # Flagged, and given the curvatures of the surface nearest to them.
+        count = int(outliers.GetTuple1(0))
+        print("%-26s %d (%.2f %%; Outlier 1)" % ("outliers", count, count * share))
     if estimated:
         # Surroundings_Threshold is each point's neighborhood radius, the
         # distance within which its Neighbor_Count neighbors lie.
