@@ -8,6 +8,16 @@
 //                     [--noise 0,0.1,0.5] [--shapes sphere,...] [--degree 4]
 //                     [--eval-stride S]
 //
+// The runs behind Study/REPORT.md ("Peer: jet fitting of degree 4"), one
+// command each:
+//
+//   JetPeerStudy SUITE noise0.csv --noise 0 --k 15,20,30,45,70,100,150,220,330
+//   JetPeerStudy SUITE n20k.csv
+//     --sizes 20000 --noise 0.1,0.5 --k 30,45,70,100,150,220,330,500,700,1000,1500,2200,3300
+//   JetPeerStudy SUITE n200k.csv --sizes 200000 --noise 0.1,0.5 --k 220,500,1000,1500,2200
+//   JetPeerStudy SUITE n200k_wide.csv
+//     --sizes 200000 --noise 0.1,0.5 --k 2200,3300,5000,7500 --eval-stride 5
+//
 // For every cloud and neighbor count k (the k nearest points of the cloud,
 // the evaluation point included and first, as CGAL's fitting origin), fits a
 // jet to the positions only, turns its Monge normal to the side of the
