@@ -208,7 +208,7 @@ struct Estimate
 {
   std::vector<double> Minimum, Maximum, MinimumDirection, MaximumDirection;
   std::vector<unsigned char> Valid, Outlier;
-  std::vector<double> SurfaceDistance;
+  std::vector<double> SurfaceDistance, StandardError;
 };
 
 /// The core with the filter's defaults (estimating the normals when none
@@ -236,8 +236,9 @@ Estimate Run(const Shape& cloud, bool givenNormals, int threads, bool moveOutlie
   e.Valid.resize(n);
   e.Outlier.resize(n);
   e.SurfaceDistance.resize(n);
-  std::vector<double> mean(n), gauss(n), rms(n), surroundings(n), plane(n), error(n), fitted(3 * n),
+  std::vector<double> mean(n), gauss(n), rms(n), surroundings(n), plane(n), fitted(3 * n),
     normals(3 * n);
+  e.StandardError.resize(n);
   std::vector<int> count(n), directions(n);
   std::vector<unsigned char> trusted(n);
   CurvatureBuffers out;
@@ -253,7 +254,7 @@ Estimate Run(const Shape& cloud, bool givenNormals, int threads, bool moveOutlie
   out.Valid = e.Valid.data();
   out.NeighborCount = count.data();
   out.ValidDirections = directions.data();
-  out.StandardError = error.data();
+  out.StandardError = e.StandardError.data();
   out.Trusted = trusted.data();
   out.FittedNormal = fitted.data();
   out.Normals = givenNormals ? nullptr : normals.data();
@@ -293,6 +294,9 @@ struct Score
   /// k over the points left in place and over those made outliers; the
   /// share of each flagged as outliers.
   double KKept = 0.0, KMoved = 0.0, FlaggedKept = 0.0, FlaggedMoved = 0.0;
+  /// The share of the valid points whose error max(|dk1|, |dk2|) is within
+  /// twice their reported standard error.
+  double Covered = 0.0;
 };
 
 /// k, and the share flagged, over the points of `truth` with Moved == moved.
@@ -349,6 +353,23 @@ Score ScoreOf(const Estimate& e, const Shape& truth, const Shape& noisy)
   score.K = std::sqrt(0.5 * (score.K1 * score.K1 + score.K2 * score.K2));
   score.D1 = std::sqrt(sd / n);
   score.Unestimated /= static_cast<double>(n);
+  double valid = 0.0, covered = 0.0;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    if (e.Valid[i] && std::isfinite(e.Minimum[i]) && std::isfinite(e.Maximum[i]))
+    {
+      // Signed curvatures, as the standard error is stated for them, with
+      // the normals' side either way (estimated normals may face the other).
+      const double low = std::min(truth.K1[i], truth.K2[i]);
+      const double high = std::max(truth.K1[i], truth.K2[i]);
+      const double error =
+        std::min(std::max(std::fabs(e.Minimum[i] - low), std::fabs(e.Maximum[i] - high)),
+          std::max(std::fabs(e.Minimum[i] + high), std::fabs(e.Maximum[i] + low)));
+      valid += 1.0;
+      covered += error <= 2.0 * e.StandardError[i] ? 1.0 : 0.0;
+    }
+  }
+  score.Covered = valid > 0.0 ? covered / valid : 0.0;
   ScoreGroup(squared, e, noisy, 0, score.KKept, score.FlaggedKept);
   ScoreGroup(squared, e, noisy, 1, score.KMoved, score.FlaggedMoved);
   std::sort(squared.begin(), squared.end(), std::greater<double>());
@@ -527,7 +548,8 @@ int main(int argc, char* argv[])
       if (details)
       {
         std::printf("  %-15s %-13s given k %.4f (worst 1 %% %.0f %%), estimated k %.4f; "
-                    "k kept %.4f %.4f, moved %.4f %.4f; flagged kept %.2f %%, moved %.1f %%\n",
+                    "k kept %.4f %.4f, moved %.4f %.4f; flagged kept %.2f %%, moved %.1f %%; "
+                    "within 2 SE %.1f %% %.1f %%\n",
           condition.c_str(),
           name.c_str(),
           both[0].K,
@@ -538,7 +560,9 @@ int main(int argc, char* argv[])
           both[0].KMoved,
           both[1].KMoved,
           100 * both[0].FlaggedKept,
-          100 * both[0].FlaggedMoved);
+          100 * both[0].FlaggedMoved,
+          100 * both[0].Covered,
+          100 * both[1].Covered);
       }
       for (Score* sum : { &given, &estimated })
       {
