@@ -373,8 +373,11 @@ std::string File::ReadHeader(std::uint64_t fileSize)
 std::string File::Read(std::uint64_t begin, std::uint64_t end, const PointBuffers& out)
 {
   const Header& header = this->TheHeader;
-  // 64k records at a time: a few megabytes whatever the file's size.
-  constexpr std::uint64_t chunk = 1 << 16;
+  // About 4 MB of records at a time whatever the file's size, and no more
+  // than are asked for: a record may be up to 64 kB long.
+  constexpr std::uint64_t chunkBytes = 1 << 22;
+  const std::uint64_t chunk = std::max<std::uint64_t>(
+    1, std::min<std::uint64_t>(end > begin ? end - begin : 1, chunkBytes / header.RecordLength));
   std::vector<unsigned char> buffer(chunk * header.RecordLength);
   const std::uint64_t start = header.OffsetToPointData + begin * header.RecordLength;
   if (std::fseek(this->Stream(), static_cast<long>(start), SEEK_SET) != 0)

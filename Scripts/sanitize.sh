@@ -27,7 +27,7 @@ nice cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAG
   -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=address,undefined" \
   -DPCURV_BUILD_BENCHMARKS=OFF -DPCURV_BUILD_STUDY=OFF > /dev/null
 nice cmake --build build-asan -j 2 --target TestCurvatureCore TestPrincipalCurvatureEstimation \
-  TestCloudEstimation TestOrientedCircles TestAutomaticScale TestNormalEstimation TestNeighborGrid \
+  TestCloudEstimation TestOrientedCircles TestAutomaticScale TestNormalEstimation TestNeighborGrid TestOutliers \
   TestDynamicAdjustment TestBadInputConfiguration TestBadInputPoints TestBadInputScale \
   TestLASReader TestPLYReader ReplayReaderSeeds
 built=$(date +%s)
@@ -38,5 +38,5 @@ cd build-asan
 # slowdown of the sanitizers on a busy 2-core machine. Two tests at a time:
 # most are single-threaded, and the sanitized runs are most of CI's time.
 nice ctest --output-on-failure --timeout 3600 -j 2 \
-  -R "${PCURV_SANITIZE_TESTS:-^((CurvatureCore|PrincipalCurvatureEstimation|DynamicAdjustment|BadInput(Configuration|Points|Scale))(_STDThread)?|(CloudEstimation|OrientedCircles|AutomaticScale|NormalEstimation|NeighborGrid)\..*|BadInputExtreme_.*|LASReader|PLYReader|FuzzReaderSeeds)$}"
+  -R "${PCURV_SANITIZE_TESTS:-^((CurvatureCore|PrincipalCurvatureEstimation|DynamicAdjustment|BadInput(Configuration|Points|Scale))(_STDThread)?|(CloudEstimation|OrientedCircles|AutomaticScale|NormalEstimation|NeighborGrid|Outliers)\..*|BadInputExtreme_.*|LASReader|PLYReader|FuzzReaderSeeds)$}"
 echo "sanitizers: build $((built - start)) s, tests $(($(date +%s) - built)) s"

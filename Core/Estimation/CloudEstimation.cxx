@@ -462,21 +462,24 @@ void StoreOutliers(const CurvatureBuffers& out,
   const CloudPoints& cloud,
   const SurfaceOutliers& outliers)
 {
-  for (std::int64_t i = 0; i < cloud.GetNumberOfInputPoints(); ++i)
+  const auto store = [&out](std::int64_t i, unsigned char flag, double distance)
   {
-    out.Outlier[i] = 0;
+    if (out.Outlier)
+    {
+      out.Outlier[i] = flag;
+    }
     if (out.SurfaceDistance)
     {
-      out.SurfaceDistance.Set(i, NaN);
+      out.SurfaceDistance.Set(i, distance);
     }
+  };
+  for (std::int64_t i = 0; i < cloud.GetNumberOfInputPoints(); ++i)
+  {
+    store(i, 0, NaN);
   }
   for (std::int64_t i = 0; i < static_cast<std::int64_t>(outliers.Flag.size()); ++i)
   {
-    out.Outlier[cloud.InputId(i)] = outliers.Flag[i];
-    if (out.SurfaceDistance)
-    {
-      out.SurfaceDistance.Set(cloud.InputId(i), outliers.Distance[i]);
-    }
+    store(cloud.InputId(i), outliers.Flag[i], outliers.Distance[i]);
   }
 }
 } // namespace
@@ -500,7 +503,7 @@ EstimationSummary EstimateCloud(CloudPoints cloud,
     outliers = MoveOutliersOntoSurface(cloud, processes, runner);
     summary.NumberOfOutliers = outliers.Count;
   }
-  if (out.Outlier)
+  if (out.Outlier || out.SurfaceDistance)
   {
     StoreOutliers(out, cloud, outliers);
   }

@@ -170,6 +170,9 @@ void ResultStore::Copy(std::int64_t from, std::int64_t to, bool verdicts) const
   if (verdicts && this->Out.Outlier)
   {
     this->Out.Outlier[to] = this->Out.Outlier[from];
+  }
+  if (verdicts && this->Out.SurfaceDistance)
+  {
     this->Out.SurfaceDistance.CopyRange(from, to, 1);
   }
   this->Reasons[to] = this->Reasons[from];
