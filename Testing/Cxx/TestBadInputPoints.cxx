@@ -207,8 +207,8 @@ void TestFlaggedPoints(Checks& checks)
     // An outlier: the curvatures of the surface nearest to it, flagged.
     checks.Equal(Label(row, "an outlier").c_str(), static_cast<int>(o.Value("Outlier", n)), 1);
     checks.Equal(Label(row, "estimated").c_str(), o.Valid(n), 1);
-    checks.True(Label(row, "its distance to the torus").c_str(),
-      o.Value("Surface_Distance", n) > 100.0);
+    checks.True(
+      Label(row, "its distance to the torus").c_str(), o.Value("Surface_Distance", n) > 100.0);
     checks.True(Label(row, "no other outlier").c_str(), o.Value("Outlier", 0) == 0);
     // It widens the bounding box, hence the grid's cells and the order of
     // the sums: equal to rounding.
