@@ -7,8 +7,9 @@
  * neighbors; the normals' signs are then made consistent by propagation
  * over a minimum spanning tree of normal agreement (Hoppe et al. 1992), one
  * tree per connected part, and each part's sign is chosen by Orientation:
- * OUTWARD (away from the part's inside; up, +z, where an open part's inside
- * cannot be told), TOWARDS_VIEWPOINT (towards where the scanner was, point by
+ * OUTWARD (away from the part's inside; up, +z, on a scan seen from above,
+ * such as an airborne tile, except for the closed objects in it),
+ * TOWARDS_VIEWPOINT (towards where the scanner was, point by
  * point) or ALONG_AXIS (a positive component along Axis, point by point).
  *
  * Output: the input points and point data, vertex cells (or the input's

@@ -118,9 +118,10 @@ NormalSummary EstimateNormals(CloudPoints& cloud,
     // Twice as many points as 32-bit positions hold: the frontier keeps a
     // sign bit beside each.
     const bool small = n < std::numeric_limits<std::int32_t>::max() / 2;
-    if (!(small
-            ? OrientOutward<std::int32_t>(fits, ordered, runner, fits.Normals, summary, progress)
-            : OrientOutward<std::int64_t>(fits, ordered, runner, fits.Normals, summary, progress)))
+    if (!(small ? OrientOutward<std::int32_t>(
+                    fits, ordered, radius, runner, fits.Normals, summary, progress)
+                : OrientOutward<std::int64_t>(
+                    fits, ordered, radius, runner, fits.Normals, summary, progress)))
     {
       return summary;
     }

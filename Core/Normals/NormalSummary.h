@@ -16,6 +16,9 @@ struct NormalSummary
   std::int64_t Components = 0;
   /// Points with too few neighbors for a plane (their normal is zero).
   std::int64_t Undetermined = 0;
+  /// Most points are seen from above (Outward only): the parts that do not
+  /// hide half of themselves, as a closed object does, point up.
+  bool SeenFromAbove = false;
   /// The progress monitor asked to stop: the normals are incomplete.
   bool Aborted = false;
 };

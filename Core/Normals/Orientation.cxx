@@ -4,6 +4,7 @@
 #include "Common/WorkRunner.h"
 #include "Normals/OrderedCloud.h"
 #include "Normals/OrientationGraph.h"
+#include "Normals/ViewFromAbove.h"
 
 #include <algorithm>
 #include <cmath>
@@ -66,13 +67,30 @@ private:
   std::int64_t Size = 0;
 };
 
-/// Propagates the sign from `seed` over a minimum spanning tree of the
-/// normals' disagreement 1 - |n_a . n_b| (Prim's, weights in buckets):
-/// signs[p] becomes +1 or -1 (the normal as fitted, or flipped) for the
-/// part's points; returns them in the order reached.
+/// Pushes the edges from `from` (signed) to the points not signed yet.
 template<typename Index>
-std::vector<std::int64_t> OrientPart(const Graph<Index>& graph,
-  std::int64_t seed,
+void PushEdges(const Graph<Index>& graph,
+  std::int64_t from,
+  const std::vector<signed char>& signs,
+  FrontierBuckets<Index>& frontier)
+{
+  for (std::int64_t e = graph.Start[from]; e < graph.Start[from + 1]; ++e)
+  {
+    const auto& entry = graph.Entries[e];
+    if (signs[entry.Target] == 0 && entry.Code != edge::Unused)
+    {
+      frontier.Push(
+        edge::BucketOf(entry.Code), entry.Target, edge::Propagate(entry.Code, signs[from]));
+    }
+  }
+}
+
+/// Grows a minimum spanning tree of the normals' disagreement
+/// 1 - |n_a . n_b| (Prim's, weights in buckets) from the frontier: each
+/// point reached gets the sign (+1 or -1: the normal as fitted, or
+/// flipped) its tree edge carries; returns them in the order reached.
+template<typename Index>
+std::vector<std::int64_t> GrowTree(const Graph<Index>& graph,
   std::vector<signed char>& signs,
   FrontierBuckets<Index>& frontier,
   StageProgress* progress)
@@ -81,8 +99,7 @@ std::vector<std::int64_t> OrientPart(const Graph<Index>& graph,
   // stop request is looked at every few thousand points (the normals are
   // then incomplete anyway).
   constexpr std::size_t StopCheckInterval = 4096;
-  std::vector<std::int64_t> part;
-  frontier.Push(edge::Bucket(1.0), static_cast<Index>(seed), 1);
+  std::vector<std::int64_t> reached;
   while (!frontier.Empty())
   {
     const auto [to, sign] = frontier.Pop();
@@ -90,22 +107,23 @@ std::vector<std::int64_t> OrientPart(const Graph<Index>& graph,
     {
       continue;
     }
-    if (progress && part.size() % StopCheckInterval == 0 && !progress->Reach(1.0))
+    if (progress && reached.size() % StopCheckInterval == 0 && !progress->Reach(1.0))
     {
-      return part;
+      return reached;
     }
     signs[to] = sign;
-    part.push_back(to);
-    for (std::int64_t e = graph.Start[to]; e < graph.Start[to + 1]; ++e)
-    {
-      const auto& entry = graph.Entries[e];
-      if (signs[entry.Target] == 0 && entry.Code != edge::Unused)
-      {
-        frontier.Push(edge::BucketOf(entry.Code), entry.Target, edge::Propagate(entry.Code, sign));
-      }
-    }
+    reached.push_back(to);
+    PushEdges(graph, to, signs, frontier);
   }
-  return part;
+  return reached;
+}
+
+void FlipPart(const std::vector<std::int64_t>& part, std::vector<signed char>& signs)
+{
+  for (const std::int64_t p : part)
+  {
+    signs[p] = static_cast<signed char>(-signs[p]);
+  }
 }
 
 /// Turns a part's normals outward (see NormalOrientation::Outward), by
@@ -148,10 +166,86 @@ void TurnPartOutward(const std::vector<std::int64_t>& part,
   const bool flip = open ? sum[2] < 0.0 : signedSum < 0.0;
   if (flip)
   {
-    for (const std::int64_t p : part)
+    FlipPart(part, signs);
+  }
+}
+
+/// Turns a part of a scan seen from above towards the sky. Every normal
+/// within 60 degrees of vertical points up on its own, which undoes the
+/// tree's wrong turns in vegetation, where the fitted planes disagree from
+/// point to point. The steeper ones (walls, the sides of crowns), whose
+/// vertical component says little, take their sides from a tree grown
+/// anew from all the others at once: the side of the crown's top they
+/// bend away from. A part with no such point keeps its tree's signs,
+/// turned to the side most vertical components take.
+template<typename Index>
+void TurnPartUp(const std::vector<std::int64_t>& part,
+  const Graph<Index>& graph,
+  const std::vector<double>& normals,
+  std::vector<signed char>& signs,
+  FrontierBuckets<Index>& frontier)
+{
+  double vote = 0.0;
+  std::vector<std::int64_t> steep;
+  for (const std::int64_t p : part)
+  {
+    vote += signs[p] * normals[3 * p + 2];
+    if (std::fabs(normals[3 * p + 2]) < SteepBelow)
     {
-      signs[p] = static_cast<signed char>(-signs[p]);
+      steep.push_back(p);
     }
+  }
+  if (vote < 0.0)
+  {
+    FlipPart(part, signs);
+  }
+  if (steep.size() == part.size())
+  {
+    return;
+  }
+  for (const std::int64_t p : steep)
+  {
+    signs[p] = 0;
+  }
+  for (const std::int64_t p : part)
+  {
+    if (signs[p] != 0)
+    {
+      signs[p] = static_cast<signed char>(normals[3 * p + 2] > 0.0 ? 1 : -1);
+    }
+  }
+  for (const std::int64_t p : part)
+  {
+    if (std::fabs(normals[3 * p + 2]) >= SteepBelow)
+    {
+      PushEdges(graph, p, signs, frontier);
+    }
+  }
+  GrowTree<Index>(graph, signs, frontier, nullptr);
+}
+
+/// Orients a part: in a scan seen from above, up unless the part hides
+/// about half of itself from the view, as a closed object does; otherwise
+/// outward.
+template<typename Index>
+void OrientFoundPart(const std::vector<std::int64_t>& part,
+  const Graph<Index>& graph,
+  const OrderedCloud& ordered,
+  const std::vector<double>& normals,
+  const std::vector<Sight>& sights,
+  std::vector<signed char>& signs,
+  FrontierBuckets<Index>& frontier)
+{
+  // A closed surface shows about half its points; a crown or a roof seen
+  // from above shows most of them.
+  constexpr double ClosedShare = 0.65;
+  if (!sights.empty() && ShareOfTops(sights, &part) > ClosedShare)
+  {
+    TurnPartUp(part, graph, normals, signs, frontier);
+  }
+  else
+  {
+    TurnPartOutward(part, ordered, normals, signs);
   }
 }
 
@@ -186,12 +280,22 @@ void OrientPointwise(const NormalSettings& settings,
 template<typename Index>
 bool OrientOutward(PlaneFits& fits,
   const OrderedCloud& ordered,
+  double radius,
   WorkRunner& runner,
   std::vector<double>& normals,
   NormalSummary& summary,
   StageProgress* progress)
 {
   const std::int64_t n = ordered.Size();
+  // Columns about half the normals' neighborhood wide hold a few points
+  // of any surface above; a slope up to about 45 degrees stays within a
+  // neighborhood's radius of its column's top.
+  std::vector<Sight> sights = SightsFromAbove(ordered, normals, 0.5 * radius, radius);
+  summary.SeenFromAbove = SeenFromAbove(sights);
+  if (!summary.SeenFromAbove)
+  {
+    std::vector<Sight>().swap(sights);
+  }
   DropRepeatedEdges(fits, runner);
   const Graph<Index> graph(fits, runner);
   std::vector<signed char> signs(n, 0); // 0: not reached yet
@@ -200,7 +304,14 @@ bool OrientOutward(PlaneFits& fits,
   {
     if (signs[p] == 0 && !IsZero(&normals[3 * p]))
     {
-      TurnPartOutward(OrientPart(graph, p, signs, frontier, progress), ordered, normals, signs);
+      frontier.Push(edge::Bucket(1.0), static_cast<Index>(p), 1);
+      OrientFoundPart(GrowTree(graph, signs, frontier, progress),
+        graph,
+        ordered,
+        normals,
+        sights,
+        signs,
+        frontier);
       ++summary.Components;
       if (progress && progress->Stopped())
       {
@@ -221,12 +332,14 @@ bool OrientOutward(PlaneFits& fits,
 // The two widths of positions EstimateNormals uses.
 template bool OrientOutward<std::int32_t>(PlaneFits&,
   const OrderedCloud&,
+  double,
   WorkRunner&,
   std::vector<double>&,
   NormalSummary&,
   StageProgress*);
 template bool OrientOutward<std::int64_t>(PlaneFits&,
   const OrderedCloud&,
+  double,
   WorkRunner&,
   std::vector<double>&,
   NormalSummary&,

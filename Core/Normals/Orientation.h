@@ -33,12 +33,14 @@ void OrientPointwise(const NormalSettings& settings,
   const OrderedCloud& ordered,
   std::vector<double>& normals);
 
-/// Orients every connected part of the graph (NormalOrientation::Outward);
+/// Orients every connected part of the graph (NormalOrientation::Outward),
+/// a scan seen from above up (`radius`: the normals' neighborhood radius);
 /// false when the progress monitor asked to stop. The fits' repeated edges
 /// are dropped.
 template<typename Index>
 bool OrientOutward(PlaneFits& fits,
   const OrderedCloud& ordered,
+  double radius,
   WorkRunner& runner,
   std::vector<double>& normals,
   NormalSummary& summary,

@@ -63,6 +63,17 @@ public:
     }
   }
 
+  void AtLeast(const char* what, double value, double limit)
+  {
+    ++this->Count;
+    if (!(value >= limit))
+    {
+      char detail[160];
+      std::snprintf(detail, sizeof(detail), "= %.6g, must be at least %.6g", value, limit);
+      this->Fail(what, detail);
+    }
+  }
+
   void Equal(const char* what, long long value, long long expected)
   {
     ++this->Count;
