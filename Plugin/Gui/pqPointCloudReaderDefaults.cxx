@@ -4,35 +4,42 @@
 #include "pqApplicationCore.h"
 #include "pqServer.h"
 #include "pqServerManagerModel.h"
+#include "vtkNew.h"
+#include "vtkSMNamedPropertyIterator.h"
 #include "vtkSMPropertyHelper.h"
-#include "vtkSMProxyManager.h"
-#include "vtkSMReaderFactory.h"
+#include "vtkSMProxy.h"
 #include "vtkSMSessionProxyManager.h"
 #include "vtkSMSettings.h"
-#include "vtkSMSettingsProxy.h"
+#include "vtkSMStringVectorProperty.h"
+
+#include <QCoreApplication>
 
 #include <algorithm>
 #include <cctype>
 #include <sstream>
-#include <string>
-#include <vector>
 
 namespace
 {
+// A proxy of the "sources" group (PointCloudReaders.xml) and its
+// ReaderFactory file_description.
 struct ReaderDefault
 {
   const char* Pattern;
-  const char* Reader; // a proxy of the "sources" group, PointCloudReaders.xml
+  const char* Description;
+  const char* Reader;
 };
 
-const ReaderDefault PointCloudReaders[] = { { "*.xyz", "ASCIIPointCloudReader" },
-  { "*.pts", "ASCIIPointCloudReader" },
-  { "*.pwn", "ASCIIPointCloudReader" },
-  { "*.las", "ALASPointCloudReader" },
-  { "*.laz", "ALASPointCloudReader" } };
+const ReaderDefault PointCloudReaders[] = {
+  { "*.xyz", "Point cloud text files", "ASCIIPointCloudReader" },
+  { "*.pts", "Point cloud text files", "ASCIIPointCloudReader" },
+  { "*.pwn", "Point cloud text files", "ASCIIPointCloudReader" },
+  { "*.las", "LAS lidar point files", "ALASPointCloudReader" },
+  { "*.laz", "LAS lidar point files", "ALASPointCloudReader" },
+};
 
 // Triples (patterns separated by spaces, description, reader name), as
-// pqLoadDataReaction writes and reads them.
+// pqLoadDataReaction writes and reads them; the settings proxy
+// (RepresentedArrayListSettings) mirrors the setting.
 const char* const ReaderDetails = ".settings.RepresentedArrayListSettings.ReaderDetails";
 
 std::string lowerCase(std::string text)
@@ -62,39 +69,17 @@ bool hasDefaultFor(vtkSMSettings* settings, const std::string& pattern)
   return false;
 }
 
-std::string readerDescription(pqServer* server, const std::string& reader)
+vtkSMProxy* settingsProxy(pqServer* server)
 {
-  vtkSMReaderFactory* factory = vtkSMProxyManager::GetProxyManager()->GetReaderFactory();
-  for (const FileTypeDetailed& type : factory->GetSupportedFileTypesDetailed(server->session()))
-  {
-    if (type.Name == reader)
-    {
-      return type.Description;
-    }
-  }
-  return reader;
+  return server && server->proxyManager()
+    ? server->proxyManager()->GetProxy("settings", "RepresentedArrayListSettings")
+    : nullptr;
 }
 
-// The settings proxy mirrors the setting; ParaView's settings dialog writes
-// the proxy back, so both are kept the same (as pqLoadDataReaction does).
-void appendDefault(pqServer* server, const std::vector<std::string>& entry)
+bool isEntry(const std::vector<std::string>& values, std::size_t first, const ReaderDefault& entry)
 {
-  vtkSMSettings* settings = vtkSMSettings::GetInstance();
-  const unsigned int first = settings->GetSettingNumberOfElements(ReaderDetails);
-  vtkSMSettingsProxy* proxy = vtkSMSettingsProxy::SafeDownCast(
-    server->proxyManager()->GetProxy("settings", "RepresentedArrayListSettings"));
-  for (unsigned int i = 0; i < entry.size(); ++i)
-  {
-    settings->SetSetting(ReaderDetails, first + i, entry[i]);
-    if (proxy)
-    {
-      vtkSMPropertyHelper(proxy, "ReaderDetails").Set(first + i, entry[i].c_str());
-    }
-  }
-  if (proxy)
-  {
-    proxy->UpdateVTKObjects();
-  }
+  return values[first] == entry.Pattern && values[first + 1] == entry.Description &&
+    values[first + 2] == entry.Reader;
 }
 }
 
@@ -104,6 +89,10 @@ pqPointCloudReaderDefaults::pqPointCloudReaderDefaults(QObject* parent)
   pqServerManagerModel* model = pqApplicationCore::instance()->getServerManagerModel();
   QObject::connect(
     model, &pqServerManagerModel::serverAdded, this, &pqPointCloudReaderDefaults::addDefaults);
+  QObject::connect(QCoreApplication::instance(),
+    &QCoreApplication::aboutToQuit,
+    this,
+    &pqPointCloudReaderDefaults::removeDefaults);
   // The plugin may be loaded after the connection (a script's LoadPlugin).
   if (pqServer* server = pqActiveObjects::instance().activeServer())
   {
@@ -113,17 +102,53 @@ pqPointCloudReaderDefaults::pqPointCloudReaderDefaults(QObject* parent)
 
 void pqPointCloudReaderDefaults::addDefaults(pqServer* server)
 {
-  if (!server || !server->proxyManager())
+  vtkSMProxy* proxy = settingsProxy(server);
+  if (!proxy)
   {
     return;
   }
   vtkSMSettings* settings = vtkSMSettings::GetInstance();
   for (const ReaderDefault& entry : PointCloudReaders)
   {
-    if (!hasDefaultFor(settings, entry.Pattern))
+    if (hasDefaultFor(settings, entry.Pattern))
     {
-      appendDefault(
-        server, { entry.Pattern, readerDescription(server, entry.Reader), entry.Reader });
+      continue;
+    }
+    const unsigned int first = settings->GetSettingNumberOfElements(ReaderDetails);
+    const char* values[] = { entry.Pattern, entry.Description, entry.Reader };
+    for (unsigned int i = 0; i < 3; ++i)
+    {
+      settings->SetSetting(ReaderDetails, first + i, std::string(values[i]));
+      vtkSMPropertyHelper(proxy, "ReaderDetails").Set(first + i, values[i]);
     }
   }
+  proxy->UpdateVTKObjects();
+}
+
+void pqPointCloudReaderDefaults::removeDefaults()
+{
+  vtkSMProxy* proxy = settingsProxy(pqActiveObjects::instance().activeServer());
+  auto* property =
+    proxy ? vtkSMStringVectorProperty::SafeDownCast(proxy->GetProperty("ReaderDetails")) : nullptr;
+  if (!property)
+  {
+    return;
+  }
+  const std::vector<std::string> values = property->GetElements();
+  std::vector<std::string> kept;
+  for (std::size_t first = 0; first + 2 < values.size(); first += 3)
+  {
+    const bool added = std::any_of(std::begin(PointCloudReaders),
+      std::end(PointCloudReaders),
+      [&](const ReaderDefault& entry) { return isEntry(values, first, entry); });
+    if (!added)
+    {
+      kept.insert(kept.end(), values.begin() + first, values.begin() + first + 3);
+    }
+  }
+  property->SetElements(kept);
+  vtkNew<vtkSMNamedPropertyIterator> readerDetailsOnly;
+  readerDetailsOnly->SetProxy(proxy);
+  readerDetailsOnly->SetPropertyNames(std::vector<std::string>{ "ReaderDetails" });
+  vtkSMSettings::GetInstance()->SetProxySettings(proxy, readerDetailsOnly);
 }

@@ -13,6 +13,10 @@
  * pattern the user has not given a default of their own. .txt is left out
  * (CSV tables are .txt too), and so is .ply (a mesh wants the PLY Reader):
  * for them ParaView still asks.
+ *
+ * ParaView saves the user's settings when it quits: the entries are taken
+ * out again before (aboutToQuit), so that a ParaView started later without
+ * the plugin does not look for its readers.
  */
 #ifndef pqPointCloudReaderDefaults_h
 #define pqPointCloudReaderDefaults_h
@@ -29,6 +33,7 @@ public:
 
 private Q_SLOTS:
   void addDefaults(pqServer* server);
+  void removeDefaults();
 };
 
 #endif
