@@ -24,8 +24,17 @@ static_assert(
       static_cast<int>(pcurv::NormalOrientation::AlongAxis),
   "Orientations must match pcurv::NormalOrientation");
 
+namespace
+{
+// What ParaView's progress bar says while the filter runs (its class name
+// while the filter has no progress text: VTK reports progress 0 before
+// RequestData).
+const char* const ProgressLabel = "Point cloud normals";
+}
+
 vtkPointCloudNormalEstimation::vtkPointCloudNormalEstimation()
 {
+  this->SetProgressText(ProgressLabel);
   const pcurv::NormalSettings defaults;
   this->NumberOfNeighbors = defaults.NumberOfNeighbors;
   this->Orientation = static_cast<int>(defaults.Orientation);
@@ -69,7 +78,7 @@ int vtkPointCloudNormalEstimation::RequestData(vtkInformation*,
   normals->SetName("Normals");
   normals->SetNumberOfComponents(3);
   normals->SetNumberOfTuples(numberOfPoints);
-  pcurv::AlgorithmProgress progress(this, "Point cloud normals");
+  pcurv::AlgorithmProgress progress(this, ProgressLabel);
   // As vtkPrincipalCurvatureEstimation: the orientation is serial and long.
   const bool distributed = processes.IsDistributed();
   pcurv::SMPToolsRunner runner(this->NumberOfThreads, distributed ? &progress : nullptr);

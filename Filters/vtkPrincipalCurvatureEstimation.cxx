@@ -99,10 +99,16 @@ pcurv::EstimationSettings CoreSettings(vtkPrincipalCurvatureEstimation* self)
   return settings;
 }
 
+// What ParaView's progress bar says while the filter runs (its class name
+// while the filter has no progress text: VTK reports progress 0 before
+// RequestData).
+const char* const ProgressLabel = "Principal curvatures";
+
 } // namespace
 
 vtkPrincipalCurvatureEstimation::vtkPrincipalCurvatureEstimation()
 {
+  this->SetProgressText(ProgressLabel);
   const pcurv::EstimationSettings defaults;
   this->FitMode = static_cast<int>(defaults.Mode);
   this->NeighborhoodMode = static_cast<int>(defaults.Neighborhood);
@@ -195,7 +201,7 @@ int vtkPrincipalCurvatureEstimation::RequestData(vtkInformation*,
     estimatedNormals = pcurv::output::NewRealArray(
       "Normals", 3, numberOfPoints, this->SinglePrecisionOutput, arrays.Buffers.Normals);
   }
-  pcurv::AlgorithmProgress progress(this, "Principal curvatures");
+  pcurv::AlgorithmProgress progress(this, ProgressLabel);
   // One process: the whole estimation on a thread of its own, this one
   // passing progress and Abort all along; distributed: here, passing them
   // in the parallel stages (see RunPassingProgress).

@@ -15,6 +15,9 @@ packages=(
   # their link interfaces name (CMake/ParaViewGuiDependencies.cmake)
   qtbase5-dev qttools5-dev libqt5opengl5-dev libx11-dev libglew-dev libxml2-dev
   libnetcdf-dev libhdf5-dev libboost-dev
+  # the plugin's help pages (the "?" in the GUI): xmlpatterns and
+  # qhelpgenerator (qttools5-dev above brings qhelpgenerator-qt5)
+  qtxmlpatterns5-dev-tools qhelpgenerator-qt5
 )
 missing=()
 for package in "${packages[@]}"; do

@@ -2,6 +2,7 @@
 
 #include "pqCloudColorMapBehavior.h"
 #include "pqCloudFilterAbortBehavior.h"
+#include "pqPointCloudReaderDefaults.h"
 
 pqPrincipalCurvaturesStartup::pqPrincipalCurvaturesStartup(QObject* parent)
   : QObject(parent)
@@ -13,4 +14,5 @@ void pqPrincipalCurvaturesStartup::startup()
   // Owned by this object, which ParaView keeps until the plugin unloads.
   new pqCloudFilterAbortBehavior(this);
   new pqCloudColorMapBehavior(this);
+  new pqPointCloudReaderDefaults(this);
 }

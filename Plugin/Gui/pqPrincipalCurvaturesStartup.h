@@ -2,7 +2,9 @@
  * @class pqPrincipalCurvaturesStartup
  * @brief The plugin's GUI part, started when ParaView's GUI loads the
  * plugin: Abort that stops the filters (pqCloudFilterAbortBehavior) and a
- * color map per output (pqCloudColorMapBehavior). pvpython and pvbatch
+ * color map per output (pqCloudColorMapBehavior), the plugin's readers as
+ * File > Open's defaults for point cloud files (pqPointCloudReaderDefaults).
+ * pvpython and pvbatch
  * do not start it.
  */
 #ifndef pqPrincipalCurvaturesStartup_h
