@@ -620,8 +620,10 @@ def summarize(output, seconds, description):
     field = output.GetFieldData()
     for index in range(field.GetNumberOfArrays()):
         name = field.GetArrayName(index) or ""
-        count = field.GetArray(index).GetTuple1(0) if field.GetArray(index) is not None else 0
-        if name.startswith("Unestimated_") and name != "Unestimated_Points" and count > 0:
+        if not name.startswith("Unestimated_") or field.GetArray(index) is None:
+            continue  # also the input's field data (a LAS file's 3-component LAS_Scale, ...)
+        count = field.GetArray(index).GetTuple1(0)
+        if name != "Unestimated_Points" and count > 0:
             print("%-26s %d" % ("  " + name[len("Unestimated_"):].replace("_", " ").lower(), count))
     outliers = field.GetArray("Outlier_Points")
     if outliers is not None:
