@@ -469,6 +469,86 @@ void TestUnits(Checks& checks)
   }
 }
 
+std::string Descriptor(int type, int options, const std::string& name, double scale, double offset)
+{
+  std::string d(192, '\0');
+  d[2] = static_cast<char>(type);
+  d[3] = static_cast<char>(options);
+  d.replace(4, name.size(), name);
+  std::string number;
+  Append(number, scale);
+  d.replace(112, 8, number);
+  number.clear();
+  Append(number, offset);
+  d.replace(136, 8, number);
+  return d;
+}
+
+/// LAS 1.4 format 6, two points, recordExtra bytes after each record's 30,
+/// with an Extra Bytes record of the descriptors.
+std::string ExtraBytesFile(const std::string& descriptors, int recordExtra)
+{
+  std::string vlr(2, '\0');
+  vlr += std::string("LASF_Spec\0\0\0\0\0\0\0", 16);
+  Append(vlr, static_cast<std::uint16_t>(4));
+  Append(vlr, static_cast<std::uint16_t>(descriptors.size()));
+  vlr += std::string(32, '\0') + descriptors;
+  std::string h("LASF");
+  h.append(20, '\0');
+  h += "\x01\x04";
+  h.append(68, ' ');
+  Append(h, static_cast<std::uint16_t>(375));
+  Append(h, static_cast<std::uint32_t>(375 + vlr.size()));
+  Append(h, static_cast<std::uint32_t>(1));
+  Append(h, static_cast<std::uint8_t>(6));
+  Append(h, static_cast<std::uint16_t>(30 + recordExtra));
+  h.append(24, '\0'); // legacy counts
+  for (double v : { 0.01, 0.01, 0.01, 0.0, 0.0, 0.0 })
+    Append(h, v);
+  h.append(48 + 20, '\0');
+  Append(h, static_cast<std::uint64_t>(2));
+  h.append(120, '\0');
+  h += vlr;
+  for (int i = 0; i < 2; ++i)
+  {
+    std::string r(30, '\0');
+    r[14] = 0x11;
+    h += r;
+    Append(h, static_cast<std::uint16_t>(100 + i)); // Scaled: 100 * 0.01 + 5
+    Append(h, 2.5f * (i + 1));                      // Value
+    h += '\x7F';                                    // undocumented
+    Append(h, static_cast<std::int16_t>(-3 - i));   // Intensity (a second one)
+  }
+  return h;
+}
+
+void TestExtraBytesRead(Checks& checks)
+{
+  const std::string descriptors = Descriptor(3, 0x18, "Scaled", 0.01, 5) +
+    Descriptor(9, 0, "Value", 0, 0) + Descriptor(0, 1, "", 0, 0) +
+    Descriptor(4, 0, "Intensity", 0, 0);
+  const std::string path = Folder + "/extra_bytes.las";
+  WriteBytes(path, ExtraBytesFile(descriptors, 9));
+  std::string errors;
+  vtkSmartPointer<vtkPolyData> read = Read(path, &errors);
+  checks.True("extra bytes file read", errors.empty() && read->GetNumberOfPoints() == 2);
+  checks.Equal("scaled: double", TypeOf(read, "Scaled"), VTK_DOUBLE);
+  checks.Near("scaled value 100 * 0.01 + 5", ValueOf(read, "Scaled", 0), 6.0, 1e-12);
+  checks.Near("scaled value 101 * 0.01 + 5", ValueOf(read, "Scaled", 1), 6.01, 1e-12);
+  checks.Equal("float: float", TypeOf(read, "Value"), VTK_FLOAT);
+  checks.Near("float value", ValueOf(read, "Value", 1), 5.0, 0);
+  checks.Equal("a second Intensity renamed, a short", TypeOf(read, "Intensity_2"), VTK_SHORT);
+  checks.Near("its value after the undocumented byte", ValueOf(read, "Intensity_2", 1), -4, 0);
+  checks.Near("the standard Intensity untouched", ValueOf(read, "Intensity", 1), 0, 0);
+
+  // Descriptors for more bytes than the records have: the record is void.
+  const std::string mismatch = Folder + "/extra_bytes_mismatch.las";
+  WriteBytes(mismatch, ExtraBytesFile(descriptors, 9).replace(105, 2, std::string("\x25\x00", 2)));
+  vtkSmartPointer<vtkPolyData> partial = Read(mismatch, &errors);
+  checks.True("mismatch: points read", partial->GetNumberOfPoints() == 2);
+  checks.True("mismatch: no extra arrays", TypeOf(partial, "Scaled") < 0);
+}
+
 void TestBadInput(Checks& checks)
 {
   vtkSmartPointer<vtkPolyData> far = MakeCloud(false, true);
@@ -517,6 +597,7 @@ int main(int argc, char* argv[])
       { "HeaderBytes", TestHeaderBytes },
       { "ChosenScale", TestChosenScale },
       { "Units", TestUnits },
+      { "ExtraBytesRead", TestExtraBytesRead },
       { "BadInput", TestBadInput },
     });
 }
