@@ -335,6 +335,21 @@ void TestChosenScale(Checks& checks)
       worst = std::max(worst, std::fabs(cloud->GetPoint(i)[c] - read->GetPoint(i)[c]));
   checks.Near("coordinates within half the chosen scale", worst, 0, 0.5e-7 + 1e-9);
   checks.True("no unit without a coordinate system", StringField(read, "Length_Unit") == "(none)");
+
+  // Float points (a text cloud's): the same scale, the float values kept.
+  vtkNew<vtkPoints> single;
+  single->SetDataTypeToFloat();
+  single->DeepCopy(cloud->GetPoints());
+  single->SetDataTypeToFloat();
+  for (vtkIdType i = 0; i < Count; ++i)
+    single->SetPoint(i, cloud->GetPoint(i));
+  cloud->SetPoints(single);
+  vtkSmartPointer<vtkPolyData> readFloat = Read(Write(cloud, "float_points.las").Path);
+  worst = readFloat->GetNumberOfPoints() == Count ? 0 : 1;
+  for (vtkIdType i = 0; i < readFloat->GetNumberOfPoints(); ++i)
+    for (int c = 0; c < 3; ++c)
+      worst = std::max(worst, std::fabs(cloud->GetPoint(i)[c] - readFloat->GetPoint(i)[c]));
+  checks.Near("float points kept within half the scale", worst, 0, 0.5e-7 + 1e-9);
 }
 
 /// A LAS 1.2 file, format 1, with the given LASF_Projection records.

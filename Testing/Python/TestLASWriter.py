@@ -107,6 +107,11 @@ def check_save_data(folder, path):
     result = servermanager.Fetch(curvatures)
     check(field_string(result, "Curvature_Unit") == "1/US survey foot",
           "feet: Curvature_Unit %r" % field_string(result, "Curvature_Unit"))
+    # What File > Save Data offers for the curvatures (the GUI's dialog asks
+    # the same writer factory).
+    factory = servermanager.vtkSMProxyManager.GetProxyManager().GetWriterFactory()
+    offered = factory.GetSupportedFileTypes(curvatures.SMProxy, 0)
+    check("LAS lidar point files(*.las )" in offered, "File > Save Data offers .las (%s)" % offered[:200])
     out = os.path.join(folder, "saved.las")
     simple.SaveData(out, proxy=curvatures)
     check(os.path.isfile(out), "SaveData wrote %s" % out)
