@@ -13,6 +13,7 @@ Writes its own files into a temporary folder:
   equal to the filter's output, the lidar arrays, the unit and the
   coordinates within the file's scale;
 * the same sphere without the keys: Curvature_Unit keeps the old text;
+  ParaView's CSV writer prints its ScanAngleRank as numbers;
 * the command-line tool on the feet sphere writing .las: exit 0, the
   summary shows the coordinate system and the unit, the output has the
   curvature arrays.
@@ -152,6 +153,25 @@ def check_no_crs(path):
     simple.Delete(reader)
 
 
+def check_csv_scan_angle(path, folder):
+    """ParaView's CSV writer on a legacy file: ScanAngleRank (a short) as
+    numbers, the file text only (a signed char was written as a raw byte)."""
+    reader = simple.LASPointCloudReader(FileName=path)
+    out = os.path.join(folder, "legacy.csv")
+    writer = simple.CSVWriter(Input=reader, FileName=out)
+    writer.UpdatePipeline()
+    with open(out, "rb") as handle:
+        data = handle.read()
+    check(all(32 <= b < 127 or b in (10, 13) for b in data), "CSV of a legacy LAS: text only")
+    lines = data.decode("ascii", "replace").splitlines()
+    names = [n.strip('"') for n in lines[0].split(",")]
+    column = names.index("ScanAngleRank") if "ScanAngleRank" in names else None
+    values = [int(float(line.split(",")[column])) for line in lines[1:4]] if column is not None else []
+    check(values == [-30, -29, -28], "CSV: ScanAngleRank as numbers %s" % values)
+    simple.Delete(writer)
+    simple.Delete(reader)
+
+
 def check_tool(pvpython, script, plugin, path, folder):
     out = os.path.join(folder, "tool.las")
     done = subprocess.run([pvpython, script, "--plugin", plugin, path, out],
@@ -194,6 +214,7 @@ def main(argv):
         write_las12(plain, points, False)
         check_save_data(folder, feet)
         check_no_crs(plain)
+        check_csv_scan_angle(plain, folder)
         check_tool(pvpython, script, plugin, feet, folder)
     finally:
         shutil.rmtree(folder, ignore_errors=True)
