@@ -182,8 +182,19 @@ void CopyGeometry(vtkPointSet* input, vtkPolyData* output)
   }
   output->GetPointData()->PassData(input->GetPointData());
   // The input's description (a LAS file's scale, offset, coordinate system
-  // and unit) goes on with the points, for the unit and for writers.
-  output->GetFieldData()->PassData(input->GetFieldData());
+  // and unit) goes on with the points, for the unit and for writers. Only
+  // that: a previous run's counts in the input would read as this run's.
+  vtkFieldData* field = input->GetFieldData();
+  for (int i = 0; field && i < field->GetNumberOfArrays(); ++i)
+  {
+    const std::string name =
+      field->GetAbstractArray(i)->GetName() ? field->GetAbstractArray(i)->GetName() : "";
+    if (name.compare(0, 4, "LAS_") == 0 || name == "Coordinate_System" || name == "Length_Unit" ||
+      name == "Vertical_Unit")
+    {
+      output->GetFieldData()->AddArray(field->GetAbstractArray(i));
+    }
+  }
 }
 
 } // namespace pcurv
