@@ -458,8 +458,10 @@ std::string WriteFile(const char* fileName, const PointSet& points, const FileSe
   if (!file)
     return std::string("cannot open the file for writing: ") + std::strerror(errno);
   std::string error;
-  if (std::fwrite(header.data(), 1, header.size(), file) != header.size() ||
-    std::fwrite(recordBytes.data(), 1, recordBytes.size(), file) != recordBytes.size())
+  // The header and records in one write (a file without records has none).
+  std::vector<unsigned char> head = header;
+  head.insert(head.end(), recordBytes.begin(), recordBytes.end());
+  if (std::fwrite(head.data(), 1, head.size(), file) != head.size())
     error = std::string("cannot write the header: ") + std::strerror(errno);
   if (error.empty())
     error = WritePoints(file, points, t, layout);
