@@ -52,6 +52,24 @@ bool GetTriple(vtkFieldData* field, const char* name, double values[3])
   return true;
 }
 
+/// The description the specification's examples give each record.
+std::string RecordDescription(std::uint16_t id)
+{
+  switch (id)
+  {
+    case 34735:
+      return "GeoTIFF GeoKeyDirectoryTag";
+    case 34736:
+      return "GeoTIFF GeoDoubleParamsTag";
+    case 34737:
+      return "GeoTIFF GeoAsciiParamsTag";
+    case 2112:
+      return "OGC coordinate system WKT";
+    default:
+      return std::string();
+  }
+}
+
 int VtkTypeOf(const las::ExtraField& field)
 {
   if (field.Scaled)
@@ -146,9 +164,8 @@ void KeepFileDescription(vtkFieldData* field, las::FileSettings& settings)
     const char* name = field->GetArrayName(i);
     if (!array || !name || std::string(name).compare(0, prefix.size(), prefix) != 0)
       continue;
-    las::Vlr record{
-      "LASF_Projection", static_cast<std::uint16_t>(std::atoi(name + prefix.size())), "", {}
-    };
+    const auto id = static_cast<std::uint16_t>(std::atoi(name + prefix.size()));
+    las::Vlr record{ "LASF_Projection", id, RecordDescription(id), {} };
     for (vtkIdType v = 0; v < array->GetNumberOfValues(); ++v)
       record.Data.push_back(static_cast<unsigned char>(array->GetComponent(v, 0)));
     settings.CoordinateRecords.push_back(record);
