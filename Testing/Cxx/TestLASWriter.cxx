@@ -564,6 +564,31 @@ void TestExtraBytesRead(Checks& checks)
   checks.True("mismatch: no extra arrays", TypeOf(partial, "Scaled") < 0);
 }
 
+/// A LAS 1.4 file whose WKT is in an extended VLR after the points.
+void TestWktInEvlr(Checks& checks)
+{
+  std::string bytes = Bytes(Write(MakeCloud(false, false), "before_evlr.las").Path);
+  const std::string wkt = "PROJCS[\"x\",GEOGCS[\"y\"],UNIT[\"foot\",0.3048]]";
+  const std::uint64_t start = bytes.size();
+  bytes += std::string(2, '\0') + std::string("LASF_Projection\0", 16);
+  Append(bytes, static_cast<std::uint16_t>(2112));
+  Append(bytes, static_cast<std::uint64_t>(wkt.size() + 1));
+  bytes += std::string(32, '\0') + wkt + '\0';
+  std::string patch;
+  Append(patch, start);
+  Append(patch, static_cast<std::uint32_t>(1));
+  bytes.replace(235, patch.size(), patch);
+  const std::string path = Folder + "/wkt_evlr.las";
+  WriteBytes(path, bytes);
+  std::string errors;
+  vtkSmartPointer<vtkPolyData> read = Read(path, &errors);
+  checks.True("EVLR file read", errors.empty() && read->GetNumberOfPoints() == Count);
+  checks.True("WKT from the EVLR", StringField(read, "Coordinate_System") == wkt);
+  checks.True("its unit", StringField(read, "Length_Unit") == "foot");
+  checks.True(
+    "the extra bytes still read", read->GetPointData()->GetArray("Mean_Curvature") != nullptr);
+}
+
 void TestBadInput(Checks& checks)
 {
   vtkSmartPointer<vtkPolyData> far = MakeCloud(false, true);
@@ -613,6 +638,7 @@ int main(int argc, char* argv[])
       { "ChosenScale", TestChosenScale },
       { "Units", TestUnits },
       { "ExtraBytesRead", TestExtraBytesRead },
+      { "WktInEvlr", TestWktInEvlr },
       { "BadInput", TestBadInput },
     });
 }
