@@ -30,6 +30,10 @@
  * cannot be written. Arrays that are not numeric are left out with a
  * warning.
  *
+ * In ParaView, Plugin/PointCloudWriterLAS.xml makes it the writer of .las
+ * files, and in parallel sessions wraps it in vtkParallelSerialWriter,
+ * which gathers the pieces on the first rank.
+ *
  * The file format is pcurv::las (FileFormats/LasWriter.h), free of VTK.
  */
 #ifndef vtkLASPointCloudWriter_h
