@@ -1,5 +1,7 @@
 #include "FileFormats/LasFile.h"
 
+#include "FileFormats/LasBytes.h"
+
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
@@ -13,40 +15,6 @@ namespace las
 {
 namespace
 {
-
-// Values are little endian in a LAS file: assembled byte by byte, so the
-// reader works on any host and on unaligned records.
-inline std::uint16_t U16(const unsigned char* p)
-{
-  return static_cast<std::uint16_t>(p[0] | (p[1] << 8));
-}
-
-inline std::uint32_t U32(const unsigned char* p)
-{
-  return static_cast<std::uint32_t>(p[0]) | (static_cast<std::uint32_t>(p[1]) << 8) |
-    (static_cast<std::uint32_t>(p[2]) << 16) | (static_cast<std::uint32_t>(p[3]) << 24);
-}
-
-inline std::uint64_t U64(const unsigned char* p)
-{
-  return static_cast<std::uint64_t>(U32(p)) | (static_cast<std::uint64_t>(U32(p + 4)) << 32);
-}
-
-inline double F64(const unsigned char* p)
-{
-  const std::uint64_t bits = U64(p);
-  double value;
-  std::memcpy(&value, &bits, sizeof value);
-  return value;
-}
-
-inline std::int32_t I32(const unsigned char* p)
-{
-  const std::uint32_t bits = U32(p);
-  std::int32_t value;
-  std::memcpy(&value, &bits, sizeof value);
-  return value;
-}
 
 /// The smallest header of each minor version (1.0-1.2, 1.3, 1.4).
 std::uint32_t RequiredHeaderSize(int minor)
@@ -143,6 +111,9 @@ std::string CheckOffsets(const unsigned char* data,
   Header& header)
 {
   header.OffsetToPointData = U32(data + 96);
+  header.VlrCount = U32(data + 100);
+  header.GlobalEncoding = U16(data + 6);
+  header.FileSize = fileSize;
   if (header.OffsetToPointData < header.HeaderSize)
   {
     return "the offset to point data (" + std::to_string(header.OffsetToPointData) +
@@ -183,6 +154,8 @@ std::string PointCountOf(const unsigned char* data, Header& header)
   header.PointCount = legacy;
   if (header.VersionMinor >= 4)
   {
+    header.EvlrStart = U64(data + 235);
+    header.EvlrCount = U32(data + 243);
     const std::uint64_t full = U64(data + 247);
     if (legacy == 0)
     {
@@ -222,6 +195,7 @@ std::string CheckExtent(const unsigned char* data, std::uint64_t fileSize, const
   {
     declaredTail = U32(data + 243) > 0 ? U64(data + 235) : U64(data + 227);
   }
+
   if (fileSize - end >= header.RecordLength && !(declaredTail >= end && declaredTail < fileSize))
   {
     return "the header declares " + std::to_string(header.PointCount) +
@@ -230,6 +204,98 @@ std::string CheckExtent(const unsigned char* data, std::uint64_t fileSize, const
       std::to_string(header.OffsetToPointData) + " (a wrong point count)";
   }
   return std::string();
+}
+
+/// Formats 0-5: return number in bits 0-2 of byte 14, number of returns in
+/// 3-5, scan direction 6, edge of flight line 7; the class in the low 5 bits
+/// of byte 15, its synthetic, key-point and withheld flags in bits 5-7.
+void DecodeLegacyFields(const unsigned char* r, std::size_t at, const PointBuffers& out)
+{
+  const unsigned char returns = r[14];
+  if (out.ReturnNumber)
+    out.ReturnNumber[at] = returns & 0x07;
+  if (out.NumberOfReturns)
+    out.NumberOfReturns[at] = (returns >> 3) & 0x07;
+  if (out.ScanDirectionFlag)
+    out.ScanDirectionFlag[at] = (returns >> 6) & 1;
+  if (out.EdgeOfFlightLine)
+    out.EdgeOfFlightLine[at] = returns >> 7;
+  if (out.Classification)
+    out.Classification[at] = r[15] & 0x1F;
+  if (out.ClassFlags)
+    out.ClassFlags[at] = r[15] >> 5;
+  if (out.ScanAngleRank)
+    out.ScanAngleRank[at] = static_cast<std::int8_t>(r[16]);
+  if (out.PointSourceId)
+    out.PointSourceId[at] = U16(r + 18);
+}
+
+/// Formats 6-10: 4-bit return number and number of returns (byte 14); the
+/// class flags in bits 0-3 of byte 15, the scanner channel in 4-5, scan
+/// direction 6, edge 7; the class a byte of its own (16).
+void DecodeExtendedFields(const unsigned char* r, std::size_t at, const PointBuffers& out)
+{
+  const unsigned char returns = r[14];
+  const unsigned char flags = r[15];
+  if (out.ReturnNumber)
+    out.ReturnNumber[at] = returns & 0x0F;
+  if (out.NumberOfReturns)
+    out.NumberOfReturns[at] = returns >> 4;
+  if (out.ClassFlags)
+    out.ClassFlags[at] = flags & 0x0F;
+  if (out.ScannerChannel)
+    out.ScannerChannel[at] = (flags >> 4) & 0x03;
+  if (out.ScanDirectionFlag)
+    out.ScanDirectionFlag[at] = (flags >> 6) & 1;
+  if (out.EdgeOfFlightLine)
+    out.EdgeOfFlightLine[at] = flags >> 7;
+  if (out.Classification)
+    out.Classification[at] = r[16];
+  if (out.ScanAngle)
+    out.ScanAngle[at] = static_cast<float>(static_cast<std::int16_t>(U16(r + 18)) * 0.006);
+  if (out.PointSourceId)
+    out.PointSourceId[at] = U16(r + 20);
+}
+
+template<typename T, typename Bits>
+void StoreExtra(Bits bits, std::size_t at, const PointBuffers::Extra& extra)
+{
+  const T value = FromBits<T>(bits);
+  if (extra.Scaled)
+    static_cast<double*>(extra.Out)[at * extra.Stride] =
+      static_cast<double>(value) * extra.Scale + extra.Offset;
+  else
+    static_cast<T*>(extra.Out)[at * extra.Stride] = value;
+}
+
+/// One extra-bytes value at p into the extra's buffer.
+void DecodeExtra(const unsigned char* p, std::size_t at, const PointBuffers::Extra& extra)
+{
+  switch (extra.Type)
+  {
+    case ValueType::UInt8:
+      return StoreExtra<std::uint8_t>(p[0], at, extra);
+    case ValueType::Int8:
+      return StoreExtra<std::int8_t>(p[0], at, extra);
+    case ValueType::UInt16:
+      return StoreExtra<std::uint16_t>(U16(p), at, extra);
+    case ValueType::Int16:
+      return StoreExtra<std::int16_t>(U16(p), at, extra);
+    case ValueType::UInt32:
+      return StoreExtra<std::uint32_t>(U32(p), at, extra);
+    case ValueType::Int32:
+      return StoreExtra<std::int32_t>(U32(p), at, extra);
+    case ValueType::UInt64:
+      return StoreExtra<std::uint64_t>(U64(p), at, extra);
+    case ValueType::Int64:
+      return StoreExtra<std::int64_t>(U64(p), at, extra);
+    case ValueType::Float32:
+      return StoreExtra<float>(U32(p), at, extra);
+    case ValueType::Float64:
+      return StoreExtra<double>(U64(p), at, extra);
+    default:
+      return;
+  }
 }
 
 } // namespace
@@ -300,32 +366,12 @@ void DecodeRecords(const Header& header,
     }
     if (out.Intensity)
       out.Intensity[at] = U16(r + 12);
-    // Formats 0-5: return number in bits 0-2, number of returns in 3-5, the
-    // class in the low 5 bits of byte 15. Formats 6-10: 4 bits each, the
-    // class a byte of its own (16).
-    const unsigned char returns = r[14];
-    if (out.ReturnNumber)
-      out.ReturnNumber[at] = layout.Extended ? (returns & 0x0F) : (returns & 0x07);
-    if (out.NumberOfReturns)
-      out.NumberOfReturns[at] = layout.Extended ? (returns >> 4) : ((returns >> 3) & 0x07);
-    if (out.Classification)
-      out.Classification[at] = layout.Extended ? r[16] : (r[15] & 0x1F);
+    if (layout.Extended)
+      DecodeExtendedFields(r, at, out);
+    else
+      DecodeLegacyFields(r, at, out);
     if (out.UserData)
       out.UserData[at] = r[17];
-    if (layout.Extended)
-    {
-      if (out.ScanAngle)
-        out.ScanAngle[at] = static_cast<float>(static_cast<std::int16_t>(U16(r + 18)) * 0.006);
-      if (out.PointSourceId)
-        out.PointSourceId[at] = U16(r + 20);
-    }
-    else
-    {
-      if (out.ScanAngleRank)
-        out.ScanAngleRank[at] = static_cast<std::int8_t>(r[16]);
-      if (out.PointSourceId)
-        out.PointSourceId[at] = U16(r + 18);
-    }
     if (layout.GpsTime >= 0 && out.GpsTime)
       out.GpsTime[at] = F64(r + layout.GpsTime);
     if (layout.Color >= 0)
@@ -339,7 +385,35 @@ void DecodeRecords(const Header& header,
     }
     if (layout.Infrared >= 0 && out.Infrared)
       out.Infrared[at] = U16(r + layout.Infrared);
+    for (const PointBuffers::Extra& extra : out.Extras)
+    {
+      DecodeExtra(r + extra.ByteOffset, at, extra);
+    }
   }
+}
+
+//------------------------------------------------------------------------------
+std::vector<ExtraField> ExtraFieldsOf(const Header& header, const std::vector<Vlr>& records)
+{
+  std::vector<ExtraField> fields;
+  for (const Vlr& record : records)
+  {
+    if (record.UserId != "LASF_Spec" || record.RecordId != 4)
+      continue;
+    std::uint32_t at = LayoutOf(header.PointFormat).MinimumLength;
+    fields.clear();
+    for (const ExtraBytesDescriptor& d : ParseExtraBytes(record.Data))
+    {
+      const int size = d.Size();
+      if (size < 0 || at + static_cast<std::uint32_t>(size) > header.RecordLength)
+        return std::vector<ExtraField>();
+      if (d.DataType >= 1 && d.DataType <= 10)
+        fields.push_back(
+          { d.Name, static_cast<ValueType>(d.DataType), at, d.Scaled(), d.Scale, d.Offset });
+      at += static_cast<std::uint32_t>(size);
+    }
+  }
+  return fields;
 }
 
 //------------------------------------------------------------------------------
@@ -367,6 +441,19 @@ std::string File::ReadHeader(std::uint64_t fileSize)
   unsigned char data[375] = {};
   const std::size_t got = std::fread(data, 1, sizeof data, this->Stream());
   return ParseHeader(data, got, fileSize, this->TheHeader);
+}
+
+//------------------------------------------------------------------------------
+std::vector<Vlr> File::ReadKeptRecords()
+{
+  const Header& h = this->TheHeader;
+  return las::ReadKeptRecords(this->Stream(),
+    h.HeaderSize,
+    h.VlrCount,
+    h.OffsetToPointData,
+    h.EvlrStart,
+    h.EvlrCount,
+    h.FileSize);
 }
 
 //------------------------------------------------------------------------------

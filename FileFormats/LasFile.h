@@ -11,9 +11,11 @@
 #define pcurv_LasFile_h
 
 #include "FileFormats/FileInput.h"
+#include "FileFormats/LasVlr.h"
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace pcurv
 {
@@ -27,6 +29,11 @@ struct Header
   int VersionMinor = 0;
   std::uint32_t HeaderSize = 0;
   std::uint32_t OffsetToPointData = 0;
+  std::uint16_t GlobalEncoding = 0; // bit 0: GPS time type; bit 4: the CRS is WKT
+  std::uint32_t VlrCount = 0;
+  std::uint64_t EvlrStart = 0; // 1.4: the first extended VLR
+  std::uint32_t EvlrCount = 0;
+  std::uint64_t FileSize = 0;
   int PointFormat = 0;
   std::uint32_t RecordLength = 0;
   std::uint64_t PointCount = 0;
@@ -58,8 +65,14 @@ struct PointBuffers
   std::uint8_t* ReturnNumber = nullptr;
   std::uint8_t* NumberOfReturns = nullptr;
   std::uint8_t* Classification = nullptr;
-  std::int8_t* ScanAngleRank = nullptr; // formats 0-5: whole degrees
-  float* ScanAngle = nullptr;           // formats 6-10: degrees (0.006 per unit)
+  // Formats 0-5: synthetic, key-point, withheld (bits 0-2); formats 6-10
+  // also overlap (bit 3), as LAS 1.4 stores them.
+  std::uint8_t* ClassFlags = nullptr;
+  std::uint8_t* ScannerChannel = nullptr; // formats 6-10
+  std::uint8_t* ScanDirectionFlag = nullptr;
+  std::uint8_t* EdgeOfFlightLine = nullptr;
+  std::int16_t* ScanAngleRank = nullptr; // formats 0-5: whole degrees
+  float* ScanAngle = nullptr;            // formats 6-10: degrees (0.006 per unit)
   std::uint8_t* UserData = nullptr;
   std::uint16_t* PointSourceId = nullptr;
   double* GpsTime = nullptr;
@@ -67,7 +80,39 @@ struct PointBuffers
   std::uint16_t* Green = nullptr;
   std::uint16_t* Blue = nullptr;
   std::uint16_t* Infrared = nullptr;
+  /// Extra-bytes dimensions: the value at ByteOffset of each record, as
+  /// Type into Out (a buffer of that type), or as double times Scale plus
+  /// Offset when Scaled.
+  struct Extra
+  {
+    std::uint32_t ByteOffset = 0;
+    ValueType Type = ValueType::Float64;
+    bool Scaled = false;
+    double Scale = 1;
+    double Offset = 0;
+    void* Out = nullptr;
+    std::size_t Stride = 1; // values between two points' in Out
+  };
+  std::vector<Extra> Extras;
 };
+
+/// A dimension of the extra bytes that the reader returns: a scalar of
+/// type 1-10 (the deprecated arrays and undocumented bytes are skipped)
+/// lying within the record.
+struct ExtraField
+{
+  std::string Name;
+  ValueType Type = ValueType::Float64;
+  std::uint32_t ByteOffset = 0;
+  bool Scaled = false;
+  double Scale = 1;
+  double Offset = 0;
+};
+
+/// The extra fields that the Extra Bytes record (among records) describes
+/// for the header's records; none when the record describes more bytes than
+/// the records have (an "extra bytes mismatch" voids it).
+std::vector<ExtraField> ExtraFieldsOf(const Header& header, const std::vector<Vlr>& records);
 
 /// Decodes count records of the header's format from records (little
 /// endian, header.RecordLength bytes apart) into out, from out's index first.
@@ -96,6 +141,9 @@ public:
   /// Reads points [begin, end) into out (index 0 is point begin), in chunks
   /// of a fixed size; an empty string, or what went wrong.
   std::string Read(std::uint64_t begin, std::uint64_t end, const PointBuffers& out);
+  /// The coordinate-system and Extra Bytes records of the file (VLRs and
+  /// EVLRs), in file order.
+  std::vector<Vlr> ReadKeptRecords();
 
 private:
   std::string ReadHeader(std::uint64_t fileSize) override;

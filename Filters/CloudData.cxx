@@ -29,9 +29,13 @@ namespace pcurv
 
 void AddCurvatureUnit(vtkPolyData* output)
 {
+  vtkStringArray* length =
+    vtkStringArray::SafeDownCast(output->GetFieldData()->GetAbstractArray("Length_Unit"));
+  const bool declared = length && length->GetNumberOfValues() > 0 && !length->GetValue(0).empty();
   vtkNew<vtkStringArray> unit;
   unit->SetName("Curvature_Unit");
-  unit->InsertNextValue("1/length unit of the input coordinates");
+  unit->InsertNextValue(
+    declared ? "1/" + length->GetValue(0) : "1/length unit of the input coordinates");
   output->GetFieldData()->AddArray(unit);
 }
 
@@ -177,6 +181,20 @@ void CopyGeometry(vtkPointSet* input, vtkPolyData* output)
                                      : MakeVertexCells<vtkTypeInt64Array>(n));
   }
   output->GetPointData()->PassData(input->GetPointData());
+  // The input's description (a LAS file's scale, offset, coordinate system
+  // and unit) goes on with the points, for the unit and for writers. Only
+  // that: a previous run's counts in the input would read as this run's.
+  vtkFieldData* field = input->GetFieldData();
+  for (int i = 0; field && i < field->GetNumberOfArrays(); ++i)
+  {
+    const std::string name =
+      field->GetAbstractArray(i)->GetName() ? field->GetAbstractArray(i)->GetName() : "";
+    if (name.compare(0, 4, "LAS_") == 0 || name == "Coordinate_System" || name == "Length_Unit" ||
+      name == "Vertical_Unit")
+    {
+      output->GetFieldData()->AddArray(field->GetAbstractArray(i));
+    }
+  }
 }
 
 } // namespace pcurv

@@ -21,14 +21,17 @@ namespace pcurv
 /// normals (null) every normal is zero, for the core to estimate.
 CloudPoints ReadCloud(vtkPointSet* input, vtkDataArray* normals);
 
-/// The output's geometry: the input's points, its point data and, for a
-/// vtkPolyData with cells, its cells; otherwise one vertex cell per point,
-/// so that a cloud shows in a render view.
+/// The output's geometry: the input's points, its point data, the field
+/// data that describes its coordinates (LAS_*, Coordinate_System,
+/// Length_Unit, Vertical_Unit) and, for a vtkPolyData with cells, its
+/// cells; otherwise one vertex cell per point, so that a cloud shows in a
+/// render view.
 void CopyGeometry(vtkPointSet* input, vtkPolyData* output);
 
 /// What the curvature arrays are measured in, as ParaView shows it (the
 /// Information panel lists field data): the string array Curvature_Unit,
-/// "1/length unit of the input coordinates".
+/// "1/<unit>" when the field data's Length_Unit names the unit (as the LAS
+/// reader does), else "1/length unit of the input coordinates".
 void AddCurvatureUnit(vtkPolyData* output);
 
 /**

@@ -1,10 +1,12 @@
 #include "vtkLASPointCloudReader.h"
 
 #include "FileFormats/LasFile.h"
+#include "LasFieldData.h"
 #include "PointCloudReaderSupport.h"
 
 #include "vtkDataArray.h"
 #include "vtkErrorCode.h"
+#include "vtkFieldData.h"
 #include "vtkInformation.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
@@ -46,13 +48,19 @@ pcurv::las::PointBuffers MakeArrays(vtkPolyData* output, int format, vtkIdType c
   out.ReturnNumber = AddArray<std::uint8_t>(pd, VTK_UNSIGNED_CHAR, "ReturnNumber", count);
   out.NumberOfReturns = AddArray<std::uint8_t>(pd, VTK_UNSIGNED_CHAR, "NumberOfReturns", count);
   out.Classification = AddArray<std::uint8_t>(pd, VTK_UNSIGNED_CHAR, "Classification", count);
+  out.ClassFlags = AddArray<std::uint8_t>(pd, VTK_UNSIGNED_CHAR, "ClassFlags", count);
+  out.ScanDirectionFlag = AddArray<std::uint8_t>(pd, VTK_UNSIGNED_CHAR, "ScanDirectionFlag", count);
+  out.EdgeOfFlightLine = AddArray<std::uint8_t>(pd, VTK_UNSIGNED_CHAR, "EdgeOfFlightLine", count);
   if (layout.Extended)
   {
+    out.ScannerChannel = AddArray<std::uint8_t>(pd, VTK_UNSIGNED_CHAR, "ScannerChannel", count);
     out.ScanAngle = AddArray<float>(pd, VTK_FLOAT, "ScanAngle", count);
   }
   else
   {
-    out.ScanAngleRank = AddArray<std::int8_t>(pd, VTK_SIGNED_CHAR, "ScanAngleRank", count);
+    // A short, not a signed char: writers (ParaView's CSV) print a char as
+    // a character, not as a number.
+    out.ScanAngleRank = AddArray<std::int16_t>(pd, VTK_SHORT, "ScanAngleRank", count);
   }
   out.UserData = AddArray<std::uint8_t>(pd, VTK_UNSIGNED_CHAR, "UserData", count);
   out.PointSourceId = AddArray<std::uint16_t>(pd, VTK_UNSIGNED_SHORT, "PointSourceId", count);
@@ -85,7 +93,11 @@ std::string ReadPoints(const char* fileName, vtkPolyData* output, vtkInformation
   }
   const auto piece = pcurv::readers::RequestedPiece(outInfo, file.GetHeader().PointCount);
   const vtkIdType count = static_cast<vtkIdType>(piece.End - piece.Begin);
-  const pcurv::las::PointBuffers buffers = MakeArrays(output, file.GetHeader().PointFormat, count);
+  pcurv::las::PointBuffers buffers = MakeArrays(output, file.GetHeader().PointFormat, count);
+  const std::vector<pcurv::las::Vlr> records = file.ReadKeptRecords();
+  buffers.Extras = pcurv::readers::AddExtraArrays(
+    output->GetPointData(), pcurv::las::ExtraFieldsOf(file.GetHeader(), records), count);
+  pcurv::readers::AddFileDescription(output->GetFieldData(), file.GetHeader(), records);
   error = file.Read(piece.Begin, piece.End, buffers);
   pcurv::readers::AddVertexCells(output, count);
   return error;

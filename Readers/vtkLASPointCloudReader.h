@@ -9,16 +9,33 @@
  *   `Classification`, `UserData` (unsigned char), `PointSourceId` (unsigned
  *   short), in every format. Formats 6-10 keep 4-bit return numbers and a
  *   whole classification byte; formats 0-5 3-bit ones and the class in the
- *   low 5 bits (the synthetic, key-point and withheld flags are left out).
- * - `ScanAngleRank` (signed char, whole degrees) in formats 0-5, `ScanAngle`
+ *   low 5 bits.
+ * - `ClassFlags` (unsigned char: synthetic, key-point, withheld, overlap in
+ *   bits 0-3, as LAS 1.4 stores them), `ScanDirectionFlag`,
+ *   `EdgeOfFlightLine`, and `ScannerChannel` in formats 6-10.
+ * - `ScanAngleRank` (short, whole degrees; a short rather than a signed
+ *   char, which writers print as a character) in formats 0-5, `ScanAngle`
  *   (float, degrees: the file's 0.006-degree units) in formats 6-10.
  * - `GpsTime` (double) in formats 1 and 3-10.
  * - `Red`, `Green`, `Blue` (unsigned short, as stored: LAS colors are
  *   16-bit) in formats 2, 3, 5, 7, 8, 10, and `Infrared` in 8 and 10. Three
  *   arrays rather than one 3-component one: ParaView offers a 3-component
  *   array as normals, and a color is not one.
- * Wave packets (formats 4, 5, 9, 10) and extra bytes are skipped. One vertex
- * cell per point. Piece requests are honored (consecutive ranges).
+ * - The extra bytes an Extra Bytes record (LASF_Spec 4) describes: an array
+ *   per dimension of its name and type (double when the descriptor scales
+ *   or offsets it); three dimensions <name>_X, _Y, _Z of one type as one
+ *   3-component array <name> (the normals when it is "Normals"), as
+ *   vtkLASPointCloudWriter writes vectors. Names taken already get "_2".
+ * Wave packets (formats 4, 5, 9, 10) and undocumented extra bytes are
+ * skipped. One vertex cell per point. Piece requests are honored
+ * (consecutive ranges).
+ *
+ * Field data: `LAS_Scale`, `LAS_Offset` (double, 3 components),
+ * `LAS_Global_Encoding`, the payload of each LASF_Projection record as
+ * `LAS_Projection_<record id>` (unsigned char), which vtkLASPointCloudWriter
+ * reuses; and the strings `Coordinate_System` (the WKT, or "EPSG:<code>"
+ * from GeoTIFF keys), `Length_Unit` ("metre", "foot", "US survey foot",
+ * ...) and `Vertical_Unit` when the file declares them.
  *
  * The points are read in chunks of 64k records straight into the output
  * arrays: the file is never held in memory.

@@ -2,7 +2,7 @@
 
 Run with ParaView's Python:
 
-    pvpython Tools/estimate_curvatures.py INPUT OUTPUT(.vtp|.ply|.csv)
+    pvpython Tools/estimate_curvatures.py INPUT OUTPUT(.vtp|.ply|.csv|.las)
         [--fit-mode OrientedCircles|Previous|New01|New02] [--neighbors N] [--k-nearest]
         [--radius S [--plane-distance P]]
         [--dynamic-adjustment [paper|ladder|noisy-ladder]]
@@ -46,7 +46,10 @@ format of its extension: .vtp (VTK XML, inline binary); .ply (binary little
 endian: x y z, nx ny nz, red green blue for an RGB array, every scalar array
 as a float or double property of its name and every vector array as
 <name>_x <name>_y <name>_z, which CloudCompare and MeshLab read as scalar
-fields); .csv (a header line of the same column names, one row per point).
+fields); .csv (a header line of the same column names, one row per point);
+.las (LAS 1.4 through the plugin's LAS Point Cloud Writer: the lidar fields
+as such, every other array as described extra bytes, and a LAS input's
+scale, offset and coordinate system kept).
 It prints a summary: point counts (the unestimated ones by reason), the
 thresholds used, percentiles of the curvatures over the estimated points,
 and the time the filter took. On a terminal it also shows the stages and a
@@ -77,7 +80,7 @@ DEFAULT_PLUGIN = os.path.join(
 TEXT_EXTENSIONS = (".xyz", ".pwn", ".txt", ".pts", ".csv")
 LAS_EXTENSIONS = (".las", ".laz")
 INPUT_EXTENSIONS = (".vtp", ".vtu", ".ply") + LAS_EXTENSIONS + (".off", ".obj") + TEXT_EXTENSIONS
-OUTPUT_EXTENSIONS = (".vtp", ".ply", ".csv")
+OUTPUT_EXTENSIONS = (".vtp", ".ply", ".csv", ".las")
 FIT_MODES = ("Previous", "New01", "New02", "OrientedCircles")
 
 # Names of normal components stored as separate scalars (matched ignoring case).
@@ -617,8 +620,10 @@ def summarize(output, seconds, description):
     field = output.GetFieldData()
     for index in range(field.GetNumberOfArrays()):
         name = field.GetArrayName(index) or ""
-        count = field.GetArray(index).GetTuple1(0) if field.GetArray(index) is not None else 0
-        if name.startswith("Unestimated_") and name != "Unestimated_Points" and count > 0:
+        if not name.startswith("Unestimated_") or field.GetArray(index) is None:
+            continue  # also the input's field data (a LAS file's 3-component LAS_Scale, ...)
+        count = field.GetArray(index).GetTuple1(0)
+        if name != "Unestimated_Points" and count > 0:
             print("%-26s %d" % ("  " + name[len("Unestimated_"):].replace("_", " ").lower(), count))
     outliers = field.GetArray("Outlier_Points")
     if outliers is not None:
@@ -636,6 +641,11 @@ def summarize(output, seconds, description):
                 continue
             print("%-26s %.6g (median%s)" % (label, numpy.median(array(name)[valid]), note))
     print("%-26s %.3f s" % ("filter time", seconds))
+    for name, label in (("Coordinate_System", "coordinate system"), ("Length_Unit", "length unit")):
+        declared = field.GetAbstractArray(name)
+        if declared is not None and declared.GetNumberOfValues():
+            text = declared.GetValue(0)
+            print("%-26s %s" % (label, text if len(text) <= 60 else text[:57] + "..."))
     unit = field.GetAbstractArray("Curvature_Unit")
     if unit is not None and unit.GetNumberOfValues():
         # Lengths (radius, coordinates) are in the input's unit, curvatures in its inverse.
@@ -674,6 +684,26 @@ def write_vtp(curvatures, path, compress):
     writer.UpdatePipeline()  # the writer reports failures only as VTK errors: check the file
     if not os.path.isfile(path) or os.path.getmtime(path) < written - 1.0:
         fail("could not write %s (see the messages above)" % path)
+
+
+def write_las(curvatures, path):
+    """The filter's output as LAS 1.4 through the plugin's writer; exits
+    with the writer's message if it fails."""
+    from vtkmodules.util.misc import calldata_type
+    from vtkmodules.vtkCommonCore import VTK_STRING
+
+    errors = []
+
+    @calldata_type(VTK_STRING)
+    def keep(caller, event, message):
+        errors.append(message.strip().splitlines()[-1].split("): ", 1)[-1])
+
+    writer = simple.LASPointCloudWriter(Input=curvatures, FileName=path)
+    writer.GetClientSideObject().AddObserver("ErrorEvent", keep)
+    writer.UpdatePipeline()
+    simple.Delete(writer)
+    if errors or not os.path.isfile(path):
+        fail("could not write %s: %s" % (path, "; ".join(errors) or "see the messages above"))
 
 
 def column_name(name, used):
@@ -808,6 +838,9 @@ def write_output(curvatures, result, normals, path, compress=False, single=False
     extension = os.path.splitext(path)[1].lower()
     if extension == ".vtp":
         write_vtp(curvatures, path, compress)
+        return
+    if extension == ".las":
+        write_las(curvatures, path)
         return
     try:
         if extension == ".ply":

@@ -2,7 +2,7 @@
 // 1.3, 1.4; every point format 0-10, with extra bytes and a variable
 // length record before the points): every array's values, the exact double
 // coordinates, the 4-bit return numbers and full classification byte of
-// formats 6-10, 64-bit point counts, pieces; then bad files, each with the
+// formats 6-10, their flags, 64-bit point counts, pieces; then bad files, each with the
 // error it must give (and no points, no crash).
 #include "ReaderTestHelpers.h"
 #include "TestChecks.h"
@@ -267,6 +267,22 @@ void CheckGoodFile(Checks& checks, const LasSpec& spec, const std::string& folde
   }
   checks.True(
     "ScanAngleRank only in formats 0-5", (TypeOf(cloud, "ScanAngleRank") >= 0) != extended);
+  if (!extended)
+  {
+    // A short: ParaView's CSV writer prints a signed char as a character.
+    checks.Equal("ScanAngleRank is a short", TypeOf(cloud, "ScanAngleRank"), VTK_SHORT);
+  }
+  // The records' flag bits (see Record): formats 0-5 synthetic, key-point
+  // and withheld set, scan direction and edge set; formats 6-10 0xF3:
+  // class flags 3, scanner channel 3, scan direction and edge set.
+  for (int i = 0; i < 2; ++i)
+  {
+    checks.Near("ClassFlags", ValueOf(cloud, "ClassFlags", i), extended ? 3 : 7, 0);
+    checks.Near("ScanDirectionFlag", ValueOf(cloud, "ScanDirectionFlag", i), 1, 0);
+    checks.Near("EdgeOfFlightLine", ValueOf(cloud, "EdgeOfFlightLine", i), 1, 0);
+    checks.True("ScannerChannel only in formats 6-10",
+      extended ? ValueOf(cloud, "ScannerChannel", i) == 3 : TypeOf(cloud, "ScannerChannel") < 0);
+  }
 }
 
 void CheckPieces(Checks& checks, const std::string& folder)

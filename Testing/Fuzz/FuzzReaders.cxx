@@ -8,6 +8,7 @@
 //   them (AddressSanitizer) whatever the body holds.
 #include "FuzzReaders.h"
 
+#include "FileFormats/LasCrs.h"
 #include "FileFormats/LasFile.h"
 #include "FileFormats/PlyFile.h"
 
@@ -58,7 +59,8 @@ void FuzzLasFile(const std::uint8_t* data, std::size_t size)
   std::vector<std::uint16_t> words(5 * count);
   std::vector<std::uint8_t> bytes(5 * count);
   std::vector<float> angle(count);
-  std::vector<std::int8_t> rank(count);
+  std::vector<std::int16_t> rank(count);
+  std::vector<std::uint8_t> flags(4 * count);
   pcurv::las::PointBuffers out;
   out.Points = points.data();
   out.Intensity = words.data();
@@ -74,6 +76,28 @@ void FuzzLasFile(const std::uint8_t* data, std::size_t size)
   out.ScanAngle = angle.data();
   out.ScanAngleRank = rank.data();
   out.GpsTime = gps.data();
+  out.ClassFlags = flags.data();
+  out.ScannerChannel = flags.data() + count;
+  out.ScanDirectionFlag = flags.data() + 2 * count;
+  out.EdgeOfFlightLine = flags.data() + 3 * count;
+  // The records' contents come from the file too: the coordinate system
+  // and the extra bytes described within each record.
+  const std::vector<pcurv::las::Vlr> records = file.ReadKeptRecords();
+  pcurv::las::DescribeCoordinates(records);
+  const std::vector<pcurv::las::ExtraField> fields = pcurv::las::ExtraFieldsOf(header, records);
+  std::vector<std::vector<double>> extras(fields.size(), std::vector<double>(count));
+  for (std::size_t f = 0; f < fields.size(); ++f)
+  {
+    Require(fields[f].ByteOffset + pcurv::las::SizeOf(fields[f].Type) <= header.RecordLength,
+      "las: extra bytes lie within the record");
+    out.Extras.push_back({ fields[f].ByteOffset,
+      fields[f].Type,
+      fields[f].Scaled,
+      fields[f].Scale,
+      fields[f].Offset,
+      extras[f].data(),
+      1 });
+  }
   Require(file.Read(0, header.PointCount, out).empty(), "las: an accepted file's points read");
 }
 

@@ -33,6 +33,36 @@ def las(minor, point_format, count=2, extra=0, vlr=0):
     return bytes([251]) + bytes(header) + b"\x11" * vlr + records
 
 
+def vlr(user, record_id, payload):
+    return struct.pack("<H16sHH32s", 0, user, record_id, len(payload), b"") + payload
+
+
+def extra_bytes_descriptor(data_type, options, name, scale=0.0, offset=0.0):
+    descriptor = bytearray(192)
+    descriptor[2], descriptor[3] = data_type, options
+    descriptor[4:4 + len(name)] = name
+    struct.pack_into("<d", descriptor, 112, scale)
+    struct.pack_into("<d", descriptor, 136, offset)
+    return bytes(descriptor)
+
+
+def las_with_records():
+    """LAS 1.4 format 6 with the records the reader interprets: GeoTIFF keys
+    with their ASCII parameters, WKT, and an Extra Bytes record (a scaled
+    unsigned short, a float, an undocumented byte)."""
+    keys = struct.pack("<16H", 1, 1, 0, 3, 1024, 0, 1, 1, 3072, 0, 1, 2231, 3073, 34737, 6, 0)
+    records = (vlr(b"LASF_Projection", 34735, keys) + vlr(b"LASF_Projection", 34737, b"name|\0") +
+               vlr(b"LASF_Projection", 2112,
+                   b'COMPD_CS["c",PROJCS["p",UNIT["US survey foot",0.3048006096012192]],'
+                   b'VERT_CS["v",UNIT["foot",0.3048]]]\0') +
+               vlr(b"LASF_Spec", 4, extra_bytes_descriptor(3, 0x18, b"Scaled", 0.01, 5.0) +
+                   extra_bytes_descriptor(9, 0, b"Value") + extra_bytes_descriptor(0, 1, b"")))
+    seed = bytearray(las(4, 6, extra=7, vlr=len(records)))
+    seed[1 + 375:1 + 375 + len(records)] = records
+    struct.pack_into("<I", seed, 1 + 100, 4)
+    return bytes(seed)
+
+
 def ply(body_format, point_type="double"):
     header = ("ply\nformat %s 1.0\nelement vertex 2\nproperty %s x\nproperty %s y\nproperty %s z\n"
               "property float nx\nproperty float ny\nproperty float nz\nproperty uchar red\n"
@@ -59,6 +89,7 @@ def main():
         "reader-las-13-format2-extra": las(3, 2, extra=3),
         "reader-las-14-format6": las(4, 6),
         "reader-las-14-format8": las(4, 8, count=3),
+        "reader-las-14-records": las_with_records(),
         "reader-ply-ascii": ply("ascii"),
         "reader-ply-binary-le": ply("binary_little_endian"),
         "reader-ply-binary-be-float": ply("binary_big_endian", "float"),
