@@ -40,7 +40,9 @@ def plugin_proxies(source_dir):
     for path in sorted(glob.glob(os.path.join(source_dir, "Plugin", "*.xml"))):
         for group in ElementTree.parse(path).getroot().iter("ProxyGroup"):
             for element in group:
-                if element.tag in PROXY_TAGS:
+                # Internal groups (a parallel writer's inner writer) are
+                # never shown in the GUI, and ParaView makes no page of them.
+                if element.tag in PROXY_TAGS and not group.get("name").startswith("internal_"):
                     proxies.append((group.get("name"), element.get("name"), element))
     return proxies
 
