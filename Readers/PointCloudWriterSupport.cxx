@@ -83,6 +83,16 @@ public:
     this->Cloud.Arrays.push_back(column);
   }
 
+  /// The points as float (a smaller file, for coordinates float keeps).
+  void AddFloatPoints(vtkDataArray* points)
+  {
+    vtkSmartPointer<vtkDataArray> copy =
+      vtkSmartPointer<vtkDataArray>::Take(vtkDataArray::CreateDataArray(VTK_FLOAT));
+    copy->DeepCopy(points);
+    this->Held.push_back(copy);
+    this->AddArray(copy, Role::Points, "Points");
+  }
+
   void AddFields(vtkFieldData* fields)
   {
     for (int i = 0; fields && i < fields->GetNumberOfArrays(); ++i)
@@ -165,12 +175,12 @@ private:
   std::vector<vtkSmartPointer<vtkDataArray>> Held;
 };
 
-/// The normals: the normals attribute, else an array named Normals, with
-/// 3 floating point components.
-vtkDataArray* FindNormals(vtkPointData* data)
+/// The normals: the array named, else the normals attribute, else an
+/// array named Normals, with 3 floating point components.
+vtkDataArray* FindNormals(vtkPointData* data, const std::string& name)
 {
-  vtkDataArray* normals = data->GetNormals();
-  if (!normals)
+  vtkDataArray* normals = name.empty() ? data->GetNormals() : data->GetArray(name.c_str());
+  if (!normals && name.empty())
   {
     normals = data->GetArray("Normals");
   }
@@ -193,9 +203,9 @@ vtkDataArray* FindColors(vtkPointData* data)
   return nullptr;
 }
 
-void AddPointData(vtkPointData* data, CloudBuilder& builder)
+void AddPointData(vtkPointData* data, const std::string& normalsName, CloudBuilder& builder)
 {
-  vtkDataArray* normals = FindNormals(data);
+  vtkDataArray* normals = FindNormals(data, normalsName);
   vtkDataArray* colors = FindColors(data);
   if (normals)
   {
@@ -273,7 +283,7 @@ std::string SkippedText(const std::vector<std::string>& skipped)
 //------------------------------------------------------------------------------
 unsigned long WriteInput(vtkWriter* writer,
   const char* fileName,
-  bool withFaces,
+  const WriteOptions& options,
   const WriteFunction& write)
 {
   vtkPointSet* input = vtkPointSet::SafeDownCast(writer->GetInput());
@@ -292,10 +302,17 @@ unsigned long WriteInput(vtkWriter* writer,
   {
     CloudBuilder builder;
     builder.Cloud.Count = static_cast<std::uint64_t>(input->GetNumberOfPoints());
-    builder.AddArray(input->GetPoints()->GetData(), Role::Points, "Points");
-    AddPointData(input->GetPointData(), builder);
+    if (options.PointsAsFloat)
+    {
+      builder.AddFloatPoints(input->GetPoints()->GetData());
+    }
+    else
+    {
+      builder.AddArray(input->GetPoints()->GetData(), Role::Points, "Points");
+    }
+    AddPointData(input->GetPointData(), options.NormalsArray, builder);
     builder.AddFields(input->GetFieldData());
-    if (withFaces)
+    if (options.WithFaces)
     {
       AddFaces(input, builder);
     }

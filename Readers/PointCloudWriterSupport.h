@@ -23,17 +23,25 @@ namespace writers
 /// Writes the cloud to the file; an empty string, or what went wrong.
 using WriteFunction = std::function<std::string(const char* fileName, table::Cloud& cloud)>;
 
+/// What the writers let their user choose.
+struct WriteOptions
+{
+  bool WithFaces = false;     // a polydata's polygons (PLY)
+  bool PointsAsFloat = false; // x y z as float, whatever the points' type
+  std::string NormalsArray;   // written as nx ny nz; empty: the normals attribute, else Normals
+};
+
 /**
  * WriteData of a writer: the writer's input (a vtkPointSet) as a cloud
- * (with its polygons when withFaces), one warning naming the arrays and
- * cells a file cannot hold, then `write`. Errors (no file name, no point
+ * (with the options), one warning naming the arrays and cells a file
+ * cannot hold, then `write`. Errors (no file name, no point
  * set, what `write` reports, out of memory) are one vtkErrorMacro naming
  * the file. Returns the error code for the writer to set (NoError, ...;
  * the setter is protected).
  */
 unsigned long WriteInput(vtkWriter* writer,
   const char* fileName,
-  bool withFaces,
+  const WriteOptions& options,
   const WriteFunction& write);
 
 } // namespace writers

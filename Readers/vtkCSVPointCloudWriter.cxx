@@ -16,6 +16,7 @@ vtkCSVPointCloudWriter::vtkCSVPointCloudWriter() = default;
 vtkCSVPointCloudWriter::~vtkCSVPointCloudWriter()
 {
   this->SetFileName(nullptr);
+  this->SetNormalsArray(nullptr);
 }
 
 //------------------------------------------------------------------------------
@@ -28,9 +29,12 @@ int vtkCSVPointCloudWriter::FillInputPortInformation(int, vtkInformation* info)
 //------------------------------------------------------------------------------
 void vtkCSVPointCloudWriter::WriteData()
 {
+  pcurv::writers::WriteOptions options;
+  options.PointsAsFloat = this->PointsAsFloat;
+  options.NormalsArray = this->NormalsArray ? this->NormalsArray : "";
   this->SetErrorCode(pcurv::writers::WriteInput(this,
     this->FileName,
-    false,
+    options,
     [](const char* fileName, pcurv::table::Cloud& cloud)
     { return pcurv::csv::WriteFile(fileName, cloud); }));
 }
@@ -40,4 +44,6 @@ void vtkCSVPointCloudWriter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
+  os << indent << "NormalsArray: " << (this->NormalsArray ? this->NormalsArray : "(none)") << "\n";
+  os << indent << "PointsAsFloat: " << this->PointsAsFloat << "\n";
 }

@@ -3,8 +3,9 @@
  * @brief   writes a point set's points and point data as comma-separated
  *          text with every value exact
  *
- * A header line of column names, then one line per point: `x,y,z`, the
- * normals as `nx,ny,nz`, colors as `red,green,blue`, every other
+ * A header line of column names, then one line per point: `x,y,z` (in
+ * the points' type, or float with PointsAsFloat), the normals (as
+ * vtkPLYPointCloudWriter chooses them) as `nx,ny,nz`, colors as `red,green,blue`, every other
  * point-data array as `<name>` (one component), `<name>_x,_y,_z` (three)
  * or `<name>_0,_1,...`, named as vtkPLYPointCloudWriter names its
  * properties. Every value is written exactly, in the fewest digits that
@@ -42,6 +43,22 @@ public:
   vtkGetStringMacro(FileName);
   ///@}
 
+  ///@{
+  /// The array written as the normals (nx ny nz); none (the default): the
+  /// normals attribute, else an array named Normals.
+  vtkSetStringMacro(NormalsArray);
+  vtkGetStringMacro(NormalsArray);
+  ///@}
+
+  ///@{
+  /// Off (the default): x y z in the points' own type. On: as float, for a
+  /// smaller file where float keeps the coordinates (not so far from the
+  /// origin: float has 7 significant digits).
+  vtkSetMacro(PointsAsFloat, bool);
+  vtkGetMacro(PointsAsFloat, bool);
+  vtkBooleanMacro(PointsAsFloat, bool);
+  ///@}
+
 protected:
   vtkCSVPointCloudWriter();
   ~vtkCSVPointCloudWriter() override;
@@ -50,6 +67,8 @@ protected:
   int FillInputPortInformation(int port, vtkInformation* info) override;
 
   char* FileName = nullptr;
+  char* NormalsArray = nullptr;
+  bool PointsAsFloat = false;
 
 private:
   vtkCSVPointCloudWriter(const vtkCSVPointCloudWriter&) = delete;

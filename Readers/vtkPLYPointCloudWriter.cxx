@@ -16,6 +16,7 @@ vtkPLYPointCloudWriter::vtkPLYPointCloudWriter() = default;
 vtkPLYPointCloudWriter::~vtkPLYPointCloudWriter()
 {
   this->SetFileName(nullptr);
+  this->SetNormalsArray(nullptr);
 }
 
 //------------------------------------------------------------------------------
@@ -30,9 +31,13 @@ void vtkPLYPointCloudWriter::WriteData()
 {
   const pcurv::ply::Format format =
     this->FileType == ASCII ? pcurv::ply::Format::Ascii : pcurv::ply::Format::BinaryLittleEndian;
+  pcurv::writers::WriteOptions options;
+  options.WithFaces = true;
+  options.PointsAsFloat = this->PointsAsFloat;
+  options.NormalsArray = this->NormalsArray ? this->NormalsArray : "";
   this->SetErrorCode(pcurv::writers::WriteInput(this,
     this->FileName,
-    true,
+    options,
     [format](const char* fileName, pcurv::table::Cloud& cloud)
     { return pcurv::ply::WriteFile(fileName, cloud, format); }));
 }
@@ -42,5 +47,7 @@ void vtkPLYPointCloudWriter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
+  os << indent << "NormalsArray: " << (this->NormalsArray ? this->NormalsArray : "(none)") << "\n";
+  os << indent << "PointsAsFloat: " << this->PointsAsFloat << "\n";
   os << indent << "FileType: " << (this->FileType == ASCII ? "ASCII" : "BINARY") << "\n";
 }

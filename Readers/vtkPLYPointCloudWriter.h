@@ -5,9 +5,9 @@
  *
  * Unlike vtkPLYWriter, which writes float x y z, normals and colors only:
  * - `x y z` in the points' own type (double, or float when the points are
- *   float; other types as double);
- * - the normals (the normals attribute, else an array named Normals, of
- *   3 floating point components) as `nx ny nz`, which other tools read as
+ *   float; other types as double), or as float with PointsAsFloat;
+ * - the normals (NormalsArray, else the normals attribute, else an array
+ *   named Normals, of 3 floating point components) as `nx ny nz`, which other tools read as
  *   normals; colors (the scalars, else an array named RGB, of 3 unsigned
  *   chars) as uchar `red green blue`;
  * - every other point-data array as vertex properties of its own type
@@ -64,6 +64,22 @@ public:
   ///@}
 
   ///@{
+  /// The array written as the normals (nx ny nz); none (the default): the
+  /// normals attribute, else an array named Normals.
+  vtkSetStringMacro(NormalsArray);
+  vtkGetStringMacro(NormalsArray);
+  ///@}
+
+  ///@{
+  /// Off (the default): x y z in the points' own type. On: as float, for a
+  /// smaller file where float keeps the coordinates (not so far from the
+  /// origin: float has 7 significant digits).
+  vtkSetMacro(PointsAsFloat, bool);
+  vtkGetMacro(PointsAsFloat, bool);
+  vtkBooleanMacro(PointsAsFloat, bool);
+  ///@}
+
+  ///@{
   /// BINARY (binary_little_endian, the default) or ASCII.
   vtkSetClampMacro(FileType, int, ASCII, BINARY);
   vtkGetMacro(FileType, int);
@@ -79,6 +95,8 @@ protected:
   int FillInputPortInformation(int port, vtkInformation* info) override;
 
   char* FileName = nullptr;
+  char* NormalsArray = nullptr;
+  bool PointsAsFloat = false;
   int FileType = BINARY;
 
 private:

@@ -316,6 +316,31 @@ void TestFloatPointsAndFaces(Checks& checks)
   checks.Equal("as float", read->GetPoints()->GetDataType(), VTK_FLOAT);
 }
 
+void TestOptions(Checks& checks)
+{
+  vtkSmartPointer<vtkPolyData> cloud = MakeCloud();
+  const std::string path = Folder + "/writer_options.ply";
+  vtkNew<vtkPLYPointCloudWriter> writer;
+  writer->SetFileName(path.c_str());
+  writer->SetInputData(cloud);
+  writer->PointsAsFloatOn();
+  writer->SetNormalsArray("Maximum_Curvature_Direction");
+  writer->Write();
+  const std::string text = ReadText(path);
+  checks.True("PointsAsFloat: float x y z",
+    text.find("property float x\nproperty float y\n") != std::string::npos);
+  checks.True("NormalsArray: that array as nx ny nz",
+    text.find("comment array nx 3 Maximum_Curvature_Direction\n") != std::string::npos &&
+      text.find("property double Normals_x\n") != std::string::npos);
+  vtkSmartPointer<vtkPolyData> read = ReadBack(path);
+  vtkDataArray* direction = read->GetPointData()->GetArray("Maximum_Curvature_Direction");
+  checks.True("NormalsArray: read back as the normals, under its name",
+    direction && read->GetPointData()->GetNormals() == direction &&
+      SameBytes(direction, cloud->GetPointData()->GetArray("Maximum_Curvature_Direction")));
+  checks.True(
+    "Normals read back as an array", read->GetPointData()->GetArray("Normals") != nullptr);
+}
+
 void TestCsv(Checks& checks)
 {
   vtkNew<vtkPolyData> cloud;
@@ -378,6 +403,7 @@ int main(int argc, char* argv[])
       { "AsciiRoundTrip", TestAsciiRoundTrip },
       { "Header", TestHeader },
       { "FloatPointsAndFaces", TestFloatPointsAndFaces },
+      { "Options", TestOptions },
       { "Csv", TestCsv },
       { "Errors", TestErrors },
     });
