@@ -5,8 +5,10 @@
 #include "vtkAbstractArray.h"
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
 #include "vtkErrorCode.h"
 #include "vtkFieldData.h"
+#include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPointSet.h"
 #include "vtkPoints.h"
@@ -75,6 +77,14 @@ public:
 
   void AddArray(vtkDataArray* array, Role role, const char* name)
   {
+    // A malformed data set's array may hold fewer values than points.
+    if (static_cast<std::uint64_t>(array->GetNumberOfTuples()) < this->Cloud.Count)
+    {
+      this->Skipped.push_back(std::string(name ? name : "") + " (" +
+        std::to_string(array->GetNumberOfTuples()) + " tuples for " +
+        std::to_string(this->Cloud.Count) + " points)");
+      return;
+    }
     table::Array column;
     column.Name = name ? name : "";
     column.Kind = role;
@@ -292,11 +302,15 @@ unsigned long WriteInput(vtkWriter* writer,
     vtkErrorWithObjectMacro(writer, << "No FileName to write.");
     return vtkErrorCode::NoFileNameError;
   }
-  if (!input || !input->GetPoints())
+  if (!input)
   {
-    vtkErrorWithObjectMacro(writer, << fileName << ": the input is not a point set with points");
+    vtkErrorWithObjectMacro(writer, << fileName << ": the input is not a point set");
     return vtkErrorCode::UnknownError;
   }
+  // An empty output (no points object) is written as a file of no points.
+  vtkNew<vtkDoubleArray> noPoints;
+  noPoints->SetNumberOfComponents(3);
+  vtkDataArray* points = input->GetPoints() ? input->GetPoints()->GetData() : noPoints.Get();
   std::string error;
   try
   {
@@ -304,11 +318,11 @@ unsigned long WriteInput(vtkWriter* writer,
     builder.Cloud.Count = static_cast<std::uint64_t>(input->GetNumberOfPoints());
     if (options.PointsAsFloat)
     {
-      builder.AddFloatPoints(input->GetPoints()->GetData());
+      builder.AddFloatPoints(points);
     }
     else
     {
-      builder.AddArray(input->GetPoints()->GetData(), Role::Points, "Points");
+      builder.AddArray(points, Role::Points, "Points");
     }
     AddPointData(input->GetPointData(), options.NormalsArray, builder);
     builder.AddFields(input->GetFieldData());

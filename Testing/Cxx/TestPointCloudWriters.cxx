@@ -382,6 +382,20 @@ void TestErrors(Checks& checks)
     noFolder.Errors.find("no_such_folder/cloud.ply: cannot create the file: No such file") !=
       std::string::npos);
   checks.True("no folder: error code", noFolder.Code != vtkErrorCode::NoError);
+  vtkNew<vtkPolyData> empty; // no points object: a file of no points
+  const std::string emptyPath = Folder + "/writer_empty.ply";
+  const Written none = Write<vtkPLYPointCloudWriter>(empty, emptyPath);
+  checks.True("empty input: no error", none.Errors.empty() && none.Code == 0);
+  checks.True(
+    "empty input: 0 vertices", ReadText(emptyPath).find("element vertex 0\n") != std::string::npos);
+  vtkNew<vtkDoubleArray> shortArray; // fewer values than points: left out
+  shortArray->SetName("Short_Array");
+  shortArray->InsertNextValue(1);
+  cloud->GetPointData()->AddArray(shortArray);
+  const Written malformed = Write<vtkPLYPointCloudWriter>(cloud, Folder + "/writer_short.ply");
+  checks.True("an array shorter than the points: left out with a warning",
+    malformed.Errors.empty() &&
+      malformed.Warnings.find("Short_Array (1 tuples for 50 points)") != std::string::npos);
   const Written noName = Write<vtkCSVPointCloudWriter>(cloud, "");
   checks.True("no file name",
     noName.Errors.find("No FileName") != std::string::npos &&
