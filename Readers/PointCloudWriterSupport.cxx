@@ -155,13 +155,14 @@ private:
     return copy->GetVoidPointer(0);
   }
 
-  /// 64-bit integers beyond 2^53 lose their last digits as double.
+  /// 64-bit integers beyond 2^53 lose their last digits as double (the
+  /// range, itself a double, shows them as 2^53 or more).
   void CheckExactAsDouble(vtkDataArray* array)
   {
     const double limit = 9007199254740992.0;
     double range[2];
     array->GetRange(range, -1); // the largest magnitude of the tuples
-    if (array->GetDataTypeSize() == 8 && range[1] > limit)
+    if (array->GetDataTypeSize() == 8 && range[1] >= limit)
     {
       this->Skipped.push_back(std::string(array->GetName() ? array->GetName() : "") +
         " rounded (64-bit integers beyond 2^53 as double)");

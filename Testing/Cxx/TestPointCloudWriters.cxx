@@ -396,6 +396,17 @@ void TestErrors(Checks& checks)
   checks.True("an array shorter than the points: left out with a warning",
     malformed.Errors.empty() &&
       malformed.Warnings.find("Short_Array (1 tuples for 50 points)") != std::string::npos);
+  vtkNew<vtkIdTypeArray> huge; // beyond 2^53: double rounds it, and says so
+  huge->SetName("Huge_Ids");
+  for (vtkIdType i = 0; i < PointCount; ++i)
+  {
+    huge->InsertNextValue((vtkIdType(1) << 53) + 1);
+  }
+  cloud->GetPointData()->AddArray(huge);
+  const Written rounded = Write<vtkPLYPointCloudWriter>(cloud, Folder + "/writer_huge.ply");
+  checks.True("64-bit integers beyond 2^53: a warning",
+    rounded.Warnings.find("Huge_Ids rounded (64-bit integers beyond 2^53 as double)") !=
+      std::string::npos);
   const Written noName = Write<vtkCSVPointCloudWriter>(cloud, "");
   checks.True("no file name",
     noName.Errors.find("No FileName") != std::string::npos &&
