@@ -73,7 +73,7 @@ class CloudBuilder
 {
 public:
   table::Cloud Cloud;
-  std::vector<std::string> Skipped; // what the file leaves out, for one warning
+  std::vector<std::string> Skipped; // what the file leaves out or rounds, for one warning
 
   void AddArray(vtkDataArray* array, Role role, const char* name)
   {
@@ -326,7 +326,10 @@ unsigned long WriteInput(vtkWriter* writer,
       builder.AddArray(points, Role::Points, "Points");
     }
     AddPointData(input->GetPointData(), options.NormalsArray, builder);
-    builder.AddFields(input->GetFieldData());
+    if (options.WithFieldData)
+    {
+      builder.AddFields(input->GetFieldData());
+    }
     if (options.WithFaces)
     {
       AddFaces(input, builder);
@@ -335,7 +338,7 @@ unsigned long WriteInput(vtkWriter* writer,
     if (!builder.Skipped.empty())
     {
       vtkWarningWithObjectMacro(
-        writer, << fileName << ": not written: " << SkippedText(builder.Skipped));
+        writer, << fileName << ": not written as they are: " << SkippedText(builder.Skipped));
     }
     error = write(fileName, builder.Cloud);
   }

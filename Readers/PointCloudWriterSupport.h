@@ -27,6 +27,7 @@ using WriteFunction = std::function<std::string(const char* fileName, table::Clo
 struct WriteOptions
 {
   bool WithFaces = false;     // a polydata's polygons (PLY)
+  bool WithFieldData = false; // the field data of one value each (PLY comments)
   bool PointsAsFloat = false; // x y z as float, whatever the points' type
   std::string NormalsArray;   // written as nx ny nz; empty: the normals attribute, else Normals
 };

@@ -33,6 +33,7 @@ void vtkPLYPointCloudWriter::WriteData()
     this->FileType == ASCII ? pcurv::ply::Format::Ascii : pcurv::ply::Format::BinaryLittleEndian;
   pcurv::writers::WriteOptions options;
   options.WithFaces = true;
+  options.WithFieldData = true;
   options.PointsAsFloat = this->PointsAsFloat;
   options.NormalsArray = this->NormalsArray ? this->NormalsArray : "";
   this->SetErrorCode(pcurv::writers::WriteInput(this,
