@@ -10,22 +10,25 @@ namespace ply
 namespace
 {
 
-/// The text's first word (after one keyword and a space) and the rest.
+/// The text's first word (up to a space) and the rest after that space.
+bool FirstWord(const std::string& text, std::string& word, std::string& rest)
+{
+  const std::size_t space = text.find(' ');
+  if (space == std::string::npos || space == 0)
+  {
+    return false;
+  }
+  word = text.substr(0, space);
+  rest = text.substr(space + 1);
+  return true;
+}
+
+/// The word after "<keyword> " at the start of text, and the rest.
 bool SplitWord(const std::string& text, const char* keyword, std::string& word, std::string& rest)
 {
   const std::string prefix = std::string(keyword) + " ";
-  if (text.compare(0, prefix.size(), prefix) != 0)
-  {
-    return false;
-  }
-  const std::size_t space = text.find(' ', prefix.size());
-  if (space == std::string::npos || space == prefix.size())
-  {
-    return false;
-  }
-  word = text.substr(prefix.size(), space - prefix.size());
-  rest = text.substr(space + 1);
-  return true;
+  return text.compare(0, prefix.size(), prefix) == 0 &&
+    FirstWord(text.substr(prefix.size()), word, rest);
 }
 
 } // namespace
@@ -42,7 +45,7 @@ bool ParseArrayComment(const std::string& text, ArrayComment& comment)
 {
   std::string count, name;
   if (!SplitWord(text, "array", comment.FirstProperty, name) ||
-    !SplitWord("n " + name, "n", count, comment.Name))
+    !FirstWord(name, count, comment.Name))
   {
     return false;
   }
