@@ -341,6 +341,35 @@ void TestOptions(Checks& checks)
     "Normals read back as an array", read->GetPointData()->GetArray("Normals") != nullptr);
 }
 
+/// Comments edited by hand or by another tool: those that do not fit the
+/// properties are left out, the others still apply.
+void TestCommentsThatDoNotFit(Checks& checks)
+{
+  const std::string path = Folder + "/writer_comments.ply";
+  WriteBytes(path,
+    "ply\nformat ascii 1.0\n"
+    "comment array a 3 Runs_Past_The_End\n"
+    "comment array nx 2 Not_Normals\n"
+    "comment array nowhere 3 Missing\n"
+    "comment array q 1 With space\n"
+    "comment array c 2 Mixed_Types\n"
+    "comment field Unit metre\n"
+    "element vertex 1\n"
+    "property double x\nproperty double y\nproperty double z\n"
+    "property float nx\nproperty float ny\nproperty float nz\n"
+    "property int q\nproperty int c\nproperty float d\nproperty uchar a\nproperty uchar b\n"
+    "end_header\n1 2 3 0 0 1 7 8 9.5 10 11\n");
+  vtkSmartPointer<vtkPolyData> read = ReadBack(path);
+  vtkPointData* data = read->GetPointData();
+  checks.True("normals kept as Normals", data->GetNormals() && data->GetArray("Normals"));
+  checks.True("a run past the end: separate properties",
+    data->GetArray("a") && data->GetArray("b") && !data->GetArray("Runs_Past_The_End"));
+  checks.True("mixed types: separate properties", data->GetArray("c") && data->GetArray("d"));
+  checks.True("a name with a space restored", data->GetArray("With space") && !data->GetArray("q"));
+  auto* unit = vtkStringArray::SafeDownCast(read->GetFieldData()->GetAbstractArray("Unit"));
+  checks.True("field comment: text", unit && unit->GetValue(0) == "metre");
+}
+
 void TestCsv(Checks& checks)
 {
   vtkNew<vtkPolyData> cloud;
@@ -429,6 +458,7 @@ int main(int argc, char* argv[])
       { "Header", TestHeader },
       { "FloatPointsAndFaces", TestFloatPointsAndFaces },
       { "Options", TestOptions },
+      { "CommentsThatDoNotFit", TestCommentsThatDoNotFit },
       { "Csv", TestCsv },
       { "Errors", TestErrors },
     });
