@@ -709,7 +709,9 @@ def write_points_file(cloud, normals, path, single=False):
     writer = make(Input=producer, FileName=path, NormalsArray=normals or "", PointsAsFloat=int(as_float))
     try:
         writer.UpdatePipeline()
-        if writer.GetClientSideObject().GetErrorCode():
+        # The proxy's object gathers MPI pieces; the VTK writer inside says
+        # whether the file was written.
+        if writer.GetClientSideObject().GetWriter().GetErrorCode():
             raise OSError("see the message above")
     finally:
         simple.Delete(writer)

@@ -2,6 +2,7 @@
 writer factory, as File > Save Data and SaveData() use it:
 
     pvpython TestPointCloudWriters.py PLUGIN.so
+    mpiexec -n 2 pvbatch --mpi TestPointCloudWriters.py PLUGIN.so --distributed
 
 On a georeferenced sphere (coordinates near 637180 and 4.1e6, double, one
 point at exactly 637180.123456) read with the plugin's PLY reader and run
@@ -16,6 +17,10 @@ through the curvature filter:
   and the field data Curvature_Unit;
 * SaveData('x.csv') must keep every coordinate exactly (full precision, not
   ParaView's 5 digits) and the curvature arrays.
+
+With --distributed (pvbatch on several ranks, each reading a piece), the
+factory must still pick the plugin's writers, and both files must hold
+every rank's points, in order, bit for bit (the writers gather the pieces).
 
 Every check prints one line; the exit code is 0 when all pass, 1 otherwise.
 """
@@ -131,6 +136,44 @@ def check_csv(folder, curvatures, result, points):
     check(numpy.array_equal(column, mean, equal_nan=True), "csv: Mean_Curvature exact")
 
 
+def read_binary_ply(path):
+    """The header lines and the vertex records of a binary little-endian PLY
+    file without faces."""
+    types = {"char": "i1", "uchar": "u1", "short": "<i2", "ushort": "<u2", "int": "<i4", "uint": "<u4",
+             "float": "<f4", "double": "<f8"}
+    with open(path, "rb") as handle:
+        data = handle.read()
+    end = data.index(b"end_header\n") + len(b"end_header\n")
+    header = data[:end].decode("ascii").splitlines()
+    dtype = [(line.split()[2], types[line.split()[1]]) for line in header if line.startswith("property ")]
+    return header, numpy.frombuffer(data, dtype=dtype, offset=end)
+
+
+def check_distributed(folder, curvatures, points):
+    """Under MPI (pvbatch on several ranks, each holding a piece): the
+    factory still picks the plugin's writers, and each file holds every
+    rank's points, in order, with the arrays and field data."""
+    ranks = servermanager.vtkProcessModule.GetProcessModule().GetNumberOfLocalPartitions()
+    for extension, expected in (("ply", "APLYPointCloudWriter"), ("csv", "ACSVPointCloudWriter")):
+        name = chosen_writer(os.path.join(folder, "x." + extension), curvatures)
+        check(name == expected, "%d ranks, .%s: the writer factory picks %s (%s)" % (ranks, extension, expected, name))
+    path = os.path.join(folder, "distributed.ply")
+    simple.SaveData(path, proxy=curvatures)
+    header, records = read_binary_ply(path)
+    check(len(records) == len(points) and all(
+        numpy.array_equal(records[axis], points[:, k]) for k, axis in enumerate("xyz")),
+        "%d ranks: the .ply holds every rank's points in order, bit for bit (%d of %d)"
+        % (ranks, len(records), len(points)))
+    check("property double Mean_Curvature" in header and any(
+        line.startswith("comment field Curvature_Unit 1/") for line in header),
+        "%d ranks: the .ply has Mean_Curvature and the field data" % ranks)
+    path = os.path.join(folder, "distributed.csv")
+    simple.SaveData(path, proxy=curvatures)
+    values = numpy.genfromtxt(path, delimiter=",", skip_header=1)
+    check(values.shape[0] == len(points) and numpy.array_equal(values[:, :3], points),
+          "%d ranks: the .csv holds every rank's points in order, exactly" % ranks)
+
+
 def main(argv):
     plugin = argv[1]
     simple.LoadPlugin(plugin, remote=False)
@@ -141,6 +184,9 @@ def main(argv):
         source.UpdatePipeline()
         curvatures = simple.PrincipalCurvatures(Input=source)
         curvatures.UpdatePipeline()
+        if "--distributed" in argv:
+            check_distributed(folder, curvatures, points)
+            return finish(folder)
         result = servermanager.Fetch(curvatures)
         check(result.GetPointData().GetArray("Mean_Curvature") is not None, "the filter ran")
         for extension, expected in (("ply", "APLYPointCloudWriter"), ("csv", "ACSVPointCloudWriter")):
@@ -153,11 +199,22 @@ def main(argv):
         check(name == "CSVWriter", ".csv of a table: still ParaView's CSVWriter (%s)" % name)
         check_ply(folder, curvatures, result)
         check_csv(folder, curvatures, result, points)
-    finally:
+    except BaseException:
         shutil.rmtree(folder, ignore_errors=True)
+        raise
+    return finish(folder)
+
+
+def finish(folder):
+    shutil.rmtree(folder, ignore_errors=True)
     print("%d failed" % len(failures))
     return 1 if failures else 0
 
 
 if __name__ == "__main__":
-    sys.exit(main(sys.argv))
+    status = main(sys.argv)
+    # Under pvbatch --mpi the script runs on rank 0 only: sys.exit there
+    # skips the final barrier and the other ranks are killed. Exit only on
+    # failure; the "N failed" line is the result.
+    if status:
+        sys.exit(status)
