@@ -1,10 +1,12 @@
 // The plugin's PLY and CSV writers: a cloud with every kind of array
 // written as PLY (binary and ascii) and read back by vtkPLYPointCloudReader
 // (names, types, components, values bit for bit), the PLY header's text,
-// float points kept float, faces, full-precision CSV, and the errors.
+// float points kept float, faces, full-precision CSV, the errors, and the
+// helper that joins the pieces of a distributed cloud.
 #include "vtkCSVPointCloudWriter.h"
 #include "vtkPLYPointCloudReader.h"
 #include "vtkPLYPointCloudWriter.h"
+#include "vtkPointSetGather.h"
 
 #include "ReaderTestHelpers.h"
 #include "TestChecks.h"
@@ -370,6 +372,34 @@ void TestCommentsThatDoNotFit(Checks& checks)
   checks.True("field comment: text", unit && unit->GetValue(0) == "metre");
 }
 
+/// The helper that joins the pieces gathered from MPI ranks: one piece as
+/// it is, two appended with the first one's field data.
+void TestGather(Checks& checks)
+{
+  vtkSmartPointer<vtkPolyData> first = MakeCloud(), second = MakeCloud();
+  second->GetFieldData()->Initialize();
+  vtkNew<vtkPointSetGather> one;
+  one->AddInputData(first);
+  one->Update();
+  checks.True("one piece: the same polydata, field data kept",
+    vtkPolyData::SafeDownCast(one->GetOutputDataObject(0)) &&
+      one->GetOutput()->GetNumberOfPoints() == PointCount &&
+      one->GetOutput()->GetFieldData()->GetAbstractArray("Curvature_Unit"));
+  vtkNew<vtkPointSetGather> two;
+  two->AddInputData(first);
+  two->AddInputData(second);
+  two->Update();
+  vtkPointSet* joined = two->GetOutput();
+  checks.True("two pieces: one polydata of both",
+    vtkPolyData::SafeDownCast(joined) && joined->GetNumberOfPoints() == 2 * PointCount);
+  checks.True("two pieces: the first one's points first",
+    joined->GetPoint(0)[0] == first->GetPoint(0)[0] &&
+      joined->GetPoint(PointCount)[0] == second->GetPoint(0)[0]);
+  checks.True("two pieces: arrays and the first one's field data",
+    joined->GetPointData()->GetArray("Maximum_Curvature_Direction") &&
+      joined->GetFieldData()->GetAbstractArray("Curvature_Unit"));
+}
+
 void TestCsv(Checks& checks)
 {
   vtkNew<vtkPolyData> cloud;
@@ -459,6 +489,7 @@ int main(int argc, char* argv[])
       { "FloatPointsAndFaces", TestFloatPointsAndFaces },
       { "Options", TestOptions },
       { "CommentsThatDoNotFit", TestCommentsThatDoNotFit },
+      { "Gather", TestGather },
       { "Csv", TestCsv },
       { "Errors", TestErrors },
     });
