@@ -123,6 +123,20 @@ std::string ParseLine(const std::vector<std::string>& words, Header& header, boo
   return "unknown header line '" + keyword + "' (is end_header missing?)";
 }
 
+/// A comment line's text after the keyword and its space, without the
+/// line end.
+std::string CommentText(const std::string& line)
+{
+  std::size_t begin = line.find("comment") + 7;
+  begin += begin < line.size() && (line[begin] == ' ' || line[begin] == '\t') ? 1 : 0;
+  std::size_t end = line.size();
+  while (end > begin && (line[end - 1] == '\r' || line[end - 1] == '\n'))
+  {
+    --end;
+  }
+  return line.substr(begin, end - begin);
+}
+
 int FindProperty(const Element& element, const char* name)
 {
   for (std::size_t i = 0; i < element.Properties.size(); ++i)
@@ -168,6 +182,82 @@ int Group(const Element& vertex,
     layout.ComponentOf[found[c]] = static_cast<int>(c);
   }
   return index;
+}
+
+/// A name no column of the layout has yet: name, else name_<index>.
+std::string UniqueColumnName(const VertexLayout& layout, const std::string& name, std::size_t index)
+{
+  for (const Column& other : layout.Columns)
+  {
+    if (other.Name == name)
+    {
+      return name + "_" + std::to_string(index); // a property named Normals, RGB, ...
+    }
+  }
+  return name;
+}
+
+/// Whether properties [first, first + count) are scalars of one type that
+/// no column holds yet.
+bool FreeRun(const Element& vertex, const VertexLayout& layout, std::size_t first, int count)
+{
+  if (count < 1 || first + count > vertex.Properties.size())
+  {
+    return false;
+  }
+  for (std::size_t p = first; p < first + count; ++p)
+  {
+    const Property& property = vertex.Properties[p];
+    if (property.IsList || layout.ColumnOf[p] >= 0 ||
+      property.ValueType != vertex.Properties[first].ValueType)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+/// What one array comment makes of the vertex properties: a new column of
+/// the properties it names, or Normals or RGB under the array's own name.
+/// A comment that does not fit the properties (edited by another tool) is
+/// left out.
+void ApplyArrayComment(const Element& vertex, const ArrayComment& comment, VertexLayout& layout)
+{
+  std::size_t first = 0;
+  while (first < vertex.Properties.size() && vertex.Properties[first].Name != comment.FirstProperty)
+  {
+    ++first;
+  }
+  if (first == vertex.Properties.size())
+  {
+    return;
+  }
+  const int existing = layout.ColumnOf[first];
+  if (existing >= 0)
+  {
+    Column& column = layout.Columns[existing];
+    if (existing != layout.Points && layout.ComponentOf[first] == 0 &&
+      column.Components == comment.Components)
+    {
+      column.Name = comment.Name;
+    }
+    return;
+  }
+  if (!FreeRun(vertex, layout, first, comment.Components))
+  {
+    return;
+  }
+  Column column;
+  column.Name = UniqueColumnName(layout, comment.Name, first);
+  column.Components = comment.Components;
+  column.ValueType = vertex.Properties[first].ValueType;
+  const int index = static_cast<int>(layout.Columns.size());
+  layout.Columns.push_back(column);
+  for (int c = 0; c < comment.Components; ++c)
+  {
+    layout.ColumnOf[first + c] = index;
+    layout.ComponentOf[first + c] = c;
+  }
 }
 
 /// The fewest bytes a record of element can take: its binary size without
@@ -243,7 +333,8 @@ std::string ParseHeader(const char* data, std::size_t size, Header& header)
                              : "the header has no end_header line";
     }
     const std::size_t length = static_cast<const char*>(newline) - start;
-    std::istringstream line(std::string(start, length));
+    const std::string text(start, length);
+    std::istringstream line(text);
     position += length + 1;
     ++lineNumber;
     std::vector<std::string> words;
@@ -262,6 +353,10 @@ std::string ParseHeader(const char* data, std::size_t size, Header& header)
     if (lineNumber == 2 && (words.empty() || words[0] != "format"))
     {
       return "header line 2: the format line must follow 'ply'";
+    }
+    if (!words.empty() && words[0] == "comment")
+    {
+      header.Comments.push_back(CommentText(text));
     }
     const std::string error = words.empty() ? std::string() : ParseLine(words, header, done);
     if (!error.empty())
@@ -312,7 +407,7 @@ std::string FindVertexElement(const Header& header, std::size_t& vertex)
 }
 
 //------------------------------------------------------------------------------
-VertexLayout PlanVertexColumns(const Element& vertex)
+VertexLayout PlanVertexColumns(const Element& vertex, const std::vector<std::string>& comments)
 {
   VertexLayout layout;
   layout.ColumnOf.assign(vertex.Properties.size(), -1);
@@ -330,6 +425,14 @@ VertexLayout PlanVertexColumns(const Element& vertex)
   }
   const Type byte = Type::UInt8;
   layout.Colors = Group(vertex, { "red", "green", "blue" }, "RGB", &byte, layout);
+  for (const std::string& text : comments)
+  {
+    ArrayComment comment;
+    if (ParseArrayComment(text, comment))
+    {
+      ApplyArrayComment(vertex, comment, layout);
+    }
+  }
   for (std::size_t i = 0; i < vertex.Properties.size(); ++i)
   {
     const Property& property = vertex.Properties[i];
@@ -338,15 +441,8 @@ VertexLayout PlanVertexColumns(const Element& vertex)
       continue;
     }
     Column column;
-    column.Name = property.Name;
+    column.Name = UniqueColumnName(layout, property.Name, i);
     column.ValueType = property.ValueType;
-    for (const Column& other : layout.Columns)
-    {
-      if (other.Name == column.Name)
-      {
-        column.Name += "_" + std::to_string(i); // a property named Normals, RGB, ...
-      }
-    }
     layout.ColumnOf[i] = static_cast<int>(layout.Columns.size());
     layout.Columns.push_back(column);
   }
@@ -370,7 +466,7 @@ std::string File::ReadHeader(std::uint64_t fileSize)
   }
   if (error.empty())
   {
-    this->TheLayout = PlanVertexColumns(this->Vertices());
+    this->TheLayout = PlanVertexColumns(this->Vertices(), this->TheHeader.Comments);
   }
   return error;
 }

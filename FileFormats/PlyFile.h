@@ -9,6 +9,7 @@
 #define pcurv_PlyFile_h
 
 #include "FileFormats/FileInput.h"
+#include "FileFormats/PlyComments.h"
 
 #include <cstdint>
 #include <string>
@@ -63,7 +64,8 @@ struct Header
 {
   Format BodyFormat = Format::Ascii;
   std::vector<Element> Elements;
-  std::size_t BodyOffset = 0; // the first byte after end_header's line
+  std::vector<std::string> Comments; // each comment line's text after "comment "
+  std::size_t BodyOffset = 0;        // the first byte after end_header's line
 };
 
 /**
@@ -89,8 +91,10 @@ struct Column
  * What each vertex property becomes: x y z the column Points (float when
  * all three are float, else double); nx ny nz (or normal_x ..., normalx
  * ..., n_x ...) Normals, the same way; red green blue, when all uchar, RGB
- * (3 x uchar); any other scalar property a column of its own name and type.
- * List properties are skipped.
+ * (3 x uchar); the properties an array comment names (consecutive, scalar,
+ * of one type) an array of its name, and Normals or RGB renamed by one;
+ * any other scalar property a column of its own name and type. List
+ * properties are skipped.
  */
 struct VertexLayout
 {
@@ -102,7 +106,8 @@ struct VertexLayout
   int Normals = -1;
   int Colors = -1;
 };
-VertexLayout PlanVertexColumns(const Element& vertex);
+VertexLayout PlanVertexColumns(const Element& vertex,
+  const std::vector<std::string>& comments = std::vector<std::string>());
 
 /// An open PLY file: Open (InputFile's) reads and checks the header and
 /// the vertex element, Read the vertices.

@@ -4,15 +4,19 @@
 #include "PointCloudReaderSupport.h"
 
 #include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
 #include "vtkErrorCode.h"
+#include "vtkFieldData.h"
 #include "vtkInformation.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkStringArray.h"
 
 #include <string>
+#include <vector>
 
 vtkStandardNewMacro(vtkPLYPointCloudReader);
 
@@ -65,6 +69,36 @@ void MakeArrays(vtkPolyData* output, pcurv::ply::VertexLayout& layout, vtkIdType
   }
 }
 
+/// The header's "field" comments (PlyComments.h) as field data: numbers
+/// as a double array, other text as a string.
+void AddFieldComments(const pcurv::ply::Header& header, vtkPolyData* output)
+{
+  for (const std::string& comment : header.Comments)
+  {
+    std::string name, value;
+    std::vector<double> numbers;
+    if (!pcurv::ply::ParseFieldComment(comment, name, value))
+    {
+      continue;
+    }
+    if (pcurv::ply::ParseNumbers(value, numbers))
+    {
+      vtkNew<vtkDoubleArray> array;
+      array->SetName(name.c_str());
+      array->SetNumberOfComponents(static_cast<int>(numbers.size()));
+      array->InsertNextTuple(numbers.data());
+      output->GetFieldData()->AddArray(array);
+    }
+    else
+    {
+      vtkNew<vtkStringArray> array;
+      array->SetName(name.c_str());
+      array->InsertNextValue(value);
+      output->GetFieldData()->AddArray(array);
+    }
+  }
+}
+
 /// The piece of the file's vertices that outInfo asks for, in output; an
 /// empty string, or what is wrong.
 std::string ReadVertices(const char* fileName, vtkPolyData* output, vtkInformation* outInfo)
@@ -80,6 +114,7 @@ std::string ReadVertices(const char* fileName, vtkPolyData* output, vtkInformati
   MakeArrays(output, file.Layout(), count);
   error = file.Read(piece.Begin, piece.End);
   pcurv::readers::AddVertexCells(output, count);
+  AddFieldComments(file.GetHeader(), output);
   return error;
 }
 

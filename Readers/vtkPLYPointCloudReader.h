@@ -15,7 +15,13 @@
  *   blue;
  * - every other scalar vertex property as a point-data array of its name
  *   and type (e.g. `label`, `quality`, `alpha`; a name clashing with the
- *   arrays above gets _<index>). List properties of the vertex are skipped.
+ *   arrays above gets _<index>). List properties of the vertex are skipped;
+ * - the arrays that the header's "array" comments describe (as
+ *   vtkPLYPointCloudWriter writes them: the properties Name_x Name_y Name_z
+ *   of a 3-component array, a name with spaces) as those arrays, in their
+ *   properties' type, and Normals and RGB under the name a comment gives;
+ * - the header's "field" comments as field data (numbers as a double
+ *   array, other text as a string array: `Curvature_Unit`).
  * Other elements (faces, edges, ...) are skipped: the output is the cloud,
  * with one vertex cell per point. Piece requests are honored.
  *

@@ -44,12 +44,14 @@ INPUT may be:
 Writes OUTPUT with the input's arrays and the curvature arrays, in the
 format of its extension: .vtp (VTK XML, inline binary); .ply (binary little
 endian: x y z, nx ny nz, red green blue for an RGB array, every scalar array
-as a float or double property of its name and every vector array as
-<name>_x <name>_y <name>_z, which CloudCompare and MeshLab read as scalar
-fields); .csv (a header line of the same column names, one row per point);
-.las (LAS 1.4 through the plugin's LAS Point Cloud Writer: the lidar fields
-as such, every other array as described extra bytes, and a LAS input's
-scale, offset and coordinate system kept).
+as a property of its name and type and every vector array as <name>_x
+<name>_y <name>_z, which CloudCompare and MeshLab read as scalar fields,
+and the plugin's PLY reader back as the arrays); .csv (a header line of
+the same column names, one row per point, every value exact). Both are
+written by the plugin's PLY and CSV Point Cloud Writers. .las (LAS 1.4
+through the plugin's LAS Point Cloud Writer: the lidar fields as such,
+every other array as described extra bytes, and a LAS input's scale,
+offset and coordinate system kept).
 It prints a summary: point counts (the unestimated ones by reason), the
 thresholds used, percentiles of the curvatures over the estimated points,
 and the time the filter took. On a terminal it also shows the stages and a
@@ -706,30 +708,6 @@ def write_las(curvatures, path):
         fail("could not write %s: %s" % (path, "; ".join(errors) or "see the messages above"))
 
 
-def column_name(name, used):
-    """name as a PLY property and CSV column name: printable ASCII without
-    white space, commas or quotes, and not one of the names in used."""
-    import re
-
-    name = re.sub(r"[^!-~]|[,\"']", "_", name) or "Array"
-    unique, suffix = name, 2
-    while unique in used:
-        unique, suffix = "%s_%d" % (name, suffix), suffix + 1
-    used.add(unique)
-    return unique
-
-
-def ply_kind_of_vtk():
-    """PLY property types of the VTK array types kept as they are (flags and
-    counts stay integers, float stays float); others are written as double."""
-    from vtkmodules.vtkCommonCore import VTK_FLOAT, VTK_INT, VTK_UNSIGNED_CHAR
-
-    return {VTK_FLOAT: "float", VTK_INT: "int", VTK_UNSIGNED_CHAR: "uchar"}
-
-
-PLY_KIND_OF_VTK = ply_kind_of_vtk()
-
-
 def float_keeps_points(points):
     """Whether float coordinates stay within a millionth of the cloud's size
     of the double ones (not so for coordinates far from the origin, such as
@@ -743,97 +721,49 @@ def float_keeps_points(points):
     return numpy.isfinite(size) and error <= 1e-6 * size
 
 
-def output_columns(cloud, normals, single=False):
-    """The cloud as columns (name, values, PLY type) for PLY and CSV: x y z;
-    nx ny nz from the normals array; red green blue (uchar) from a
-    3-component unsigned char array named RGB; every other array with one
-    component under its name, with 3 as <name>_x <name>_y <name>_z, with
-    other counts as <name>_0, <name>_1, ...: float, int or uchar if stored
-    so, else double. Non-numeric arrays are left out."""
+def write_points_file(cloud, normals, path, single=False):
+    """The cloud (a data set in this process) as .ply or .csv, by path's
+    extension, through the plugin's writers (PLY and CSV Point Cloud
+    Writer, what SaveData picks): x y z, the normals array as nx ny nz,
+    RGB as red green blue, every other array in its own type (vectors as
+    <name>_x _y _z); with `single`, float points where float keeps them.
+    Raises OSError when the writer fails (it prints why)."""
     from vtkmodules.util.numpy_support import vtk_to_numpy
-    from vtkmodules.vtkCommonCore import VTK_FLOAT, VTK_UNSIGNED_CHAR
+    from vtkmodules.vtkCommonCore import VTK_DOUBLE
 
-    used = set()
-    points = vtk_to_numpy(cloud.GetPoints().GetData()).reshape(-1, 3)
-    point_type = "float" if cloud.GetPoints().GetDataType() == VTK_FLOAT else "double"
-    if single and point_type == "double" and float_keeps_points(points):
-        point_type = "float"
-    columns = [(column_name(axis, used), points[:, i], point_type) for i, axis in enumerate("xyz")]
-    data = cloud.GetPointData()
-    normal_array = data.GetArray(normals) if normals else None
-    if normal_array is not None and normal_array.GetNumberOfComponents() == 3:
-        values = vtk_to_numpy(normal_array).reshape(-1, 3)
-        kind = "float" if normal_array.GetDataType() == VTK_FLOAT else "double"
-        columns += [(column_name(axis, used), values[:, i], kind) for i, axis in enumerate(("nx", "ny", "nz"))]
-    else:
-        normals = None
-    for index in range(data.GetNumberOfArrays()):
-        array = data.GetArray(index)  # None for string arrays
-        if array is None or (normals and array.GetName() == normals):
-            continue
-        name = array.GetName() or "Array_%d" % index
-        values = vtk_to_numpy(array)
-        count = array.GetNumberOfComponents()
-        kind = PLY_KIND_OF_VTK.get(array.GetDataType(), "double")
-        if count == 3 and name == "RGB" and array.GetDataType() == VTK_UNSIGNED_CHAR:
-            columns += [(column_name(c, used), values[:, i], "uchar") for i, c in enumerate(("red", "green", "blue"))]
-        elif count == 1:
-            columns.append((column_name(name, used), values.reshape(-1), kind))
-        else:
-            values = values.reshape(-1, count)
-            suffixes = ("x", "y", "z") if count == 3 else [str(i) for i in range(count)]
-            columns += [(column_name("%s_%s" % (name, suffix), used), values[:, i], kind)
-                        for i, suffix in enumerate(suffixes)]
-    return columns
-
-
-NUMPY_OF_PLY = {"uchar": "u1", "int": "<i4", "float": "<f4", "double": "<f8"}
-
-
-def column_records(columns):
-    """The columns as one numpy record array."""
-    import numpy
-
-    records = numpy.empty(len(columns[0][1]), dtype=[(name, NUMPY_OF_PLY[kind]) for name, _, kind in columns])
-    for name, values, _ in columns:
-        records[name] = values
-    return records
+    points = cloud.GetPoints()
+    as_float = bool(single and points is not None and points.GetDataType() == VTK_DOUBLE
+                    and float_keeps_points(vtk_to_numpy(points.GetData()).reshape(-1, 3)))
+    producer = producer_of(cloud)
+    make = simple.PLYPointCloudWriter if path.lower().endswith(".ply") else simple.CSVPointCloudWriter
+    writer = make(Input=producer, FileName=path, NormalsArray=normals or "", PointsAsFloat=int(as_float))
+    try:
+        writer.UpdatePipeline()
+        # The proxy's object gathers MPI pieces; the VTK writer inside says
+        # whether the file was written.
+        if writer.GetClientSideObject().GetWriter().GetErrorCode():
+            raise OSError("see the message above")
+    finally:
+        simple.Delete(writer)
+        simple.Delete(producer)
 
 
 def write_ply(cloud, normals, path, single=False):
     """The points and their arrays as a binary little-endian PLY vertex
-    element (no faces), one property per column."""
-    columns = output_columns(cloud, normals, single)
-    header = ["ply", "format binary_little_endian 1.0",
-              "comment principal curvatures by Tools/estimate_curvatures.py",
-              "element vertex %d" % cloud.GetNumberOfPoints()]
-    header += ["property %s %s" % (kind, name) for name, _, kind in columns]
-    header.append("end_header")
-    with open(path, "wb") as handle:
-        handle.write(("\n".join(header) + "\n").encode("ascii"))
-        handle.write(column_records(columns).tobytes())
+    element (write_points_file)."""
+    write_points_file(cloud, normals, path, single)
 
 
 def write_csv(cloud, normals, path, single=False):
     """The points and their arrays as comma-separated text: a header line of
-    the column names, one row per point (round-trip precision, integers
-    without a fraction)."""
-    import numpy
-
-    columns = output_columns(cloud, normals, single)
-    formats = []
-    for _, values, kind in columns:
-        if kind == "uchar" or (values.dtype.kind in "iub"):
-            formats.append("%d")
-        else:
-            formats.append("%.9g" if kind == "float" else "%.17g")
-    numpy.savetxt(path, column_records(columns), fmt=formats, delimiter=",",
-                  header=",".join(name for name, _, _ in columns), comments="")
+    the column names, one row per point, every value exact
+    (write_points_file)."""
+    write_points_file(cloud, normals, path, single)
 
 
 def write_output(curvatures, result, normals, path, compress=False, single=False):
     """Writes the filter's output (result, fetched) in the format of path's
-    extension (.vtp, .ply, .csv), a .vtp compressed with `compress`; exits
+    extension (.vtp, .ply, .csv, .las), a .vtp compressed with `compress`; exits
     with a message if that fails."""
     extension = os.path.splitext(path)[1].lower()
     if extension == ".vtp":
