@@ -27,9 +27,9 @@ nice cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAG
   -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=address,undefined" \
   -DPCURV_BUILD_BENCHMARKS=OFF -DPCURV_BUILD_STUDY=OFF > /dev/null
 nice cmake --build build-asan -j 2 --target TestCurvatureCore TestPrincipalCurvatureEstimation \
-  TestCloudEstimation TestOrientedCircles TestAutomaticScale TestNormalEstimation TestNeighborGrid TestOutliers \
+  TestCloudEstimation TestOrientedCircles TestAutomaticScale TestNormalEstimation TestNeighborGrid TestOutliers TestOpenScans \
   TestDynamicAdjustment TestBadInputConfiguration TestBadInputPoints TestBadInputScale \
-  TestLASReader TestLASWriter TestPLYReader ReplayReaderSeeds
+  TestLASReader TestLASWriter TestPointCloudWriters TestPLYReader ReplayReaderSeeds
 built=$(date +%s)
 export ASAN_OPTIONS="detect_leaks=0:abort_on_error=1:halt_on_error=1:detect_stack_use_after_return=1:strict_init_order=1:check_initialization_order=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
@@ -38,5 +38,5 @@ cd build-asan
 # slowdown of the sanitizers on a busy 2-core machine. Two tests at a time:
 # most are single-threaded, and the sanitized runs are most of CI's time.
 nice ctest --output-on-failure --timeout 3600 -j 2 \
-  -R "${PCURV_SANITIZE_TESTS:-^((CurvatureCore|PrincipalCurvatureEstimation|DynamicAdjustment|BadInput(Configuration|Points|Scale))(_STDThread)?|(CloudEstimation|OrientedCircles|AutomaticScale|NormalEstimation|NeighborGrid|Outliers)\..*|BadInputExtreme_.*|LASReader|LASWriter\..*|PLYReader|FuzzReaderSeeds)$}"
+  -R "${PCURV_SANITIZE_TESTS:-^((CurvatureCore|PrincipalCurvatureEstimation|DynamicAdjustment|BadInput(Configuration|Points|Scale))(_STDThread)?|(CloudEstimation|OrientedCircles|AutomaticScale|NormalEstimation|NeighborGrid|Outliers|OpenScans)\..*|BadInputExtreme_.*|LASReader|LASWriter\..*|PointCloudWriters\..*|PLYReader|FuzzReaderSeeds)$}"
 echo "sanitizers: build $((built - start)) s, tests $(($(date +%s) - built)) s"
