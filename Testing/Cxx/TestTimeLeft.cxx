@@ -18,7 +18,8 @@ void TestShortRun(Checks& checks)
   checks.True(("a 3 s run at 85 %: '" + text + "'").c_str(), text == "Run: less than 10 s left");
   checks.True("a 3 s run at 99 %: less than 10 s",
     ProgressText("Run", 0.99, 2.97) == "Run: less than 10 s left");
-  checks.True("9 s left: less than 10 s", ProgressText("Run", 0.5, 9.0) == "Run: less than 10 s left");
+  checks.True(
+    "9 s left: less than 10 s", ProgressText("Run", 0.5, 9.0) == "Run: less than 10 s left");
 }
 
 /// Estimates of 10 s and more, to the nearest 5 s or minute.
