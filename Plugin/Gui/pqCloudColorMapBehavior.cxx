@@ -28,7 +28,8 @@ vtkSMProxy* MapOfSameArrayInView(pqRepresentation* representation,
   for (pqRepresentation* other : view->getRepresentations())
   {
     vtkSMProxy* proxy = other ? other->getProxy() : nullptr;
-    if (other == representation || !other->isVisible() || !proxy->GetProperty("LookupTable") ||
+    if (!proxy || other == representation || !other->isVisible() ||
+      !proxy->GetProperty("LookupTable") || !proxy->GetProperty("Input") ||
       !pcurv::IsCloudFilter(vtkSMPropertyHelper(proxy, "Input").GetAsProxy()))
     {
       continue;
