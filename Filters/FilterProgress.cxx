@@ -1,11 +1,11 @@
 #include "FilterProgress.h"
 
+#include "Common/TimeLeft.h"
+
 #include "vtkSMPTools.h"
 #include "vtkAlgorithm.h"
 
-#include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <cstdlib>
 #include <future>
 #include <string>
@@ -22,37 +22,6 @@ struct RunnerFunctor
   void operator()(vtkIdType begin, vtkIdType end) { this->Run(begin, end); }
 };
 } // namespace
-
-namespace
-{
-/// "35 s", "2 min", "1 h 5 min": coarse enough not to flicker, rounded up
-/// below a minute (to 5 s) and to the nearest minute above.
-std::string RoughDuration(double seconds)
-{
-  if (seconds < 57.5)
-  {
-    return std::to_string(5 * std::max(1, static_cast<int>(std::ceil(seconds / 5.0)))) + " s";
-  }
-  const long minutes = std::lround(seconds / 60.0);
-  if (minutes < 60)
-  {
-    return std::to_string(minutes) + " min";
-  }
-  return std::to_string(minutes / 60) + " h " + std::to_string(minutes % 60) + " min";
-}
-} // namespace
-
-std::string ProgressText(const std::string& label, double fraction, double elapsedSeconds)
-{
-  fraction = std::min(std::max(fraction, 0.0), 1.0);
-  // Before a second has passed or 1 % is done, the pace says little (the
-  // first stages are not the slowest).
-  if (elapsedSeconds < 1.0 || fraction < 0.01 || fraction >= 1.0)
-  {
-    return label;
-  }
-  return label + ": about " + RoughDuration(elapsedSeconds * (1.0 - fraction) / fraction) + " left";
-}
 
 AlgorithmProgress::AlgorithmProgress(vtkAlgorithm* algorithm, std::string label)
   : Algorithm(algorithm)

@@ -21,17 +21,11 @@ class vtkAlgorithm;
 namespace pcurv
 {
 
-/// "Principal curvatures: about 2 min left": `label` and the time left if
-/// the rest goes at the pace so far (`elapsedSeconds` since the start, the
-/// part `fraction` done); `label` alone while the pace is not yet known
-/// (the first second, or less than 1 % done) and at the end. ParaView's
-/// progress bar adds the percentage.
-std::string ProgressText(const std::string& label, double fraction, double elapsedSeconds);
-
 /// Progress from the core's threads, passed to a filter on the thread that
 /// runs the filter: ParaView shows progress, and honors Abort, only from
 /// there. The filter's abort flag travels back the same way. The filter's
-/// progress text (what ParaView's progress bar shows) says the time left.
+/// progress text (what ParaView's progress bar shows) says the time left
+/// (ProgressText, Common/TimeLeft.h).
 class AlgorithmProgress : public ProgressMonitor
 {
 public:

@@ -1,5 +1,6 @@
 #include "vtkLASPointCloudReader.h"
 
+#include "FileFormats/LasColors.h"
 #include "FileFormats/LasFile.h"
 #include "LasFieldData.h"
 #include "PointCloudReaderSupport.h"
@@ -14,6 +15,8 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 
+#include <cstddef>
+#include <cstdint>
 #include <string>
 
 vtkStandardNewMacro(vtkLASPointCloudReader);
@@ -81,6 +84,33 @@ pcurv::las::PointBuffers MakeArrays(vtkPolyData* output, int format, vtkIdType c
   return out;
 }
 
+/// The colors as one 3-component unsigned char array RGB, the active
+/// scalars: ParaView colors by it at the first Apply, and shows the true
+/// colors with Map Scalars off. Red, Green and Blue stay as read (the LAS
+/// writer writes them back; RGB is derived, and it skips it).
+void AddEightBitColors(vtkPointData* pointData,
+  const pcurv::las::PointBuffers& buffers,
+  vtkIdType count)
+{
+  // An extra-bytes dimension named RGB keeps its name.
+  if (!buffers.Red || !buffers.Green || !buffers.Blue || pointData->GetArray("RGB"))
+  {
+    return;
+  }
+  vtkSmartPointer<vtkDataArray> rgb = pcurv::readers::NewArray(VTK_UNSIGNED_CHAR, "RGB", 3, count);
+  const auto points = static_cast<std::size_t>(count);
+  const bool sixteenBit =
+    pcurv::las::HasSixteenBitColors(buffers.Red, buffers.Green, buffers.Blue, points);
+  pcurv::las::ToEightBitColors(buffers.Red,
+    buffers.Green,
+    buffers.Blue,
+    points,
+    sixteenBit,
+    static_cast<std::uint8_t*>(rgb->GetVoidPointer(0)));
+  pointData->AddArray(rgb);
+  pointData->SetActiveScalars("RGB");
+}
+
 /// The piece of the file's points that outInfo asks for, in output; an
 /// empty string, or what is wrong.
 std::string ReadPoints(const char* fileName, vtkPolyData* output, vtkInformation* outInfo)
@@ -99,6 +129,10 @@ std::string ReadPoints(const char* fileName, vtkPolyData* output, vtkInformation
     output->GetPointData(), pcurv::las::ExtraFieldsOf(file.GetHeader(), records), count);
   pcurv::readers::AddFileDescription(output->GetFieldData(), file.GetHeader(), records);
   error = file.Read(piece.Begin, piece.End, buffers);
+  if (error.empty())
+  {
+    AddEightBitColors(output->GetPointData(), buffers, count);
+  }
   pcurv::readers::AddVertexCells(output, count);
   return error;
 }

@@ -19,8 +19,12 @@
  * - `GpsTime` (double) in formats 1 and 3-10.
  * - `Red`, `Green`, `Blue` (unsigned short, as stored: LAS colors are
  *   16-bit) in formats 2, 3, 5, 7, 8, 10, and `Infrared` in 8 and 10. Three
- *   arrays rather than one 3-component one: ParaView offers a 3-component
- *   array as normals, and a color is not one.
+ *   arrays, as PDAL names them, which vtkLASPointCloudWriter writes back.
+ * - `RGB` (unsigned char, 3 components), the active scalars, with those:
+ *   the colors at 8 bits, for display (ParaView colors by it at the first
+ *   Apply; with Map Scalars off it shows the true colors). 16-bit colors
+ *   are scaled (65535 to 255); files that store 8-bit values in the 16-bit
+ *   fields (no value above 255 in the piece read) are taken as they are.
  * - The extra bytes an Extra Bytes record (LASF_Spec 4) describes: an array
  *   per dimension of its name and type (double when the descriptor scales
  *   or offsets it); three dimensions <name>_X, _Y, _Z of one type as one

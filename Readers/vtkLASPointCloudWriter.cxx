@@ -104,6 +104,17 @@ Column* StandardField(PointSet& points, const std::string& name)
   return nullptr;
 }
 
+/// RGB as vtkLASPointCloudReader derives it (3 unsigned chars) beside the
+/// Red, Green and Blue it comes from: those fill the color fields, and RGB
+/// would only repeat them, at 8 bits, as extra bytes.
+bool IsDerivedColors(vtkPointData* pointData, vtkDataArray* array, const std::string& name)
+{
+  const bool channels =
+    pointData->GetArray("Red") && pointData->GetArray("Green") && pointData->GetArray("Blue");
+  return name == "RGB" && array->GetDataType() == VTK_UNSIGNED_CHAR &&
+    array->GetNumberOfComponents() == 3 && channels;
+}
+
 /// name + suffix in at most 32 characters, not yet in used.
 std::string DimensionName(const std::string& name,
   const std::string& suffix,
@@ -192,7 +203,7 @@ void vtkLASPointCloudWriter::WriteData()
       vtkWarningMacro(<< "The array '" << name << "' is not numeric: it is not written to LAS.");
       continue;
     }
-    if (name == "vtkGhostType")
+    if (name == "vtkGhostType" || IsDerivedColors(pointData, array, name))
       continue;
     Column* standard = StandardField(points, name);
     if (standard && array->GetNumberOfComponents() == 1)

@@ -8,7 +8,9 @@
  * ReturnNumber, NumberOfReturns, ClassFlags, ScannerChannel,
  * ScanDirectionFlag, EdgeOfFlightLine, Classification, UserData,
  * PointSourceId, ScanAngle (degrees; else ScanAngleRank, whole degrees),
- * GpsTime, Red, Green, Blue, Infrared. Every other numeric array (the
+ * GpsTime, Red, Green, Blue, Infrared. The 8-bit RGB the reader derives
+ * from Red, Green and Blue is not written when those are there. Every
+ * other numeric array (the
  * curvatures, directions, normals, flags, ...) is kept as extra bytes in
  * its own type, described by an Extra Bytes record (LASF_Spec 4): one
  * dimension per component, a 3-component array as <name>_X, _Y, _Z, others

@@ -1,6 +1,7 @@
 /**
  * @file CloudFilterNames.h
- * @brief Which proxies are this plugin's filters, for the GUI behaviors.
+ * @brief Which proxies are this plugin's filters and readers, for the GUI
+ * behaviors.
  */
 #ifndef CloudFilterNames_h
 #define CloudFilterNames_h
@@ -20,6 +21,23 @@ inline bool IsCloudFilter(vtkSMProxy* proxy)
   return name &&
     (std::strcmp(name, "PrincipalCurvatureEstimation") == 0 ||
       std::strcmp(name, "PointCloudNormalEstimation") == 0);
+}
+
+/// The plugin's readers (Plugin/PointCloudReaders.xml).
+inline bool IsCloudReader(vtkSMProxy* proxy)
+{
+  const char* name = proxy ? proxy->GetXMLName() : nullptr;
+  const char* const readers[] = {
+    "ASCIIPointCloudReader", "ALASPointCloudReader", "APLYPointCloudReader", "OFFMeshReader"
+  };
+  for (const char* reader : readers)
+  {
+    if (name && std::strcmp(name, reader) == 0)
+    {
+      return true;
+    }
+  }
+  return false;
 }
 
 } // namespace pcurv

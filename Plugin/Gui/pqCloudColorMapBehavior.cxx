@@ -12,6 +12,54 @@
 
 #include <string>
 
+namespace
+{
+/// The color map of another visible display of the plugin's filters in the
+/// same view, colored by the same array: the map the new display shares.
+vtkSMProxy* MapOfSameArrayInView(pqRepresentation* representation,
+  const std::string& arrayName,
+  int association)
+{
+  pqView* view = representation->getView();
+  if (!view)
+  {
+    return nullptr;
+  }
+  for (pqRepresentation* other : view->getRepresentations())
+  {
+    vtkSMProxy* proxy = other ? other->getProxy() : nullptr;
+    if (!proxy || other == representation || !other->isVisible() ||
+      !proxy->GetProperty("LookupTable") || !proxy->GetProperty("Input") ||
+      !pcurv::IsCloudFilter(vtkSMPropertyHelper(proxy, "Input").GetAsProxy()))
+    {
+      continue;
+    }
+    vtkSMPropertyHelper colorArray(proxy, "ColorArrayName");
+    const char* name = colorArray.GetInputArrayNameToProcess();
+    if (name && arrayName == name && colorArray.GetInputArrayAssociation() == association)
+    {
+      return vtkSMPropertyHelper(proxy, "LookupTable").GetAsProxy();
+    }
+  }
+  return nullptr;
+}
+
+/// Colors `display` with `map` (and its opacity function), and widens the
+/// map to this display's range too.
+void ShareMap(vtkSMProxy* display, vtkSMProxy* map)
+{
+  vtkSMPropertyHelper(display, "LookupTable").Set(map);
+  if (display->GetProperty("ScalarOpacityFunction") && map->GetProperty("ScalarOpacityFunction"))
+  {
+    vtkSMPropertyHelper(display, "ScalarOpacityFunction")
+      .Set(vtkSMPropertyHelper(map, "ScalarOpacityFunction").GetAsProxy());
+  }
+  display->UpdateVTKObjects();
+  vtkSMPVRepresentationProxy::RescaleTransferFunctionToDataRange(
+    display, /*extend=*/true, /*force=*/true);
+}
+} // namespace
+
 pqCloudColorMapBehavior::pqCloudColorMapBehavior(QObject* parent)
   : QObject(parent)
 {
@@ -52,7 +100,13 @@ void pqCloudColorMapBehavior::giveOwnColorMap(pqRepresentation* representation)
   vtkSMPropertyHelper colorArray(display, "ColorArrayName");
   const std::string arrayName =
     colorArray.GetInputArrayNameToProcess() ? colorArray.GetInputArrayNameToProcess() : "";
-  if (!arrayName.empty())
+  const int association = colorArray.GetInputArrayAssociation();
+  if (vtkSMProxy* shared =
+        arrayName.empty() ? nullptr : MapOfSameArrayInView(representation, arrayName, association))
+  {
+    ShareMap(display, shared);
+  }
+  else if (!arrayName.empty())
   {
     vtkSMPVRepresentationProxy::SetScalarColoring(
       display, arrayName.c_str(), colorArray.GetInputArrayAssociation());

@@ -1,7 +1,8 @@
 /**
  * @class pqCloudColorMapBehavior
- * @brief Gives each display of this plugin's filters its own color map,
- * scaled to that output's range when it is first shown.
+ * @brief Gives the displays of this plugin's filters one color map per
+ * view and array, scaled to the outputs shown there when each is first
+ * shown.
  *
  * ParaView keeps one color map per array name, and its default rescale
  * mode only grows that map's range at each Apply: a second cloud colored
@@ -11,7 +12,13 @@
  * then spans every visible display using the map, the first cloud's too.
  * A separate color map per display (ParaView's "Use Separate Color Map")
  * gives each cloud its own range, and leaves the others' colors as they
- * were. Not applied while a state file loads: its color maps are kept.
+ * were. In one view, though, two maps of one array would show two color
+ * bars with the same title and different ranges, and one color meaning
+ * two values: a display added to a view where another of the plugin's
+ * displays is colored by the same array shares that display's map (one
+ * color bar), whose range is widened to cover both. Clouds in separate
+ * views keep separate maps. Not applied while a state file loads: its
+ * color maps are kept.
  */
 #ifndef pqCloudColorMapBehavior_h
 #define pqCloudColorMapBehavior_h
@@ -29,7 +36,8 @@ public:
 
 private Q_SLOTS:
   void watchView(pqView* view);
-  /// A new display of one of the plugin's filters: its own color map.
+  /// A new display of one of the plugin's filters: the view's map of its
+  /// array, else its own.
   void giveOwnColorMap(pqRepresentation* representation);
 };
 

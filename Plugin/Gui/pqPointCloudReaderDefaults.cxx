@@ -2,12 +2,16 @@
 
 #include "pqActiveObjects.h"
 #include "pqApplicationCore.h"
+#include "pqPluginManager.h"
 #include "pqServer.h"
 #include "pqServerManagerModel.h"
 #include "vtkNew.h"
+#include "vtkPVXMLElement.h"
 #include "vtkSMNamedPropertyIterator.h"
 #include "vtkSMPropertyHelper.h"
 #include "vtkSMProxy.h"
+#include "vtkSMProxyManager.h"
+#include "vtkSMReaderFactory.h"
 #include "vtkSMSessionProxyManager.h"
 #include "vtkSMSettings.h"
 #include "vtkSMStringVectorProperty.h"
@@ -76,6 +80,45 @@ vtkSMProxy* settingsProxy(pqServer* server)
     : nullptr;
 }
 
+/// GDAL's raster reader lists .las among its extensions (ParaView's
+/// ReaderFactory hint), so when ParaView picks a reader itself (a file
+/// named on the command line), the reader factory asks GDAL whether it can
+/// read the lidar file, and GDAL prints "ERROR 4: ... not recognized as a
+/// supported file format". With this plugin loaded .las is lidar: the
+/// extension is dropped from that hint for the session (the file can still
+/// be opened with GDAL through "Open Data With...").
+void dropGdalLasClaim(pqServer* server)
+{
+  vtkSMSessionProxyManager* pxm = server ? server->proxyManager() : nullptr;
+  vtkSMProxy* gdal = pxm ? pxm->GetPrototypeProxy("sources", "GDALRasterReader") : nullptr;
+  vtkPVXMLElement* hints = gdal ? gdal->GetHints() : nullptr;
+  vtkPVXMLElement* factory = hints ? hints->FindNestedElementByName("ReaderFactory") : nullptr;
+  const char* extensions = factory ? factory->GetAttribute("extensions") : nullptr;
+  if (!extensions)
+  {
+    return;
+  }
+  std::istringstream all(extensions);
+  std::string kept, each;
+  bool claimed = false;
+  while (all >> each)
+  {
+    if (lowerCase(each) == "las")
+    {
+      claimed = true;
+    }
+    else
+    {
+      kept += (kept.empty() ? "" : " ") + each;
+    }
+  }
+  if (claimed)
+  {
+    factory->SetAttribute("extensions", kept.c_str());
+    vtkSMProxyManager::GetProxyManager()->GetReaderFactory()->UpdateAvailableReaders();
+  }
+}
+
 bool isEntry(const std::vector<std::string>& values, std::size_t first, const ReaderDefault& entry)
 {
   return values[first] == entry.Pattern && values[first + 1] == entry.Description &&
@@ -89,6 +132,11 @@ pqPointCloudReaderDefaults::pqPointCloudReaderDefaults(QObject* parent)
   pqServerManagerModel* model = pqApplicationCore::instance()->getServerManagerModel();
   QObject::connect(
     model, &pqServerManagerModel::serverAdded, this, &pqPointCloudReaderDefaults::addDefaults);
+  // Loading a plugin rebuilds the reader factory's list.
+  QObject::connect(pqApplicationCore::instance()->getPluginManager(),
+    &pqPluginManager::pluginsUpdated,
+    this,
+    [] { dropGdalLasClaim(pqActiveObjects::instance().activeServer()); });
   QObject::connect(QCoreApplication::instance(),
     &QCoreApplication::aboutToQuit,
     this,
@@ -102,6 +150,7 @@ pqPointCloudReaderDefaults::pqPointCloudReaderDefaults(QObject* parent)
 
 void pqPointCloudReaderDefaults::addDefaults(pqServer* server)
 {
+  dropGdalLasClaim(server);
   vtkSMProxy* proxy = settingsProxy(server);
   if (!proxy)
   {

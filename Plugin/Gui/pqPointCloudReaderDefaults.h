@@ -14,6 +14,11 @@
  * (CSV tables are .txt too), and so is .ply (a mesh wants the PLY Reader):
  * for them ParaView still asks.
  *
+ * GDAL's raster reader also lists .las: ParaView then asks GDAL about
+ * every .las named on its command line (which the defaults above do not
+ * cover), and GDAL prints "not recognized as a supported file format".
+ * The .las extension is taken out of that reader's hint for the session.
+ *
  * ParaView saves the user's settings when it quits: the entries are taken
  * out again before (aboutToQuit), so that a ParaView started later without
  * the plugin does not look for its readers.

@@ -2,6 +2,7 @@
 
 #include "pqCloudColorMapBehavior.h"
 #include "pqCloudFilterAbortBehavior.h"
+#include "pqCloudReaderDisplayBehavior.h"
 #include "pqPointCloudReaderDefaults.h"
 
 pqPrincipalCurvaturesStartup::pqPrincipalCurvaturesStartup(QObject* parent)
@@ -14,5 +15,6 @@ void pqPrincipalCurvaturesStartup::startup()
   // Owned by this object, which ParaView keeps until the plugin unloads.
   new pqCloudFilterAbortBehavior(this);
   new pqCloudColorMapBehavior(this);
+  new pqCloudReaderDisplayBehavior(this);
   new pqPointCloudReaderDefaults(this);
 }

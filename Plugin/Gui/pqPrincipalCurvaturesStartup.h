@@ -1,9 +1,11 @@
 /**
  * @class pqPrincipalCurvaturesStartup
  * @brief The plugin's GUI part, started when ParaView's GUI loads the
- * plugin: Abort that stops the filters (pqCloudFilterAbortBehavior) and a
- * color map per output (pqCloudColorMapBehavior), the plugin's readers as
- * File > Open's defaults for point cloud files (pqPointCloudReaderDefaults).
+ * plugin: Abort that stops the filters (pqCloudFilterAbortBehavior), a
+ * color map per view and array (pqCloudColorMapBehavior), readers' outputs
+ * shown in true colors and in view (pqCloudReaderDisplayBehavior), the
+ * plugin's readers as File > Open's defaults for point cloud files
+ * (pqPointCloudReaderDefaults).
  * pvpython and pvbatch
  * do not start it.
  */

@@ -2,7 +2,8 @@
 // 1.3, 1.4; every point format 0-10, with extra bytes and a variable
 // length record before the points): every array's values, the exact double
 // coordinates, the 4-bit return numbers and full classification byte of
-// formats 6-10, their flags, 64-bit point counts, pieces; then bad files, each with the
+// formats 6-10, their flags, the 8-bit RGB of 16-bit and 8-bit colors,
+// 64-bit point counts, pieces; then bad files, each with the
 // error it must give (and no points, no crash).
 #include "ReaderTestHelpers.h"
 #include "TestChecks.h"
@@ -260,11 +261,23 @@ void CheckGoodFile(Checks& checks, const LasSpec& spec, const std::string& folde
       checks.Near("Green", ValueOf(cloud, "Green", i), p.Green, 0);
       checks.Near("Blue", ValueOf(cloud, "Blue", i), p.Blue, 0);
     }
+    if (rgb)
+    {
+      // 16-bit colors (values above 255): scaled, 65535 to 255, rounded.
+      const double eightBit[2][3] = { { 255, 1, 0 }, { 0, 254, 1 } };
+      for (int c = 0; c < 3; ++c)
+        checks.Near("RGB, 16-bit scaled", ValueOf(cloud, "RGB", i, c), eightBit[i][c], 0);
+    }
     checks.True("Infrared only in formats 8 and 10",
       (TypeOf(cloud, "Infrared") >= 0) == HasInfrared(spec.Format));
     if (HasInfrared(spec.Format))
       checks.Near("Infrared", ValueOf(cloud, "Infrared", i), p.Infrared, 0);
   }
+  vtkDataArray* colors = cloud->GetPointData()->GetArray("RGB");
+  checks.True("RGB (3 unsigned chars, the active scalars) exactly when there are colors",
+    HasColor(spec.Format) ? colors && TypeOf(cloud, "RGB") == VTK_UNSIGNED_CHAR &&
+        colors->GetNumberOfComponents() == 3 && cloud->GetPointData()->GetScalars() == colors
+                          : !colors);
   checks.True(
     "ScanAngleRank only in formats 0-5", (TypeOf(cloud, "ScanAngleRank") >= 0) != extended);
   if (!extended)
@@ -282,6 +295,31 @@ void CheckGoodFile(Checks& checks, const LasSpec& spec, const std::string& folde
     checks.Near("EdgeOfFlightLine", ValueOf(cloud, "EdgeOfFlightLine", i), 1, 0);
     checks.True("ScannerChannel only in formats 6-10",
       extended ? ValueOf(cloud, "ScannerChannel", i) == 3 : TypeOf(cloud, "ScannerChannel") < 0);
+  }
+}
+
+/// 8-bit colors in the 16-bit fields (no value above 255), as many
+/// writers store them: RGB keeps the values, not a near-black 0 or 1.
+void CheckEightBitColors(Checks& checks, const std::string& folder)
+{
+  LasSpec spec;
+  spec.Format = 2;
+  std::vector<LasPoint> points = KnownPoints(false);
+  points[0].Red = 255, points[0].Green = 128, points[0].Blue = 7;
+  points[1].Red = 0, points[1].Green = 40, points[1].Blue = 200;
+  const std::string path = folder + "/eight_bit_colors.las";
+  WriteBytes(path, LasFile(spec, points));
+  const Read read = ReadLas(path);
+  const bool two = read.Cloud->GetNumberOfPoints() == 2 && TypeOf(read.Cloud, "RGB") >= 0;
+  checks.True("8-bit colors: read", two);
+  for (int i = 0; two && i < 2; ++i)
+  {
+    const double expected[3] = {
+      double(points[i].Red), double(points[i].Green), double(points[i].Blue)
+    };
+    for (int c = 0; c < 3; ++c)
+      checks.Near("8-bit colors kept in RGB", ValueOf(read.Cloud, "RGB", i, c), expected[c], 0);
+    checks.Near("Red as stored", ValueOf(read.Cloud, "Red", i), points[i].Red, 0);
   }
 }
 
@@ -435,6 +473,7 @@ int TestLASReader(int argc, char* argv[])
   only64.Format = 3;
   only64.LegacyCountZero = true;
   CheckGoodFile(checks, only64, folder);
+  CheckEightBitColors(checks, folder);
   CheckPieces(checks, folder);
   CheckBadFiles(checks, folder);
   return checks.Summary();

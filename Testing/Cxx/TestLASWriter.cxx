@@ -233,6 +233,35 @@ void TestRoundTrip(Checks& checks)
   }
 }
 
+/// A LAS file with colors read (the reader adds the 8-bit RGB) and written
+/// again: the same record length, no RGB extra bytes; RGB is derived again
+/// from Red, Green and Blue when read back. An RGB without those is kept.
+void TestDerivedColors(Checks& checks)
+{
+  const Written first = Write(MakeCloud(true, true), "colors_first.las");
+  vtkSmartPointer<vtkPolyData> read = Read(first.Path);
+  checks.True("the reader adds RGB", read->GetPointData()->GetArray("RGB") != nullptr);
+  const Written second = Write(read, "colors_second.las");
+  checks.True("written again without error", second.Errors.empty());
+  const std::string a = Bytes(first.Path), b = Bytes(second.Path);
+  checks.Equal("the same point record length (no RGB extra bytes)",
+    At<std::uint16_t>(b, 105),
+    At<std::uint16_t>(a, 105));
+  vtkSmartPointer<vtkPolyData> again = Read(second.Path);
+  vtkDataArray* rgb = again->GetPointData()->GetArray("RGB");
+  checks.True("RGB derived again, 65535 to 255",
+    rgb && again->GetPointData()->GetArray("RGB_X") == nullptr && rgb->GetComponent(0, 1) == 255);
+
+  vtkSmartPointer<vtkPolyData> alone = MakeCloud(false, true);
+  AddArray<vtkUnsignedCharArray>(alone, "RGB", 3, [](int i, int c) { return 10.0 * c + i; });
+  const Written kept = Write(alone, "colors_alone.las");
+  vtkSmartPointer<vtkPolyData> keptRead = Read(kept.Path);
+  vtkDataArray* keptRgb = keptRead->GetPointData()->GetArray("RGB");
+  checks.True("an RGB without Red, Green and Blue: kept as extra bytes",
+    kept.Errors.empty() && keptRgb && keptRgb->GetNumberOfComponents() == 3 &&
+      keptRgb->GetComponent(3, 2) == 23);
+}
+
 void TestHeaderBytes(Checks& checks)
 {
   vtkSmartPointer<vtkPolyData> cloud = MakeCloud(true, true);
@@ -523,6 +552,7 @@ int main(int argc, char* argv[])
     argv,
     {
       { "RoundTrip", TestRoundTrip },
+      { "DerivedColors", TestDerivedColors },
       { "HeaderBytes", TestHeaderBytes },
       { "ChosenScale", TestChosenScale },
       { "Units", TestUnits },

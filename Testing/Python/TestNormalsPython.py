@@ -6,9 +6,9 @@
   defaults estimates the normals (output array Normals, outward), and gives
   k = +1/2 at every point; paraview.simple.Show shows it as points colored
   by Mean_Curvature_Clipped;
-* the same sphere with colors (unsigned char RGB, the first 3-component
-  array, which the Normals property picks by default): the colors are not
-  used, the normals are estimated; with Normals Source 'Input Array' the
+* the same sphere with colors (unsigned char RGB, a 3-component array):
+  the Normals property neither offers nor picks it; chosen by hand, it is
+  not used, the normals are estimated; with Normals Source 'Input Array' the
   filter fails and says how to estimate normals instead;
 * Point Cloud Normals on the sphere: unit, outward, within a degree of the
   exact normals (median); towards a viewpoint inside: all inward;
@@ -96,6 +96,10 @@ curvatures = PrincipalCurvatures(Input=colored)  # noqa: F821
 # still not taken for normals.
 check(list(curvatures.Normals)[-1] == "None (automatic)",
       "colors: the Normals property defaults to 'None (automatic)', not RGB (%s)" % list(curvatures.Normals))
+# Only floating-point arrays are offered: 8-bit colors never are.
+domain = curvatures.GetProperty("Normals").SMProperty.GetDomain("array_list")
+offered = [domain.GetString(i) for i in range(domain.GetNumberOfStrings())]
+check("RGB" not in offered, "colors: RGB is not offered as normals (offered: %s)" % offered)
 curvatures.Normals = ["POINTS", "RGB"]
 result = fetch(curvatures)
 kmean = array(result, "Mean_Curvature")

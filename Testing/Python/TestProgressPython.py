@@ -142,10 +142,15 @@ def check_progress(name, log):
 
 
 TIME_LEFT = re.compile(r"^Principal curvatures: about (?:(\d+) h )?(\d+) (s|min) left$")
+SHORT_TIME_LEFT = re.compile(r"^Principal curvatures: less than (\d+) s left$")
 
 
 def seconds_left(text):
-    """The time left a progress text announces, in seconds; None without one."""
+    """The time left a progress text announces, in seconds (at most that
+    many for a short one); None without one."""
+    short = SHORT_TIME_LEFT.match(text)
+    if short:
+        return int(short.group(1))
     match = TIME_LEFT.match(text)
     if not match:
         return None

@@ -1,0 +1,25 @@
+/**
+ * @file TimeLeft.h
+ * @brief The progress text a long run shows: its label and, when the pace
+ * says something, the time left. No VTK.
+ */
+#ifndef TimeLeft_h
+#define TimeLeft_h
+
+#include <string>
+
+namespace pcurv
+{
+
+/// "Principal curvatures: about 2 min left": `label` and the time left if
+/// the rest goes at the pace so far (`elapsedSeconds` since the start, the
+/// part `fraction` done). `label` alone while the pace is not yet known
+/// (the first second, or less than 1 % done) and at the end; "less than
+/// 10 s left" once the estimate is that short: a countdown in seconds is
+/// not worth reading there, and the stages do not all go at one pace.
+/// ParaView's progress bar adds the percentage.
+std::string ProgressText(const std::string& label, double fraction, double elapsedSeconds);
+
+} // namespace pcurv
+
+#endif

@@ -1,0 +1,62 @@
+#!/usr/bin/env bash
+# `paraview scan.las` with the plugin loaded at startup (its plugins XML in
+# PV_PLUGIN_CONFIG_FILE), in the real GUI under Xvfb: the file must open
+# with the LAS Point Cloud Reader, and the terminal must not show GDAL's
+# "not recognized as a supported file format" (ParaView asks every reader
+# that lists .las, GDAL's raster reader among them, whether it can read a
+# file named on the command line). The file's entry in the pipeline
+# browser is read by OCR (--script cannot be combined with a data file).
+#   RunCommandLineLasTest.sh PARAVIEW PLUGINS_XML
+set -u
+paraview=$1 plugins_xml=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+export PV_PLUGIN_CONFIG_FILE=$plugins_xml
+
+# LAS 1.2, point format 0: a 20 x 20 grid of points.
+/usr/bin/python3 - "$work/scan.las" <<'PYTHON'
+import struct, sys
+points = [(i, j, (i * j) % 7) for i in range(20) for j in range(20)]
+header = bytearray(227)
+header[0:4] = b"LASF"
+header[24], header[25] = 1, 2
+struct.pack_into("<HIIBHI", header, 94, 227, 227, 0, 0, 20, len(points))
+struct.pack_into("<3d3d", header, 131, 0.01, 0.01, 0.01, 0.0, 0.0, 0.0)
+struct.pack_into("<6d", header, 179, 19, 0, 19, 0, 6, 0)
+records = b"".join(struct.pack("<3iHBBbBH", *(100 * c for c in p), 0, 0x09, 2, 0, 0, 0) for p in points)
+with open(sys.argv[1], "wb") as handle:
+    handle.write(bytes(header) + records)
+PYTHON
+
+xvfb-run -a -s "-screen 0 1600x1000x24" bash -c '
+  "$0" --dr "$1" > "$2/paraview.log" 2>&1 &
+  pid=$!
+  window=$(timeout 120 xdotool search --sync --onlyvisible --name "ParaView" | head -n 1)
+  [ -n "$window" ] && xdotool windowmove "$window" 0 0 windowsize "$window" 1600 1000
+  sleep 15
+  import -window root "$2/screen.png"
+  kill "$pid" 2>/dev/null
+  wait "$pid" 2>/dev/null
+  exit 0' "$paraview" "$work/scan.las" "$work"
+
+status=0
+if [ ! -s "$work/screen.png" ]; then
+  echo "FAILED: no screenshot"
+  tail -n 20 "$work/paraview.log"
+  exit 1
+fi
+# The pipeline browser (top left), enlarged for OCR: the reader's entry.
+convert "$work/screen.png" -crop 300x250+0+130 +repage -resize 300% -colorspace Gray "$work/browser.png"
+if tesseract "$work/browser.png" - 2>/dev/null | grep -q "scan.las"; then
+  echo "scan.las opened from the command line"
+else
+  echo "FAILED: scan.las not in the pipeline browser"
+  status=1
+fi
+if grep -q "not recognized as a supported file format" "$work/paraview.log"; then
+  echo "FAILED: GDAL's probe message on the terminal: $(grep -m 1 "not recognized" "$work/paraview.log")"
+  status=1
+else
+  echo "no GDAL probe message"
+fi
+exit $status

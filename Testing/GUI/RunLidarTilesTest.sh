@@ -1,0 +1,94 @@
+#!/usr/bin/env bash
+# Two colored LAS tiles 5 km apart, in the real ParaView GUI under Xvfb,
+# as a user opens them: File > Open (Ctrl+O, the path typed, Enter), then
+# Apply (Alt+A), for one tile, then the other. Checks (from the state
+# lidar_tiles_script.py records after each render):
+# - both tiles lie wholly in the view: the second did not land off-screen
+#   (ParaView resets the camera only for the first data in a view);
+# - each tile is colored by its RGB with Map Scalars off (true colors) and
+#   no scalar bar;
+# and on the captured screen, that the view shows pure red and pure green
+# points (the tiles' colors), not colors of a map.
+#   RunLidarTilesTest.sh PARAVIEW PLUGIN SCREENSHOT.png
+set -u
+paraview=$1 plugin=$2 screenshot=$3
+here=$(cd "$(dirname "$0")" && pwd)
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+export GUI_TEST_PLUGIN=$plugin GUI_TEST_MARKER=$work/marker GUI_TEST_WORK=$work
+mkdir -p "$(dirname "$screenshot")"
+rm -f "$screenshot"
+
+xvfb-run -a -s "-screen 0 1600x1000x24" bash -c '
+  # Opens a file through File > Open, then applies it.
+  open_and_apply() {
+    xdotool windowfocus --sync "$window"
+    xdotool key --clearmodifiers ctrl+o
+    dialog=$(timeout 60 xdotool search --sync --onlyvisible --name "Open File" | head -n 1)
+    [ -n "$dialog" ] || { echo "no Open File dialog for $1" >> "$GUI_TEST_WORK/events"; return; }
+    sleep 2
+    xdotool type --delay 40 "$1"
+    sleep 1
+    xdotool key Return
+    sleep 5
+    xdotool windowfocus --sync "$window"
+    xdotool key --clearmodifiers alt+a
+    sleep 6
+  }
+  "$0" --dr --script="$1" > "$GUI_TEST_WORK/paraview.log" 2>&1 &
+  pid=$!
+  for i in $(seq 1 120); do [ -s "$GUI_TEST_MARKER" ] && break; sleep 1; done
+  window=$(xdotool search --sync --onlyvisible --name "ParaView" | head -n 1)
+  if [ -n "$window" ]; then
+    xdotool windowmove "$window" 0 0 windowsize "$window" 1600 1000
+    sleep 3
+    open_and_apply "$GUI_TEST_WORK/tile_west.las"
+    cp "$GUI_TEST_WORK/state" "$GUI_TEST_WORK/state_first" 2>/dev/null
+    open_and_apply "$GUI_TEST_WORK/tile_east.las"
+    import -window root "$2"
+  fi
+  kill "$pid" 2>/dev/null
+  wait "$pid" 2>/dev/null
+  exit 0' "$paraview" "$here/lidar_tiles_script.py" "$screenshot"
+
+status=0
+marker=$(cat "$GUI_TEST_MARKER" 2>/dev/null || echo "no marker: the GUI script did not run")
+echo "GUI script: $marker"
+case "$marker" in ready*) ;; *) tail -n 20 "$work/paraview.log"; exit 1 ;; esac
+if [ -s "$work/events" ]; then
+  sed "s/^/FAILED: /" "$work/events"
+  status=1
+fi
+echo "after the first tile:"
+sed "s/^/  /" "$work/state_first" 2>/dev/null
+echo "after the second tile:"
+sed "s/^/  /" "$work/state" 2>/dev/null
+state=$(cat "$work/state" 2>/dev/null)
+for tile in tile_west.las tile_east.las; do
+  line=$(grep "^tile $tile " <<< "$state")
+  if [ -z "$line" ]; then
+    echo "FAILED: $tile is not shown"
+    status=1
+    continue
+  fi
+  case "$line" in *"in_view 1 "*) echo "$tile wholly in view" ;;
+    *) echo "FAILED: $tile not wholly in view (off-screen)"; status=1 ;; esac
+  case "$line" in *"colored_by RGB map_scalars 0 scalar_bar 0"*) echo "$tile in true colors (RGB, Map Scalars off), no scalar bar" ;;
+    *) echo "FAILED: $tile not in true colors with no scalar bar: $line"; status=1 ;; esac
+done
+if [ ! -s "$screenshot" ]; then
+  echo "FAILED: no screenshot"
+  exit 1
+fi
+# The render view (right of the panels): pure red and pure green points.
+read -r reds greens <<< "$(convert "$screenshot" -crop 1000x700+500+150 +repage txt:- |
+  awk -F"[(),: ]+" '/^[0-9]/ { if ($3 > 200 && $4 < 40 && $5 < 40) r++; if ($4 > 200 && $3 < 40 && $5 < 40) g++ }
+    END { printf "%d %d", r, g }')"
+if [ "${reds:-0}" -gt 200 ] && [ "${greens:-0}" -gt 200 ]; then
+  echo "view shows the tiles' own colors: $reds pure red and $greens pure green pixels"
+else
+  echo "FAILED: view shows ${reds:-0} pure red and ${greens:-0} pure green pixels: not the tiles' colors"
+  status=1
+fi
+echo "screenshot: $screenshot"
+exit $status
