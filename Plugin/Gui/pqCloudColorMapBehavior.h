@@ -12,12 +12,16 @@
  * A separate color map per display (ParaView's "Use Separate Color Map")
  * gives each cloud its own range, and leaves the others' colors as they
  * were. Not applied while a state file loads: its color maps are kept.
+ *
+ * Colored by Shape_Class, a display's map is categorical: a color and a
+ * legend entry named after each class (pcurv::ShapeClass), shown.
  */
 #ifndef pqCloudColorMapBehavior_h
 #define pqCloudColorMapBehavior_h
 
 #include <QObject>
 
+class pqDataRepresentation;
 class pqRepresentation;
 class pqView;
 
@@ -31,6 +35,10 @@ private Q_SLOTS:
   void watchView(pqView* view);
   /// A new display of one of the plugin's filters: its own color map.
   void giveOwnColorMap(pqRepresentation* representation);
+
+private:
+  /// Colored by Shape_Class: its map as categories with the class names.
+  static void colorClasses(pqDataRepresentation* representation);
 };
 
 #endif
