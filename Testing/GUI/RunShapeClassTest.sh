@@ -35,6 +35,7 @@ expect() {
   if grep -qx "$1" <<< "$marker"; then echo "as expected: $1"; else echo "FAILED: expected '$1'"; status=1; fi
 }
 expect "colored by Shape_Class"
+expect "own map 1"
 expect "categorical 1"
 expect "annotations 0,Undetermined,1,Flat,2,Dome,3,Cup,4,Ridge,5,Valley,6,Saddle"
 expect "colors 21"

@@ -2,7 +2,7 @@
 RunShapeClassTest.sh: a noisy torus with exact outward normals (domes on
 its outer half, saddles on its inner half) applied Principal Curvatures,
 shown, then colored by Shape_Class as the toolbar's array menu does
-(ColorBy). Writes GUI_TEST_MARKER: whether the display's color map is
+(ColorBy, with the display's own map). Writes GUI_TEST_MARKER: whether the display's color map is
 categorical, its annotations and indexed colors, whether its scalar bar
 (the legend) is visible, and the classes the output holds."""
 
@@ -40,12 +40,15 @@ try:
     view.CameraPosition = [0, -8, 10]
     view.CameraViewUp = [0, 0, 1]
     simple.ResetCamera(view)
-    simple.ColorBy(display, ("POINTS", "Shape_Class"))
+    # The plugin gives each display its own map ("Use Separate Color
+    # Map"), which the toolbar's array menu keeps: the map of this display.
+    simple.ColorBy(display, ("POINTS", "Shape_Class"), separate=True)
     simple.Render(view)
     color_map = display.LookupTable
     classes = sorted(set(vtk_to_numpy(
         servermanager.Fetch(curvatures).GetPointData().GetArray("Shape_Class")).tolist()))
     lines = ["colored by %s" % display.ColorArrayName[1],
+             "own map %d" % display.UseSeparateColorMap,
              "categorical %d" % color_map.InterpretValuesAsCategories,
              "annotations %s" % ",".join(color_map.Annotations),
              "colors %d" % len(color_map.IndexedColors),
