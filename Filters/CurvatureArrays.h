@@ -91,8 +91,9 @@ struct CurvatureArrays
     // With the fits that give one: the standard error of the curvatures.
     b.StandardError =
       standardError ? this->AddReal("Curvature_Standard_Error", 1, n, true) : nullptr;
-    // With the same fits: 1 where the curvatures are known to a fifth of
-    // themselves (not a diagnostic: what a user filters by).
+    // With the same fits: 1 where the curvatures are known to a third of
+    // themselves, or precisely near zero (not a diagnostic: what a user
+    // filters by).
     b.Trusted =
       standardError ? this->Add<vtkUnsignedCharArray>("Curvature_Trusted", 1, n) : nullptr;
     // With the same fits: the shape class (pcurv::ShapeClass), which needs
