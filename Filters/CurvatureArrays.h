@@ -7,6 +7,7 @@
 #define CurvatureArrays_h
 
 #include "Estimation/CurvatureOutputs.h"
+#include "Estimation/ShapeClass.h"
 
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
@@ -90,10 +91,15 @@ struct CurvatureArrays
     // With the fits that give one: the standard error of the curvatures.
     b.StandardError =
       standardError ? this->AddReal("Curvature_Standard_Error", 1, n, true) : nullptr;
-    // With the same fits: 1 where the curvatures are within their stated
-    // error of the cloud's scale (not a diagnostic: what a user filters by).
+    // With the same fits: 1 where the curvatures are known to a third of
+    // themselves, or precisely near zero (not a diagnostic: what a user
+    // filters by).
     b.Trusted =
       standardError ? this->Add<vtkUnsignedCharArray>("Curvature_Trusted", 1, n) : nullptr;
+    // With the same fits: the shape class (pcurv::ShapeClass), which needs
+    // the standard error; Shape_Class_Names in the field data names them.
+    b.ShapeClass =
+      standardError ? this->Add<vtkUnsignedCharArray>(pcurv::ShapeClassArrayName, 1, n) : nullptr;
     // With the same fits: the normal their directions are tangent to.
     b.FittedNormal = standardError ? this->AddReal("Fitted_Normal", 3, n) : nullptr;
     // With the same fits: the points moved onto their neighbors' surface,

@@ -2,6 +2,7 @@
 
 #include "Cloud/Collectives.h"
 #include "Estimation/CurvatureOutputs.h"
+#include "Estimation/ShapeClass.h"
 #include "vtkPrincipalCurvatureEstimation.h"
 
 #include "vtkDoubleArray.h"
@@ -13,6 +14,7 @@
 #include "vtkPointSet.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkStringArray.h"
 
 #include <algorithm>
 #include <cmath>
@@ -129,6 +131,17 @@ void AddRunFields(vtkPolyData* output,
   {
     // What Curvature_Trusted compared the standard errors with.
     AddField<vtkDoubleArray>(output, "Trusted_Curvature_Scale", summary.TrustedCurvatureScale);
+  }
+  if (output->GetPointData()->GetArray(pcurv::ShapeClassArrayName))
+  {
+    // Which code of Shape_Class is which class: the name at index code.
+    vtkNew<vtkStringArray> names;
+    names->SetName("Shape_Class_Names");
+    for (int code = 0; code < static_cast<int>(pcurv::ShapeClass::Count); ++code)
+    {
+      names->InsertNextValue(pcurv::ShapeClassName(static_cast<pcurv::ShapeClass>(code)));
+    }
+    output->GetFieldData()->AddArray(names);
   }
   if (output->GetPointData()->GetArray("Outlier"))
   {

@@ -27,7 +27,8 @@ void ReportUnestimated(vtkPrincipalCurvatureEstimation* self,
   vtkPolyData* output);
 
 /// What the run found, in the output's field data: Trusted_Curvature_Scale
-/// (with Curvature_Trusted), Outlier_Points (with the Outlier array),
+/// (with Curvature_Trusted), Shape_Class_Names (with the Shape_Class array:
+/// the name of code c at index c), Outlier_Points (with the Outlier array),
 /// Fourth_Order_Fits and Jet_Fit_Points (with the automatic scale) and
 /// Shared_Fit_Points (with it and `shareFits`).
 void AddRunFields(vtkPolyData* output,

@@ -22,7 +22,9 @@
  * point), and point-data arrays: Minimum_Curvature, Maximum_Curvature,
  * Mean_Curvature, Gauss_Curvature, their directions, Shape_Index,
  * Curvedness, Curvature_Valid, and with ORIENTED_CIRCLES
- * Curvature_Standard_Error, Curvature_Trusted and Fitted_Normal; the
+ * Curvature_Standard_Error, Curvature_Trusted, Shape_Class (flat, dome,
+ * cup, ridge, valley, saddle, named by the field data Shape_Class_Names)
+ * and Fitted_Normal; the
  * diagnostic arrays with DiagnosticArrays; field data with the unit and the
  * counts of points not estimated, by reason. docs/output-arrays.md lists
  * them all.

@@ -586,11 +586,10 @@ EstimationSummary EstimateCloud(CloudPoints cloud,
   {
     WriteClippedMean(out, numberOfPoints, summary.MeanCurvatureClip);
   }
-  const bool trusted = processes.IsDistributed() ? processes.Max(out.Trusted ? 1.0 : 0.0) > 0.0
-                                                 : out.Trusted != nullptr;
-  if (trusted)
+  const bool verdicts = out.Trusted || out.ShapeClass;
+  if (processes.IsDistributed() ? processes.Max(verdicts ? 1.0 : 0.0) > 0.0 : verdicts)
   {
-    summary.TrustedCurvatureScale = WriteTrusted(out, numberOfPoints, processes);
+    summary.TrustedCurvatureScale = WriteTrustAndShape(out, numberOfPoints, processes);
   }
   return summary;
 }

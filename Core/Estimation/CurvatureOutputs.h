@@ -53,9 +53,14 @@ struct CurvatureBuffers
   /// that most errors are within twice it (docs/output-arrays.md).
   RealBuffer StandardError = nullptr;
   /// With FitMode::OrientedCircles only (may be null): 1 where the point is
-  /// estimated and twice its standard error is within a tenth of the
-  /// cloud's curvature scale (EstimationSummary::TrustedCurvatureScale).
+  /// estimated, not an outlier, and twice its standard error is within a
+  /// third of its largest |curvature| or a tenth of the cloud's curvature
+  /// scale (EstimationSummary::TrustedCurvatureScale; IsTrusted).
   unsigned char* Trusted = nullptr;
+  /// With FitMode::OrientedCircles only (may be null): the point's
+  /// pcurv::ShapeClass, from the signs of its curvatures that differ from
+  /// zero significantly against its standard error (ClassifyShape).
+  unsigned char* ShapeClass = nullptr;
   /// With FitMode::OrientedCircles only (may be null): the fitted
   /// surface's unit normal, 3 per point, to which the directions are
   /// tangent (zero where not estimated).
@@ -93,10 +98,12 @@ struct EstimationSummary
   /// The c of CurvatureBuffers::ClippedMean (0 when nothing is estimated,
   /// or without that buffer).
   double MeanCurvatureClip = 0.0;
-  /// What CurvatureBuffers::Trusted compares the standard errors with
-  /// (1/length): the larger of the 95th percentile of max(|k_min|, |k_max|)
-  /// and a quarter of one over the median neighborhood radius, over the estimated
-  /// points of every process (0 without that buffer).
+  /// The cloud's curvature scale, a tenth of which bounds twice the
+  /// standard error of a trusted point whose curvatures are small
+  /// (CurvatureBuffers::Trusted; 1/length): the larger of the 95th
+  /// percentile of max(|k_min|, |k_max|) and a quarter of one over the
+  /// median neighborhood radius, over the estimated points of every
+  /// process (0 without the Trusted or ShapeClass buffer).
   double TrustedCurvatureScale = 0.0;
   /// Points that repeat another exactly (coordinates and normal): estimated
   /// once, every copy given the same results, counted once as a neighbor.

@@ -1,5 +1,6 @@
 #include "Estimation/ResultStore.h"
 #include "Cloud/CloudStatistics.h"
+#include "Estimation/ShapeClass.h"
 
 #include <array>
 #include <cmath>
@@ -10,9 +11,6 @@ namespace pcurv
 namespace
 {
 constexpr double NaN = std::numeric_limits<double>::quiet_NaN();
-/// A curvature is trusted when twice its reported standard error is within
-/// this share of the cloud's curvature scale (WriteTrusted).
-constexpr double TrustedErrorShare = 0.1;
 /// A nearly flat cloud's curvature scale, times its median radius.
 constexpr double FlatCloudCurvatureShare = 0.25;
 
@@ -263,7 +261,7 @@ UnestimatedCounts CountUnestimated(const CurvatureBuffers& out,
   return counts;
 }
 
-double WriteTrusted(const CurvatureBuffers& out,
+double WriteTrustAndShape(const CurvatureBuffers& out,
   std::int64_t numberOfPoints,
   const Collectives& processes)
 {
@@ -289,7 +287,18 @@ double WriteTrusted(const CurvatureBuffers& out,
     const double error = out.StandardError ? out.StandardError.Get(i) : NaN;
     // An outlier's values are the nearest surface's, not its own.
     const bool outlier = out.Outlier && out.Outlier[i];
-    out.Trusted[i] = out.Valid[i] && !outlier && 2.0 * error <= TrustedErrorShare * scale ? 1 : 0;
+    const bool valid = out.Valid[i] != 0;
+    const double kMin = valid ? out.Minimum.Get(i) : NaN;
+    const double kMax = valid ? out.Maximum.Get(i) : NaN;
+    if (out.Trusted)
+    {
+      out.Trusted[i] = IsTrusted(valid, outlier, kMin, kMax, error, scale) ? 1 : 0;
+    }
+    if (out.ShapeClass)
+    {
+      out.ShapeClass[i] =
+        static_cast<unsigned char>(ClassifyShape(valid, outlier, kMin, kMax, error));
+    }
   }
   return scale;
 }

@@ -3,7 +3,7 @@
  * @brief Where an estimation's per-point results go: the working length
  * unit and the way back to the input's, the store of each point's results
  * into the caller's buffers (it fills memory, it writes no file), and the
- * passes over all of them at the end (unit, clipped mean, counts, trust).
+ * passes over all of them at the end (unit, clipped mean, counts, trust and shape classes).
  * No VTK.
  */
 #ifndef ResultStore_h
@@ -94,10 +94,11 @@ UnestimatedCounts CountUnestimated(const CurvatureBuffers& out,
   const std::uint8_t* reasons,
   std::int64_t numberOfPoints);
 
-/// CurvatureBuffers::Trusted from the reported standard errors, in the
-/// input's unit; returns the cloud's curvature scale it used. Collective:
-/// every process calls it when any has the buffer.
-double WriteTrusted(const CurvatureBuffers& out,
+/// CurvatureBuffers::Trusted and ShapeClass (each where not null) from the
+/// reported standard errors, in the input's unit (ShapeClass.h); returns
+/// the cloud's curvature scale trust used. Collective: every process calls
+/// it when any has either buffer.
+double WriteTrustAndShape(const CurvatureBuffers& out,
   std::int64_t numberOfPoints,
   const Collectives& processes);
 

@@ -1,16 +1,65 @@
 #include "pqCloudColorMapBehavior.h"
 
 #include "CloudFilterNames.h"
+#include "Estimation/ShapeClass.h"
 
 #include "pqApplicationCore.h"
-#include "pqRepresentation.h"
+#include "pqDataRepresentation.h"
 #include "pqServerManagerModel.h"
 #include "pqView.h"
 #include "vtkSMPVRepresentationProxy.h"
 #include "vtkSMPropertyHelper.h"
+#include "vtkSMSessionProxyManager.h"
 #include "vtkSMProxy.h"
 
+#include <array>
 #include <string>
+#include <vector>
+
+namespace
+{
+/// A color per pcurv::ShapeClass, by code: gray undetermined, pale flat,
+/// warm convex (dome red, ridge orange), cool concave (cup blue, valley
+/// cyan), saddle green: the features stand out on the flat ground.
+constexpr std::array<std::array<double, 3>, static_cast<int>(pcurv::ShapeClass::Count)>
+  ShapeClassColors = { { { 0.45, 0.45, 0.45 },
+    { 0.90, 0.88, 0.80 },
+    { 0.84, 0.15, 0.16 },
+    { 0.17, 0.32, 0.80 },
+    { 1.00, 0.60, 0.10 },
+    { 0.30, 0.80, 0.90 },
+    { 0.20, 0.65, 0.25 } } };
+
+/// The map as categories: one color and one legend entry (its name) per
+/// class, whatever range the map had.
+void MakeShapeClassMap(vtkSMProxy* map)
+{
+  std::vector<std::string> annotations;
+  std::vector<double> colors;
+  for (int code = 0; code < static_cast<int>(pcurv::ShapeClass::Count); ++code)
+  {
+    annotations.push_back(std::to_string(code));
+    annotations.emplace_back(pcurv::ShapeClassName(static_cast<pcurv::ShapeClass>(code)));
+    colors.insert(colors.end(), ShapeClassColors[code].begin(), ShapeClassColors[code].end());
+  }
+  // "Interpret Values As Categories" in the GUI and pvpython.
+  vtkSMPropertyHelper(map, "IndexedLookup").Set(1);
+  vtkSMPropertyHelper annotationsHelper(map, "Annotations");
+  annotationsHelper.SetNumberOfElements(static_cast<unsigned int>(annotations.size()));
+  for (unsigned int i = 0; i < annotations.size(); ++i)
+  {
+    annotationsHelper.Set(i, annotations[i].c_str());
+  }
+  vtkSMPropertyHelper(map, "IndexedColors")
+    .Set(colors.data(), static_cast<unsigned int>(colors.size()));
+  if (map->GetProperty("AnnotationsInitialized"))
+  {
+    // Keeps ParaView from replacing the names with the values it finds.
+    vtkSMPropertyHelper(map, "AnnotationsInitialized").Set(1);
+  }
+  map->UpdateVTKObjects();
+}
+} // namespace
 
 namespace
 {
@@ -114,4 +163,48 @@ void pqCloudColorMapBehavior::giveOwnColorMap(pqRepresentation* representation)
       display, /*extend=*/false, /*force=*/true);
   }
   display->UpdateVTKObjects();
+  // Whenever the display is colored by the shape classes (and again when
+  // its map changes: ParaView sets the array, then the map), categories.
+  if (auto* data = qobject_cast<pqDataRepresentation*>(representation))
+  {
+    QObject::connect(data,
+      &pqDataRepresentation::colorArrayNameModified,
+      this,
+      [data]() { pqCloudColorMapBehavior::colorClasses(data); });
+    QObject::connect(data,
+      &pqDataRepresentation::colorTransferFunctionModified,
+      this,
+      [data]() { pqCloudColorMapBehavior::colorClasses(data); });
+  }
+}
+
+void pqCloudColorMapBehavior::colorClasses(pqDataRepresentation* representation)
+{
+  vtkSMProxy* display = representation->getProxy();
+  vtkSMPropertyHelper colorArray(display, "ColorArrayName", /*quiet=*/true);
+  const char* arrayName = colorArray.GetInputArrayNameToProcess();
+  vtkSMProxy* map = display->GetProperty("LookupTable")
+    ? vtkSMPropertyHelper(display, "LookupTable").GetAsProxy()
+    : nullptr;
+  // The display's map is the array's once both properties have changed
+  // (ParaView sets them one after the other): ParaView registers it under
+  // a name that ends with the array's.
+  const char* mapName =
+    map ? map->GetSessionProxyManager()->GetProxyName("lookup_tables", map) : nullptr;
+  const std::string suffix = std::string(pcurv::ShapeClassArrayName) + ".PVLookupTable";
+  const std::string registered = mapName ? mapName : "";
+  if (!map || !arrayName || std::string(arrayName) != pcurv::ShapeClassArrayName ||
+    registered.size() < suffix.size() ||
+    registered.compare(registered.size() - suffix.size(), suffix.size(), suffix) != 0 ||
+    vtkSMPropertyHelper(map, "IndexedLookup").GetAsInt() == 1)
+  {
+    return;
+  }
+  MakeShapeClassMap(map);
+  // The legend: the class names by their colors.
+  if (pqView* view = representation->getView())
+  {
+    vtkSMPVRepresentationProxy::SetScalarBarVisibility(display, view->getProxy(), true);
+  }
+  representation->renderViewEventually();
 }

@@ -19,12 +19,16 @@
  * color bar), whose range is widened to cover both. Clouds in separate
  * views keep separate maps. Not applied while a state file loads: its
  * color maps are kept.
+ *
+ * Colored by Shape_Class, a display's map is categorical: a color and a
+ * legend entry named after each class (pcurv::ShapeClass), shown.
  */
 #ifndef pqCloudColorMapBehavior_h
 #define pqCloudColorMapBehavior_h
 
 #include <QObject>
 
+class pqDataRepresentation;
 class pqRepresentation;
 class pqView;
 
@@ -39,6 +43,10 @@ private Q_SLOTS:
   /// A new display of one of the plugin's filters: the view's map of its
   /// array, else its own.
   void giveOwnColorMap(pqRepresentation* representation);
+
+private:
+  /// Colored by Shape_Class: its map as categories with the class names.
+  static void colorClasses(pqDataRepresentation* representation);
 };
 
 #endif

@@ -246,7 +246,7 @@ struct GivenNormalsRun
 };
 
 /// A cloud estimated serially with `settings`, with the reported standard
-/// errors and the trust flags.
+/// errors, the trust flags and the shape classes.
 struct ReportedRun
 {
   ReportedRun(const std::vector<testing::SurfaceSample>& samples,
@@ -254,18 +254,20 @@ struct ReportedRun
     : Out(samples.size(), false)
     , StandardError(samples.size())
     , Trusted(samples.size())
+    , ShapeClass(samples.size())
   {
     SerialRunner serial;
     CurvatureBuffers buffers = this->Out.Buffers();
     buffers.StandardError = this->StandardError.data();
     buffers.Trusted = this->Trusted.data();
+    buffers.ShapeClass = this->ShapeClass.data();
     this->Summary =
       EstimateCloud(MakeCloud(samples), settings, Collectives{}, serial, nullptr, buffers);
   }
 
   Results Out;
   std::vector<double> StandardError;
-  std::vector<unsigned char> Trusted;
+  std::vector<unsigned char> Trusted, ShapeClass;
   EstimationSummary Summary;
 };
 

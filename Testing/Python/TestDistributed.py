@@ -32,9 +32,10 @@ from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkIOXML import vtkXMLPolyDataReader, vtkXMLPolyDataWriter, vtkXMLPPolyDataReader
 
 ARRAYS = ("Minimum_Curvature", "Maximum_Curvature", "Neighbor_Count")
-COUNTS = ("Neighbor_Count", "Target_Neighbor_Count", "Curvature_Trusted", "Outlier")  # absolutely
+COUNTS = ("Neighbor_Count", "Target_Neighbor_Count", "Curvature_Trusted", "Shape_Class",
+          "Outlier")  # absolutely
 OPTIONAL = ("Target_Neighbor_Count",  # the dynamic adjustment's only
-            "Curvature_Standard_Error", "Curvature_Trusted", "Outlier")  # OrientedCircles only
+            "Curvature_Standard_Error", "Curvature_Trusted", "Shape_Class", "Outlier")  # OrientedCircles only
 VARIANTS = {"fixed": {}, "dva": {"DynamicAdjustment": 1}}
 
 

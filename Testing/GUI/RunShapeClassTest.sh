@@ -1,0 +1,80 @@
+#!/usr/bin/env bash
+# Shape_Class in the real ParaView GUI under Xvfb (shape_class_script.py):
+# colored by it, a display's color map is categorical, with one legend
+# entry per class named as Shape_Class_Names names it, distinct colors,
+# and its legend shown; on the captured screen, the legend's class names
+# are read back (tesseract) and the torus shows the dome and saddle colors.
+#   RunShapeClassTest.sh PARAVIEW PLUGIN SCREENSHOT.png
+set -u
+paraview=$1 plugin=$2 screenshot=$3
+here=$(cd "$(dirname "$0")" && pwd)
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+export GUI_TEST_PLUGIN=$plugin GUI_TEST_MARKER=$work/marker GUI_TEST_WORK=$work
+mkdir -p "$(dirname "$screenshot")"
+rm -f "$screenshot"
+
+xvfb-run -a -s "-screen 0 1600x1000x24" bash -c '
+  "$0" --dr --script="$1" > "$GUI_TEST_WORK/paraview.log" 2>&1 &
+  pid=$!
+  for i in $(seq 1 120); do [ -s "$GUI_TEST_MARKER" ] && break; sleep 1; done
+  window=$(xdotool search --sync --onlyvisible --name "ParaView" | head -n 1)
+  [ -n "$window" ] && xdotool windowmove "$window" 0 0 windowsize "$window" 1600 1000
+  sleep 5
+  import -window root "$2"
+  kill "$pid" 2>/dev/null
+  wait "$pid" 2>/dev/null
+  exit 0' "$paraview" "$here/shape_class_script.py" "$screenshot"
+
+marker=$(cat "$GUI_TEST_MARKER" 2>/dev/null || echo "no marker: the GUI script did not run")
+echo "GUI script:"
+echo "$marker"
+case "$marker" in ok*) ;; *) tail -n 20 "$work/paraview.log"; exit 1 ;; esac
+status=0
+expect() {
+  if grep -qx "$1" <<< "$marker"; then echo "as expected: $1"; else echo "FAILED: expected '$1'"; status=1; fi
+}
+expect "colored by Shape_Class"
+expect "own map 1"
+expect "categorical 1"
+expect "annotations 0,Undetermined,1,Flat,2,Dome,3,Cup,4,Ridge,5,Valley,6,Saddle"
+expect "colors 21"
+expect "distinct 7"
+expect "legend 1"
+grep -q "^classes .*2.*6" <<< "$marker" && echo "the torus has domes and saddles" ||
+  { echo "FAILED: no domes and saddles on the torus"; status=1; }
+if [ ! -s "$screenshot" ]; then
+  echo "FAILED: no screenshot"
+  exit 1
+fi
+# The screen shows the dome red (0.84, 0.15, 0.16) and the saddle green
+# (0.20, 0.65, 0.25) of the categorical map, which no continuous map has.
+read -r reds greens <<< "$(convert "$screenshot" -sample 50% txt:- | awk -F"[(),: ]+" '/^[0-9]/ {
+    r = $3; g = $4; b = $5
+    if (r > 190 && g < 70 && b < 70) red++
+    if (g > 140 && r < 80 && b < 90) green++ }
+    END { printf "%d %d", red, green }')"
+if [ "$reds" -gt 200 ] && [ "$greens" -gt 200 ]; then
+  echo "screen: $reds dome-red and $greens saddle-green pixels"
+else
+  echo "FAILED: screen shows $reds dome-red and $greens saddle-green pixels"
+  status=1
+fi
+# The legend, at the bottom right of the view in the 1600x1000 window: its
+# seven class names read back (tesseract, on the legend enlarged).
+if command -v tesseract > /dev/null; then
+  found=$(convert "$screenshot" -crop 240x330+1380+670 +repage -resize 300% -colorspace Gray png:- |
+    tesseract - - --psm 6 2>/dev/null | grep -o -w -E "Undetermined|Flat|Dome|Cup|Ridge|Valley|Saddle" |
+    sort -u | tr '\n' ' ')
+  if [ "$(wc -w <<< "$found")" -eq 7 ]; then
+    echo "legend read on screen: $found"
+  else
+    echo "FAILED: the legend's seven class names are not on screen (read: $found)"
+    status=1
+  fi
+else
+  echo "FAILED: tesseract is not installed (Scripts/setup.sh installs it)"
+  status=1
+fi
+echo "screenshot: $screenshot"
+exit $status
