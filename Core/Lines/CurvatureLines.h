@@ -84,6 +84,12 @@ struct LineSettings
   /// about constant along its direction (a torus, a cylinder) the zeros of
   /// its derivative are noise, not lines.
   double RelativeBend = 0.02;
+  /// The radius of each point's fit of its neighbors' curvatures, in
+  /// neighborhood radii.
+  double FitRadius = 1.0;
+  /// At most about this many neighbors per fit: wider neighborhoods are
+  /// thinned evenly.
+  int FitNeighbors = 2000;
   /// Neighbors of each point in the graph whose edges the lines cross.
   int GraphNeighbors = 8;
   /// Nearest neighbors whose distance is the radius where none is given.

@@ -69,20 +69,29 @@ bool MakeFrame(const LineInput& input, std::int64_t i, Frame& frame)
   return true;
 }
 
+/// Terms of the fitted polynomial: up to the cubic ones, so that the
+/// slope at the point is not biased by the curvature's third derivative
+/// (which would move the lines of asymmetric profiles towards their
+/// flatter side).
+constexpr int Terms = 10;
+using Matrix = Eigen::Matrix<double, Terms, Terms>;
+using Coefficients = Eigen::Matrix<double, Terms, 2>;
+using Column = Eigen::Matrix<double, Terms, 1>;
+
 /// The normal equations of k(u, v) = c0 + c1 u + c2 v + c3 u^2 + c4 uv +
-/// c5 v^2 over the neighbors, u and v in radii (for conditioning), for both
-/// curvatures at once.
-struct QuadraticFit
+/// c5 v^2 + (cubic terms) over the neighbors, u and v in radii (for
+/// conditioning), for both curvatures at once.
+struct PolynomialFit
 {
-  Eigen::Matrix<double, 6, 6> Normal = Eigen::Matrix<double, 6, 6>::Zero();
-  Eigen::Matrix<double, 6, 2> Right = Eigen::Matrix<double, 6, 2>::Zero();
+  Matrix Normal = Matrix::Zero();
+  Coefficients Right = Coefficients::Zero();
   double Squares[2] = { 0.0, 0.0 };
   int Count = 0;
 
   void Add(double u, double v, double kMax, double kMin)
   {
-    Eigen::Matrix<double, 6, 1> row;
-    row << 1.0, u, v, u * u, u * v, v * v;
+    Column row;
+    row << 1.0, u, v, u * u, u * v, v * v, u * u * u, u * u * v, u * v * v, v * v * v;
     this->Normal.selfadjointView<Eigen::Lower>().rankUpdate(row);
     this->Right.col(0) += kMax * row;
     this->Right.col(1) += kMin * row;
@@ -96,6 +105,7 @@ struct Neighbor
 {
   double Squared;
   std::int64_t Id;
+  double U, V; ///< tangent coordinates, in radii
   bool operator<(const Neighbor& other) const
   {
     return this->Squared != other.Squared ? this->Squared < other.Squared : this->Id < other.Id;
@@ -104,10 +114,7 @@ struct Neighbor
 
 /// The extremality of one curvature from the fit's coefficients c (in
 /// radii), `along` = 1 for u (k_max), 2 for v (k_min).
-Extremality Extremal(const Eigen::Matrix<double, 6, 1>& c,
-  int along,
-  double radius,
-  const Frame& frame)
+Extremality Extremal(const Column& c, int along, double radius, const Frame& frame)
 {
   Extremality x;
   const double r2 = radius * radius;
@@ -149,6 +156,7 @@ public:
         this->Grid.SquaredDistanceToKth(x.data(), this->Settings.RadiusNeighbors, this->Scratch));
     }
     this->Out.Radius[i] = radius;
+    radius *= this->Settings.FitRadius;
     Frame frame;
     if (!(radius > 0.0) || !std::isfinite(radius) || !MakeFrame(this->Input, i, frame) ||
       !Usable(this->Input, i))
@@ -156,22 +164,28 @@ public:
       this->GraphOf(i, x, radius);
       return;
     }
-    QuadraticFit fit;
     this->Neighbors.clear();
-    this->Grid.ForEachWithinRadius(x.data(),
-      radius,
-      [&](const double* q, std::int64_t id)
+    const std::size_t found = this->Grid.GatherShell(x.data(), 0.0, radius, this->Shell);
+    for (std::size_t k = 0; k < found; ++k)
+    {
+      const Vec3 d{ { this->Shell.Dx[k], this->Shell.Dy[k], this->Shell.Dz[k] } };
+      this->Neighbors.push_back(
+        { Dot(d, d), this->Shell.Ids[k], Dot(d, frame.T1) / radius, Dot(d, frame.T2) / radius });
+    }
+    // A wide neighborhood (the estimator's on a noisy cloud holds
+    // thousands) is thinned to every stride-th neighbor in the grid's fixed
+    // order: enough for ten coefficients, at a bounded cost per point.
+    const std::size_t budget = static_cast<std::size_t>(this->Settings.FitNeighbors);
+    const std::size_t stride = 1 + this->Neighbors.size() / budget;
+    PolynomialFit fit;
+    for (std::size_t k = 0; k < this->Neighbors.size(); k += stride)
+    {
+      const Neighbor& q = this->Neighbors[k];
+      if (Usable(this->Input, q.Id))
       {
-        const Vec3 d{ { q[0] - x[0], q[1] - x[1], q[2] - x[2] } };
-        this->Neighbors.push_back({ Dot(d, d), id });
-        if (Usable(this->Input, id))
-        {
-          fit.Add(Dot(d, frame.T1) / radius,
-            Dot(d, frame.T2) / radius,
-            this->Input.MaximumCurvature[id],
-            this->Input.MinimumCurvature[id]);
-        }
-      });
+        fit.Add(q.U, q.V, this->Input.MaximumCurvature[q.Id], this->Input.MinimumCurvature[q.Id]);
+      }
+    }
     this->KeepNearest(i);
     this->Solve(i, fit, radius, frame);
   }
@@ -188,7 +202,7 @@ private:
         [&](const double* q, std::int64_t id)
         {
           const Vec3 d{ { q[0] - x[0], q[1] - x[1], q[2] - x[2] } };
-          this->Neighbors.push_back({ Dot(d, d), id });
+          this->Neighbors.push_back({ Dot(d, d), id, 0.0, 0.0 });
         });
     }
     this->KeepNearest(i);
@@ -212,20 +226,20 @@ private:
     std::fill(row + filled, row + width, -1);
   }
 
-  void Solve(std::int64_t i, const QuadraticFit& fit, double radius, const Frame& frame)
+  void Solve(std::int64_t i, const PolynomialFit& fit, double radius, const Frame& frame)
   {
-    if (fit.Count < 12)
+    if (fit.Count < 2 * Terms)
     {
       return;
     }
-    const Eigen::Matrix<double, 6, 6> normal = fit.Normal.selfadjointView<Eigen::Lower>();
-    const Eigen::LDLT<Eigen::Matrix<double, 6, 6>> ldlt(normal);
+    const Matrix normal = fit.Normal.selfadjointView<Eigen::Lower>();
+    const Eigen::LDLT<Matrix> ldlt(normal);
     if (ldlt.info() != Eigen::Success || !(ldlt.rcond() > 1e-10))
     {
       return;
     }
-    const Eigen::Matrix<double, 6, 2> c = ldlt.solve(fit.Right);
-    const Eigen::Matrix<double, 6, 6> inverse = ldlt.solve(Eigen::Matrix<double, 6, 6>::Identity());
+    const Coefficients c = ldlt.solve(fit.Right);
+    const Matrix inverse = ldlt.solve(Matrix::Identity());
     const double given = this->Input.StandardError ? this->Input.StandardError[i] : 0.0;
     const double kMax = this->Input.MaximumCurvature[i], kMin = this->Input.MinimumCurvature[i];
     const double spread = kMax - kMin;
@@ -237,7 +251,7 @@ private:
     {
       const double residual =
         std::max(0.0, fit.Squares[which] - c.col(which).dot(fit.Right.col(which))) /
-        (fit.Count - 6);
+        (fit.Count - Terms);
       const double noise = std::max(residual, given * given);
       const int along = which == 0 ? 1 : 2;
       const int bendIndex = which == 0 ? 3 : 5;
@@ -257,6 +271,7 @@ private:
   const PointGrid& Grid;
   PointDerivatives& Out;
   std::vector<Neighbor> Neighbors;
+  ShellPoints Shell;
   std::vector<double> Scratch;
 };
 
@@ -281,9 +296,11 @@ PointDerivatives FitDerivatives(const LineInput& input,
     [&](std::int64_t begin, std::int64_t end)
     {
       PointFitter fitter(input, settings, grid, out);
-      for (std::int64_t i = begin; i < end; ++i)
+      // In the grid's order: consecutive points share their neighbors,
+      // whose curvatures then stay in cache.
+      for (std::int64_t j = begin; j < end; ++j)
       {
-        fitter.Fit(i);
+        fitter.Fit(grid.GetSortedId(j));
       }
     });
   return out;

@@ -1,7 +1,7 @@
 /**
  * @file LineDerivatives.h
  * @brief Per point: the derivatives of each principal curvature along its
- * own direction, from a quadratic least-squares fit of the neighbors'
+ * own direction, from a cubic least-squares fit of the neighbors'
  * curvatures over the point's tangent plane. No VTK.
  */
 #ifndef LineDerivatives_h
