@@ -1,6 +1,7 @@
 #include "Lines/CurvatureLines.h"
 
 #include "Lines/LineTracing.h"
+#include "Neighbors/PointGrid.h"
 
 #include <algorithm>
 #include <cmath>

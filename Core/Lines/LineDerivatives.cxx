@@ -1,5 +1,8 @@
 #include "Lines/LineDerivatives.h"
 
+#include "Common/WorkRunner.h"
+#include "Neighbors/PointGrid.h"
+
 #include <Eigen/Dense>
 
 #include <algorithm>

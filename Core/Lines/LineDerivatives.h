@@ -7,8 +7,7 @@
 #ifndef LineDerivatives_h
 #define LineDerivatives_h
 
-#include "Lines/CurvatureLines.h"
-#include "Neighbors/PointGrid.h"
+#include "Lines/LineTypes.h"
 
 #include <array>
 #include <cstdint>
@@ -16,6 +15,8 @@
 
 namespace pcurv
 {
+class PointGrid;
+class WorkRunner;
 
 /// One principal curvature's extremality at a point, along the direction
 /// Direction (d_max for k_max; n x d_max for k_min).
