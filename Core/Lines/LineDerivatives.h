@@ -1,0 +1,57 @@
+/**
+ * @file LineDerivatives.h
+ * @brief Per point: the derivatives of each principal curvature along its
+ * own direction, from a cubic least-squares fit of the neighbors'
+ * curvatures over the point's tangent plane. No VTK.
+ */
+#ifndef LineDerivatives_h
+#define LineDerivatives_h
+
+#include "Lines/LineTypes.h"
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace pcurv
+{
+class PointGrid;
+class WorkRunner;
+
+/// One principal curvature's extremality at a point, along the direction
+/// Direction (d_max for k_max; n x d_max for k_min).
+struct Extremality
+{
+  double Slope = 0.0;      ///< e = dk/dd
+  double Bend = 0.0;       ///< d e / d d (negative at a maximum)
+  double SlopeError = 0.0; ///< standard error of Slope
+  /// The least |d e / d d| an extremum needs here (LineSettings::RelativeBend).
+  double BendFloor = 0.0;
+  /// Whether Bend stands out of its standard error where the curvatures
+  /// differ (directions are defined).
+  bool Significant = false;
+  std::array<double, 3> Direction{ { 0.0, 0.0, 0.0 } };
+  std::array<double, 3> Tangent{ { 0.0, 0.0, 0.0 } }; ///< of the zero set of e
+};
+
+/// What the crossings need of every point.
+struct PointDerivatives
+{
+  std::vector<Extremality> Maximum, Minimum; ///< of k_max, of k_min
+  std::vector<unsigned char> Fitted;         ///< 1 where the fit held
+  std::vector<double> Radius;
+  /// Each point's GraphNeighbors nearest points (-1 fills), nearest first.
+  std::vector<std::int64_t> Graph;
+  int GraphWidth = 0;
+};
+
+/// Fits every point of `input` over its neighbors in `grid` (built on
+/// input.Points).
+PointDerivatives FitDerivatives(const LineInput& input,
+  const LineSettings& settings,
+  const PointGrid& grid,
+  WorkRunner* runner);
+
+} // namespace pcurv
+
+#endif

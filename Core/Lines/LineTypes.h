@@ -1,0 +1,96 @@
+/**
+ * @file LineTypes.h
+ * @brief The curvature lines' kinds, input and settings (CurvatureLines.h
+ * has the entry point). No VTK.
+ */
+#ifndef LineTypes_h
+#define LineTypes_h
+
+#include <cstdint>
+#include <stdexcept>
+
+namespace pcurv
+{
+
+/// What a line is an extremum of. Ridge and Valley are the dominant cases
+/// of a maximum of k_max and of a minimum of k_min.
+enum class LineKind : unsigned char
+{
+  Ridge = 0,            ///< k_max maximal along d_max, k_max > |k_min|
+  Valley = 1,           ///< k_min minimal along d_min, k_min < -|k_max|
+  MaximumOfMaximum = 2, ///< k_max maximal, not dominant
+  MinimumOfMaximum = 3, ///< k_max minimal
+  MaximumOfMinimum = 4, ///< k_min maximal
+  MinimumOfMinimum = 5  ///< k_min minimal, not dominant
+};
+constexpr int LineKindCount = 6;
+
+/// Bit of a kind in LineSettings::Kinds.
+constexpr unsigned KindBit(LineKind kind)
+{
+  return 1u << static_cast<unsigned>(kind);
+}
+constexpr unsigned RidgesAndValleys = KindBit(LineKind::Ridge) | KindBit(LineKind::Valley);
+constexpr unsigned AllLineKinds = (1u << LineKindCount) - 1u;
+
+/// The cloud and its curvatures, as the caller's arrays (xyz triplets for
+/// points and vectors). Optional arrays may be null.
+struct LineInput
+{
+  std::int64_t Count = 0;
+  const double* Points = nullptr;
+  const double* Normals = nullptr; ///< unit; the directions' tangent plane
+  const double* MaximumCurvature = nullptr;
+  const double* MinimumCurvature = nullptr;
+  const double* MaximumDirection = nullptr; ///< unit, up to sign
+  const double* MinimumDirection = nullptr; ///< unit, up to sign (unused: n x d_max)
+  /// Optional: the curvatures' standard error; a point's extremum must
+  /// stand out of it.
+  const double* StandardError = nullptr;
+  /// Optional: the neighborhood radius of each point (the curvature
+  /// filter's Surroundings_Threshold); else the distance to the
+  /// RadiusNeighbors-th nearest point.
+  const double* Radius = nullptr;
+  /// Optional: nonzero where the curvatures are valid.
+  const unsigned char* Valid = nullptr;
+};
+
+struct LineSettings
+{
+  /// Kinds to extract (KindBit), by default the crests users mean.
+  unsigned Kinds = RidgesAndValleys;
+  /// Lines shorter than this many median neighborhood radii are dropped.
+  double MinimumLength = 3.0;
+  /// Lines whose strength (integral of |k| along them, in radians) is
+  /// below this are dropped.
+  double MinimumStrength = 0.0;
+  /// How many standard errors an extremum's second derivative must exceed.
+  double Significance = 2.0;
+  /// The least second derivative |k''| of the curvature along its
+  /// direction, relative to (k_max - k_min) max(|k_max|, |k_min|)^2 (the
+  /// same unit, 1/length^3, whatever the scale): where the curvature is
+  /// about constant along its direction (a torus, a cylinder) the zeros of
+  /// its derivative are noise, not lines.
+  double RelativeBend = 0.02;
+  /// The radius of each point's fit of its neighbors' curvatures, in
+  /// neighborhood radii.
+  double FitRadius = 1.0;
+  /// At most about this many neighbors per fit: wider neighborhoods are
+  /// thinned evenly.
+  int FitNeighbors = 2000;
+  /// Neighbors of each point in the graph whose edges the lines cross.
+  int GraphNeighbors = 8;
+  /// Nearest neighbors whose distance is the radius where none is given.
+  int RadiusNeighbors = 40;
+};
+
+/// Thrown on input the lines cannot be computed from.
+class LineInputError : public std::invalid_argument
+{
+public:
+  using std::invalid_argument::invalid_argument;
+};
+
+} // namespace pcurv
+
+#endif

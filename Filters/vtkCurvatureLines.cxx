@@ -1,0 +1,197 @@
+#include "vtkCurvatureLines.h"
+
+#include "FilterProgress.h"
+#include "Lines/CurvatureLines.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPointSet.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <vector>
+
+vtkStandardNewMacro(vtkCurvatureLines);
+
+namespace
+{
+
+/// A point-data array as doubles, `components` per point; empty when the
+/// array is missing or has another number of components.
+std::vector<double> ReadArray(vtkPointData* pd, const char* name, int components)
+{
+  std::vector<double> values;
+  vtkDataArray* array = pd->GetArray(name);
+  if (!array || array->GetNumberOfComponents() != components)
+  {
+    return values;
+  }
+  const vtkIdType n = array->GetNumberOfTuples();
+  values.resize(static_cast<std::size_t>(n) * components);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    for (int k = 0; k < components; ++k)
+    {
+      values[i * components + k] = array->GetComponent(i, k);
+    }
+  }
+  return values;
+}
+
+/// The normals the directions are tangent to: the fit's, else the input's.
+std::vector<double> ReadNormals(vtkPointData* pd)
+{
+  std::vector<double> normals = ReadArray(pd, "Fitted_Normal", 3);
+  if (normals.empty() && pd->GetNormals() && pd->GetNormals()->GetNumberOfComponents() == 3)
+  {
+    normals = ReadArray(pd, pd->GetNormals()->GetName(), 3);
+  }
+  return normals.empty() ? ReadArray(pd, "Normals", 3) : normals;
+}
+
+unsigned KindMask(int kinds)
+{
+  switch (kinds)
+  {
+    case vtkCurvatureLines::RIDGES:
+      return pcurv::KindBit(pcurv::LineKind::Ridge);
+    case vtkCurvatureLines::VALLEYS:
+      return pcurv::KindBit(pcurv::LineKind::Valley);
+    case vtkCurvatureLines::ALL_EXTREMAL_LINES:
+      return pcurv::AllLineKinds;
+    default:
+      return pcurv::RidgesAndValleys;
+  }
+}
+
+/// The core's lines as polylines with their cell and point data.
+void WriteLines(const pcurv::LineResult& result, vtkPolyData* output)
+{
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  points->SetDataTypeToDouble();
+  auto lines = vtkSmartPointer<vtkCellArray>::New();
+  auto kind = vtkSmartPointer<vtkUnsignedCharArray>::New();
+  kind->SetName("Line_Kind");
+  auto strength = vtkSmartPointer<vtkDoubleArray>::New();
+  strength->SetName("Line_Strength");
+  auto length = vtkSmartPointer<vtkDoubleArray>::New();
+  length->SetName("Line_Length");
+  auto curvature = vtkSmartPointer<vtkDoubleArray>::New();
+  curvature->SetName("Line_Curvature");
+  for (const pcurv::CurvatureLine& line : result.Lines)
+  {
+    const vtkIdType count = static_cast<vtkIdType>(line.Curvature.size());
+    lines->InsertNextCell(count);
+    for (vtkIdType i = 0; i < count; ++i)
+    {
+      lines->InsertCellPoint(points->InsertNextPoint(&line.Points[3 * i]));
+      curvature->InsertNextValue(line.Curvature[i]);
+    }
+    kind->InsertNextValue(static_cast<unsigned char>(line.Kind));
+    strength->InsertNextValue(line.Strength);
+    length->InsertNextValue(line.Length);
+  }
+  output->SetPoints(points);
+  output->SetLines(lines);
+  output->GetCellData()->AddArray(kind);
+  output->GetCellData()->SetActiveScalars("Line_Kind");
+  output->GetCellData()->AddArray(strength);
+  output->GetCellData()->AddArray(length);
+  output->GetPointData()->AddArray(curvature);
+}
+
+} // namespace
+
+vtkCurvatureLines::vtkCurvatureLines() = default;
+
+int vtkCurvatureLines::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPointSet");
+  return 1;
+}
+
+int vtkCurvatureLines::RequestData(vtkInformation*,
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector)
+{
+  vtkPointSet* input = vtkPointSet::GetData(inputVector[0]);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  if (!input || !output)
+  {
+    vtkErrorMacro("Curvature Lines needs a point set as input.");
+    return 0;
+  }
+  const vtkIdType n = input->GetNumberOfPoints();
+  WriteLines(pcurv::LineResult{}, output);
+  if (n == 0)
+  {
+    return 1;
+  }
+  vtkPointData* pd = input->GetPointData();
+  const std::vector<double> kMax = ReadArray(pd, "Maximum_Curvature", 1);
+  const std::vector<double> kMin = ReadArray(pd, "Minimum_Curvature", 1);
+  const std::vector<double> dMax = ReadArray(pd, "Maximum_Curvature_Direction", 3);
+  const std::vector<double> dMin = ReadArray(pd, "Minimum_Curvature_Direction", 3);
+  const std::vector<double> normals = ReadNormals(pd);
+  if (kMax.empty() || kMin.empty() || dMax.empty() || normals.empty())
+  {
+    vtkErrorMacro("Curvature Lines needs the output of Principal Curvatures: the point arrays "
+                  "Maximum_Curvature, Minimum_Curvature, Maximum_Curvature_Direction (3 "
+                  "components) and normals (Fitted_Normal or Normals).");
+    return 0;
+  }
+  std::vector<double> xyz(3 * static_cast<std::size_t>(n));
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    input->GetPoint(i, &xyz[3 * i]);
+  }
+  const std::vector<double> standardError = ReadArray(pd, "Curvature_Standard_Error", 1);
+  const std::vector<double> radius = ReadArray(pd, "Surroundings_Threshold", 1);
+  const std::vector<double> validValues = ReadArray(pd, "Curvature_Valid", 1);
+  std::vector<unsigned char> valid(validValues.begin(), validValues.end());
+
+  pcurv::LineInput in;
+  in.Count = n;
+  in.Points = xyz.data();
+  in.Normals = normals.data();
+  in.MaximumCurvature = kMax.data();
+  in.MinimumCurvature = kMin.data();
+  in.MaximumDirection = dMax.data();
+  in.MinimumDirection = dMin.empty() ? nullptr : dMin.data();
+  in.StandardError = standardError.empty() ? nullptr : standardError.data();
+  in.Radius = radius.empty() ? nullptr : radius.data();
+  in.Valid = valid.empty() ? nullptr : valid.data();
+  pcurv::LineSettings settings;
+  settings.Kinds = KindMask(this->Kinds);
+  settings.MinimumLength = this->MinimumLength;
+  settings.MinimumStrength = this->MinimumStrength;
+  settings.Significance = this->Significance;
+  try
+  {
+    pcurv::SMPToolsRunner runner(0);
+    WriteLines(pcurv::ExtractCurvatureLines(in, settings, &runner), output);
+  }
+  catch (const pcurv::LineInputError& error)
+  {
+    vtkErrorMacro(<< error.what());
+    return 0;
+  }
+  return 1;
+}
+
+void vtkCurvatureLines::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Kinds: " << this->Kinds << "\n";
+  os << indent << "MinimumLength: " << this->MinimumLength << "\n";
+  os << indent << "MinimumStrength: " << this->MinimumStrength << "\n";
+  os << indent << "Significance: " << this->Significance << "\n";
+}
