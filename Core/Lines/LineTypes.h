@@ -77,7 +77,7 @@ struct LineSettings
   double FitRadius = 1.0;
   /// At most about this many neighbors per fit: wider neighborhoods are
   /// thinned evenly.
-  int FitNeighbors = 2000;
+  int FitNeighbors = 500;
   /// Neighbors of each point in the graph whose edges the lines cross.
   int GraphNeighbors = 8;
   /// Nearest neighbors whose distance is the radius where none is given.
