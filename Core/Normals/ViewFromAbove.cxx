@@ -12,13 +12,23 @@ namespace normals
 {
 namespace
 {
-/// Columns are keyed by their two cell indices packed into one integer:
-/// a cloud spans far fewer than 2^31 columns along each axis.
+/// A column's index along one axis. Far or non-finite coordinates share
+/// the extreme columns, so that the index stays an integer.
+std::int64_t ColumnIndex(double coordinate, double width)
+{
+  constexpr double Limit = 1073741824.0; // 2^30
+  const double cell = std::floor(coordinate / width);
+  if (!(cell > -Limit))
+  {
+    return -static_cast<std::int64_t>(Limit);
+  }
+  return cell < Limit ? static_cast<std::int64_t>(cell) : static_cast<std::int64_t>(Limit);
+}
+
+/// Columns are keyed by their two indices packed into one integer.
 std::int64_t ColumnKey(double x, double y, double width)
 {
-  const auto ix = static_cast<std::int64_t>(std::floor(x / width));
-  const auto iy = static_cast<std::int64_t>(std::floor(y / width));
-  return ix * (std::int64_t(1) << 32) + iy;
+  return ColumnIndex(x, width) * (std::int64_t(1) << 32) + ColumnIndex(y, width);
 }
 } // namespace
 
@@ -28,6 +38,10 @@ std::vector<Sight> SightsFromAbove(const OrderedCloud& ordered,
   double depth)
 {
   const std::int64_t n = ordered.Size();
+  if (!(width > 0.0) || !std::isfinite(width) || !std::isfinite(depth))
+  {
+    return std::vector<Sight>(n, Sight::Steep); // nothing judged: not seen from above
+  }
   std::unordered_map<std::int64_t, double> highest;
   highest.reserve(static_cast<std::size_t>(n / 4 + 1));
   std::vector<std::int64_t> keys(n);
