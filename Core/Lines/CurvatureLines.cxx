@@ -94,6 +94,37 @@ double Median(std::vector<double> values)
   return values[values.size() / 2];
 }
 
+/// The lattice of the grid the lines work on: cells about the distance to
+/// a point's graph neighbors (measured on a thousand of the points, on a
+/// first grid of cells one neighborhood wide), so that the nearest-neighbor
+/// query every point makes visits a few dozen points, not a neighborhood's
+/// thousands.
+GridLattice GraphLattice(const LineInput& input, const LineSettings& settings, WorkRunner* runner)
+{
+  const GridLattice coarse = PointLattice(input, settings);
+  PointGrid grid;
+  grid.Build(input.Points, input.Count, coarse, runner);
+  std::vector<double> distances, scratch;
+  const std::int64_t step = std::max<std::int64_t>(1, input.Count / 1024);
+  for (std::int64_t i = 0; i < input.Count; i += step)
+  {
+    distances.push_back(
+      grid.SquaredDistanceToKth(input.Points + 3 * i, settings.GraphNeighbors + 1, scratch));
+  }
+  const double cell = 1.5 * std::sqrt(Median(distances));
+  if (!(cell > 0.0) || !(cell < coarse.CellSize))
+  {
+    return coarse;
+  }
+  double lower[3], upper[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    lower[k] = coarse.Origin[k];
+    upper[k] = coarse.Origin[k] + (coarse.LastCell[k] + 1.0) * coarse.CellSize;
+  }
+  return GridLattice::Make(lower, upper, input.Count, cell);
+}
+
 /// A traced line with its length and strength.
 CurvatureLine Measure(const TracedLine& traced)
 {
@@ -130,7 +161,7 @@ LineResult ExtractCurvatureLines(const LineInput& input,
     return result;
   }
   PointGrid grid;
-  grid.Build(input.Points, input.Count, PointLattice(input, settings), runner);
+  grid.Build(input.Points, input.Count, GraphLattice(input, settings, runner), runner);
   const PointDerivatives derivatives = FitDerivatives(input, settings, grid, runner);
   std::vector<double> radii;
   for (std::int64_t i = 0; i < input.Count; ++i)
@@ -141,7 +172,8 @@ LineResult ExtractCurvatureLines(const LineInput& input,
     }
   }
   result.MedianRadius = Median(radii);
-  const std::vector<LineCrossing> crossings = FindCrossings(input, settings, derivatives);
+  const std::vector<LineCrossing> crossings =
+    FindCrossings(input, settings, derivatives, grid.GetSortedIds(), runner);
   result.Crossings = static_cast<std::int64_t>(crossings.size());
   std::vector<double> edges;
   for (const LineCrossing& c : crossings)

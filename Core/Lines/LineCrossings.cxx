@@ -1,5 +1,6 @@
 #include "Lines/LineCrossings.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace pcurv
@@ -139,40 +140,62 @@ bool InRow(const PointDerivatives& d, std::int64_t q, std::int64_t p)
 
 std::vector<LineCrossing> FindCrossings(const LineInput& input,
   const LineSettings& settings,
-  const PointDerivatives& derivatives)
+  const PointDerivatives& derivatives,
+  const std::int64_t* order,
+  WorkRunner* runner)
 {
-  std::vector<LineCrossing> crossings;
-  EdgeCrossings edges(input, settings, crossings);
   const bool maxima = settings.Kinds &
     (KindBit(LineKind::Ridge) | KindBit(LineKind::MaximumOfMaximum) |
       KindBit(LineKind::MinimumOfMaximum));
   const bool minima = settings.Kinds &
     (KindBit(LineKind::Valley) | KindBit(LineKind::MinimumOfMinimum) |
       KindBit(LineKind::MaximumOfMinimum));
-  for (std::int64_t p = 0; p < input.Count; ++p)
+  // Fixed blocks of the order, each with its own list, joined in order:
+  // the same crossings in the same order on any number of threads.
+  constexpr std::int64_t Block = 4096;
+  const std::int64_t blocks = (input.Count + Block - 1) / Block;
+  std::vector<std::vector<LineCrossing>> found(static_cast<std::size_t>(blocks));
+  RunRanges(runner,
+    blocks,
+    1,
+    [&](std::int64_t firstBlock, std::int64_t endBlock)
+    {
+      for (std::int64_t b = firstBlock; b < endBlock; ++b)
+      {
+        EdgeCrossings edges(input, settings, found[b]);
+        for (std::int64_t j = b * Block; j < std::min(input.Count, (b + 1) * Block); ++j)
+        {
+          const std::int64_t p = order[j];
+          if (!derivatives.Fitted[p])
+          {
+            continue;
+          }
+          const std::int64_t* row = &derivatives.Graph[p * derivatives.GraphWidth];
+          for (int k = 0; k < derivatives.GraphWidth; ++k)
+          {
+            const std::int64_t q = row[k];
+            // Each undirected edge once: from its lower end when both
+            // list it.
+            if (q < 0 || !derivatives.Fitted[q] || (q < p && InRow(derivatives, q, p)))
+            {
+              continue;
+            }
+            if (maxima)
+            {
+              edges.Cross(p, q, derivatives.Maximum[p], derivatives.Maximum[q], true);
+            }
+            if (minima)
+            {
+              edges.Cross(p, q, derivatives.Minimum[p], derivatives.Minimum[q], false);
+            }
+          }
+        }
+      }
+    });
+  std::vector<LineCrossing> crossings;
+  for (const std::vector<LineCrossing>& block : found)
   {
-    if (!derivatives.Fitted[p])
-    {
-      continue;
-    }
-    const std::int64_t* row = &derivatives.Graph[p * derivatives.GraphWidth];
-    for (int k = 0; k < derivatives.GraphWidth; ++k)
-    {
-      const std::int64_t q = row[k];
-      // Each undirected edge once: from its lower end when both list it.
-      if (q < 0 || !derivatives.Fitted[q] || (q < p && InRow(derivatives, q, p)))
-      {
-        continue;
-      }
-      if (maxima)
-      {
-        edges.Cross(p, q, derivatives.Maximum[p], derivatives.Maximum[q], true);
-      }
-      if (minima)
-      {
-        edges.Cross(p, q, derivatives.Minimum[p], derivatives.Minimum[q], false);
-      }
-    }
+    crossings.insert(crossings.end(), block.begin(), block.end());
   }
   return crossings;
 }

@@ -7,6 +7,7 @@
 #ifndef LineCrossings_h
 #define LineCrossings_h
 
+#include "Common/WorkRunner.h"
 #include "Lines/LineDerivatives.h"
 
 #include <array>
@@ -27,10 +28,14 @@ struct LineCrossing
 };
 
 /// The crossings of the selected kinds, each graph edge once, in the order
-/// of their edges (lower point id, then higher).
+/// of their edges' first points in `order` (a permutation of the points
+/// that keeps neighbors together, such as a grid's: their data then stay
+/// in cache). The order does not depend on `runner`.
 std::vector<LineCrossing> FindCrossings(const LineInput& input,
   const LineSettings& settings,
-  const PointDerivatives& derivatives);
+  const PointDerivatives& derivatives,
+  const std::int64_t* order,
+  WorkRunner* runner);
 
 } // namespace pcurv
 

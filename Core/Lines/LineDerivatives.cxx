@@ -1,248 +1,176 @@
 #include "Lines/LineDerivatives.h"
 
 #include "Common/WorkRunner.h"
+#include "Lines/CurvatureFit.h"
+#include "Neighbors/AnchorCells.h"
 #include "Neighbors/PointGrid.h"
-
-#include <Eigen/Dense>
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 #include <utility>
 
 namespace pcurv
 {
 namespace
 {
-using Vec3 = std::array<double, 3>;
+constexpr std::int64_t Grain = 2048;
 
-Vec3 Load(const double* a, std::int64_t i)
+LineVector Load(const double* a, std::int64_t i)
 {
   return { { a[3 * i], a[3 * i + 1], a[3 * i + 2] } };
 }
-double Dot(const Vec3& a, const Vec3& b)
+double Dot(const LineVector& a, const LineVector& b)
 {
   return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
-Vec3 Cross(const Vec3& a, const Vec3& b)
+LineVector Cross(const LineVector& a, const LineVector& b)
 {
   return { { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] } };
 }
-Vec3 Combine(double a, const Vec3& u, double b, const Vec3& v)
+double SquaredDistance(const LineVector& a, const LineVector& b)
 {
-  return { { a * u[0] + b * v[0], a * u[1] + b * v[1], a * u[2] + b * v[2] } };
+  return (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
+    (a[2] - b[2]) * (a[2] - b[2]);
 }
-bool Normalize(Vec3& v)
+bool Normalize(LineVector& v)
 {
   const double length = std::sqrt(Dot(v, v));
   if (!(length > 1e-12) || !std::isfinite(length))
   {
     return false;
   }
-  v = Combine(1.0 / length, v, 0.0, v);
+  for (double& c : v)
+  {
+    c /= length;
+  }
   return true;
 }
 
-bool Usable(const LineInput& input, std::int64_t i)
+/// A point's place in the work: its fit radius, whether it may share a
+/// fit, and its frame.
+struct PointRole
 {
-  return (!input.Valid || input.Valid[i]) && std::isfinite(input.MaximumCurvature[i]) &&
-    std::isfinite(input.MinimumCurvature[i]);
-}
-
-/// The tangent frame of a point: t1 along d_max, t2 = n x t1 (along d_min).
-struct Frame
-{
-  Vec3 Normal, T1, T2;
+  double FitRadius = 0.0;
+  bool Fittable = false; ///< usable curvatures, a frame and a radius
+  bool Dense = false;    ///< its neighborhood holds SharedFitPoints or more
+  LineFrame Frame;
 };
 
-bool MakeFrame(const LineInput& input, std::int64_t i, Frame& frame)
+/// The derivatives of one curvature at a point, as a weighted mean of the
+/// fits that serve it; the standard errors are averaged as variances, as
+/// if the fits' errors were fully correlated (they share most samples).
+struct BlendedDerivatives
 {
-  frame.Normal = Load(input.Normals, i);
-  if (!Normalize(frame.Normal))
-  {
-    return false;
-  }
-  const Vec3 d = Load(input.MaximumDirection, i);
-  frame.T1 = Combine(1.0, d, -Dot(d, frame.Normal), frame.Normal);
-  if (!Normalize(frame.T1))
-  {
-    return false;
-  }
-  frame.T2 = Cross(frame.Normal, frame.T1);
-  return true;
-}
+  double Weight = 0.0, Slope = 0.0, Bend = 0.0, SlopeVariance = 0.0, BendVariance = 0.0;
+  LineVector Gradient{ { 0.0, 0.0, 0.0 } };
 
-/// Terms of the fitted polynomial: up to the cubic ones, so that the
-/// slope at the point is not biased by the curvature's third derivative
-/// (which would move the lines of asymmetric profiles towards their
-/// flatter side).
-constexpr int Terms = 10;
-using Matrix = Eigen::Matrix<double, Terms, Terms>;
-using Coefficients = Eigen::Matrix<double, Terms, 2>;
-using Column = Eigen::Matrix<double, Terms, 1>;
-
-/// The normal equations of k(u, v) = c0 + c1 u + c2 v + c3 u^2 + c4 uv +
-/// c5 v^2 + (cubic terms) over the neighbors, u and v in radii (for
-/// conditioning), for both curvatures at once.
-struct PolynomialFit
-{
-  Matrix Normal = Matrix::Zero();
-  Coefficients Right = Coefficients::Zero();
-  double Squares[2] = { 0.0, 0.0 };
-  int Count = 0;
-
-  void Add(double u, double v, double kMax, double kMin)
+  void Add(const DirectionalDerivatives& d, double weight, double noise)
   {
-    Column row;
-    row << 1.0, u, v, u * u, u * v, v * v, u * u * u, u * u * v, u * v * v, v * v * v;
-    this->Normal.selfadjointView<Eigen::Lower>().rankUpdate(row);
-    this->Right.col(0) += kMax * row;
-    this->Right.col(1) += kMin * row;
-    this->Squares[0] += kMax * kMax;
-    this->Squares[1] += kMin * kMin;
-    ++this->Count;
+    this->Weight += weight;
+    this->Slope += weight * d.Slope;
+    this->Bend += weight * d.Bend;
+    this->SlopeVariance += weight * noise * d.SlopeVariance;
+    this->BendVariance += weight * noise * d.BendVariance;
+    for (int k = 0; k < 3; ++k)
+    {
+      this->Gradient[k] += weight * d.SlopeGradient[k];
+    }
   }
 };
 
-struct Neighbor
+/// The fits of the anchors, in AnchorCells' numbering.
+struct SharedCurvatureFits
 {
-  double Squared;
-  std::int64_t Id;
-  double U, V; ///< tangent coordinates, in radii
-  bool operator<(const Neighbor& other) const
-  {
-    return this->Squared != other.Squared ? this->Squared < other.Squared : this->Id < other.Id;
-  }
+  AnchorCells Cells;
+  std::vector<CurvatureFit> Fits;
 };
 
-/// The extremality of one curvature from the fit's coefficients c (in
-/// radii), `along` = 1 for u (k_max), 2 for v (k_min).
-Extremality Extremal(const Column& c, int along, double radius, const Frame& frame)
-{
-  Extremality x;
-  const double r2 = radius * radius;
-  x.Slope = c[along] / radius;
-  x.Bend = 2.0 * c[along == 1 ? 3 : 5] / r2;
-  const double gradU = (along == 1 ? 2.0 * c[3] : c[4]) / r2;
-  const double gradV = (along == 1 ? c[4] : 2.0 * c[5]) / r2;
-  x.Direction = along == 1 ? frame.T1 : frame.T2;
-  // The zero set of e runs across its gradient.
-  x.Tangent = Combine(-gradV, frame.T1, gradU, frame.T2);
-  if (!Normalize(x.Tangent))
-  {
-    x.Tangent = along == 1 ? frame.T2 : frame.T1;
-  }
-  return x;
-}
-
-class PointFitter
+class DerivativeFitter
 {
 public:
-  PointFitter(const LineInput& input,
+  DerivativeFitter(const LineInput& input,
     const LineSettings& settings,
     const PointGrid& grid,
+    const std::vector<PointRole>& roles,
+    const SharedCurvatureFits& shared,
     PointDerivatives& out)
     : Input(input)
     , Settings(settings)
     , Grid(grid)
+    , Roles(roles)
+    , Shared(shared)
     , Out(out)
   {
   }
 
-  void Fit(std::int64_t i)
+  void Derive(std::int64_t i)
   {
-    const Vec3 x = Load(this->Input.Points, i);
-    double radius = this->Input.Radius ? this->Input.Radius[i] : 0.0;
-    if (!this->Input.Radius)
+    const PointRole& role = this->Roles[i];
+    if (!role.Fittable)
     {
-      radius = std::sqrt(
-        this->Grid.SquaredDistanceToKth(x.data(), this->Settings.RadiusNeighbors, this->Scratch));
-    }
-    this->Out.Radius[i] = radius;
-    radius *= this->Settings.FitRadius;
-    Frame frame;
-    if (!(radius > 0.0) || !std::isfinite(radius) || !MakeFrame(this->Input, i, frame) ||
-      !Usable(this->Input, i))
-    {
-      this->GraphOf(i, x, radius);
       return;
     }
-    this->Neighbors.clear();
-    const std::size_t found = this->Grid.GatherShell(x.data(), 0.0, radius, this->Shell);
-    for (std::size_t k = 0; k < found; ++k)
+    BlendedDerivatives blend[2];
+    if (!(role.Dense && this->BlendShared(i, blend)))
     {
-      const Vec3 d{ { this->Shell.Dx[k], this->Shell.Dy[k], this->Shell.Dz[k] } };
-      this->Neighbors.push_back(
-        { Dot(d, d), this->Shell.Ids[k], Dot(d, frame.T1) / radius, Dot(d, frame.T2) / radius });
-    }
-    // A wide neighborhood (the estimator's on a noisy cloud holds
-    // thousands) is thinned to every stride-th neighbor in the grid's fixed
-    // order: enough for ten coefficients, at a bounded cost per point.
-    const std::size_t budget = static_cast<std::size_t>(this->Settings.FitNeighbors);
-    const std::size_t stride = 1 + this->Neighbors.size() / budget;
-    PolynomialFit fit;
-    for (std::size_t k = 0; k < this->Neighbors.size(); k += stride)
-    {
-      const Neighbor& q = this->Neighbors[k];
-      if (Usable(this->Input, q.Id))
+      CurvatureFit fit;
+      if (!FitCurvatures(this->Input,
+            this->Settings,
+            this->Grid,
+            i,
+            role.FitRadius,
+            role.Frame,
+            this->Shell,
+            this->Scratch,
+            fit))
       {
-        fit.Add(q.U, q.V, this->Input.MaximumCurvature[q.Id], this->Input.MinimumCurvature[q.Id]);
+        return;
       }
+      this->AddFit(i, fit, 1.0, blend);
     }
-    this->KeepNearest(i);
-    this->Solve(i, fit, radius, frame);
+    this->Assemble(i, blend);
   }
 
 private:
-  /// The graph's edges of a point without a fit of its own.
-  void GraphOf(std::int64_t i, const Vec3& x, double radius)
+  /// The shared fits within reach of point i, weighted by a bump that
+  /// falls smoothly to zero at the reach (so the derivatives vary
+  /// continuously from point to point). False where none serves it.
+  bool BlendShared(std::int64_t i, BlendedDerivatives blend[2])
   {
-    this->Neighbors.clear();
-    if (radius > 0.0 && std::isfinite(radius))
+    const PointRole& role = this->Roles[i];
+    const LineVector x = Load(this->Input.Points, i);
+    this->Shared.Cells.AnchorsAround(x.data(), this->Around);
+    const double reach = this->Settings.SharedFitReach * role.FitRadius;
+    for (const std::int64_t position : this->Around.Anchors)
     {
-      this->Grid.ForEachWithinRadius(x.data(),
-        radius,
-        [&](const double* q, std::int64_t id)
-        {
-          const Vec3 d{ { q[0] - x[0], q[1] - x[1], q[2] - x[2] } };
-          this->Neighbors.push_back({ Dot(d, d), id, 0.0, 0.0 });
-        });
-    }
-    this->KeepNearest(i);
-  }
-
-  void KeepNearest(std::int64_t i)
-  {
-    const int width = this->Out.GraphWidth;
-    const std::size_t wanted = std::min<std::size_t>(this->Neighbors.size(), width + 1);
-    std::partial_sort(
-      this->Neighbors.begin(), this->Neighbors.begin() + wanted, this->Neighbors.end());
-    std::int64_t* row = &this->Out.Graph[i * width];
-    int filled = 0;
-    for (std::size_t k = 0; k < wanted && filled < width; ++k)
-    {
-      if (this->Neighbors[k].Id != i)
+      const CurvatureFit& fit = this->Shared.Fits[position];
+      const double ratio = fit.Radius / role.FitRadius;
+      const double squared = SquaredDistance(x, fit.Center) / (reach * reach);
+      if (squared < 1.0 && ratio > 2.0 / 3.0 && ratio < 1.5)
       {
-        row[filled++] = this->Neighbors[k].Id;
+        this->AddFit(i, fit, (1.0 - squared) * (1.0 - squared), blend);
       }
     }
-    std::fill(row + filled, row + width, -1);
+    return blend[0].Weight > 0.0;
   }
 
-  void Solve(std::int64_t i, const PolynomialFit& fit, double radius, const Frame& frame)
+  void AddFit(std::int64_t i, const CurvatureFit& fit, double weight, BlendedDerivatives blend[2])
   {
-    if (fit.Count < 2 * Terms)
+    const double given = this->Input.StandardError ? this->Input.StandardError[i] : 0.0;
+    const LineFrame& frame = this->Roles[i].Frame;
+    const double* x = this->Input.Points + 3 * i;
+    DirectionalDerivatives derivatives[2];
+    EvaluateAlongDirections(fit, x, frame, derivatives);
+    for (int which = 0; which < 2; ++which)
     {
-      return;
+      const double noise = std::max(fit.Residual[which], given * given);
+      blend[which].Add(derivatives[which], weight, noise);
     }
-    const Matrix normal = fit.Normal.selfadjointView<Eigen::Lower>();
-    const Eigen::LDLT<Matrix> ldlt(normal);
-    if (ldlt.info() != Eigen::Success || !(ldlt.rcond() > 1e-10))
-    {
-      return;
-    }
-    const Coefficients c = ldlt.solve(fit.Right);
-    const Matrix inverse = ldlt.solve(Matrix::Identity());
+  }
+
+  void Assemble(std::int64_t i, const BlendedDerivatives blend[2])
+  {
+    const LineFrame& frame = this->Roles[i].Frame;
     const double given = this->Input.StandardError ? this->Input.StandardError[i] : 0.0;
     const double kMax = this->Input.MaximumCurvature[i], kMin = this->Input.MinimumCurvature[i];
     const double spread = kMax - kMin;
@@ -252,18 +180,21 @@ private:
       spread > 1e-9 * (std::fabs(kMax) + std::fabs(kMin)) && spread > 0.0;
     for (int which = 0; which < 2; ++which)
     {
-      const double residual =
-        std::max(0.0, fit.Squares[which] - c.col(which).dot(fit.Right.col(which))) /
-        (fit.Count - Terms);
-      const double noise = std::max(residual, given * given);
-      const int along = which == 0 ? 1 : 2;
-      const int bendIndex = which == 0 ? 3 : 5;
-      Extremality x = Extremal(c.col(which), along, radius, frame);
-      const double bendError =
-        2.0 * std::sqrt(noise * inverse(bendIndex, bendIndex)) / (radius * radius);
-      x.SlopeError = std::sqrt(noise * inverse(along, along)) / radius;
+      const BlendedDerivatives& b = blend[which];
+      Extremality x;
+      x.Slope = b.Slope / b.Weight;
+      x.Bend = b.Bend / b.Weight;
+      x.SlopeError = std::sqrt(b.SlopeVariance / b.Weight);
+      const double bendError = std::sqrt(b.BendVariance / b.Weight);
       x.BendFloor = this->Settings.RelativeBend * spread * scale * scale;
       x.Significant = anisotropic && std::fabs(x.Bend) > this->Settings.Significance * bendError;
+      x.Direction = which == 0 ? frame.T1 : frame.T2;
+      // The zero set of the slope runs across its gradient.
+      x.Tangent = Cross(frame.Normal, b.Gradient);
+      if (!Normalize(x.Tangent))
+      {
+        x.Tangent = which == 0 ? frame.T2 : frame.T1;
+      }
       (which == 0 ? this->Out.Maximum : this->Out.Minimum)[i] = x;
     }
     this->Out.Fitted[i] = 1;
@@ -272,11 +203,176 @@ private:
   const LineInput& Input;
   const LineSettings& Settings;
   const PointGrid& Grid;
+  const std::vector<PointRole>& Roles;
+  const SharedCurvatureFits& Shared;
   PointDerivatives& Out;
-  std::vector<Neighbor> Neighbors;
+  AnchorCells::Around Around;
   ShellPoints Shell;
+  CurvatureFitScratch Scratch;
+};
+
+/// Each point's graph row (its GraphWidth nearest other points, nearest
+/// first, ties by index) and its role; the radius is the input's, else
+/// the distance to the RadiusNeighbors-th nearest point.
+class RoleFinder
+{
+public:
+  RoleFinder(const LineInput& input,
+    const LineSettings& settings,
+    const PointGrid& grid,
+    PointDerivatives& out,
+    std::vector<PointRole>& roles)
+    : Input(input)
+    , Settings(settings)
+    , Grid(grid)
+    , Out(out)
+    , Roles(roles)
+  {
+  }
+
+  void Find(std::int64_t i)
+  {
+    const double* x = this->Input.Points + 3 * i;
+    const double radius = this->Input.Radius ? this->Input.Radius[i]
+                                             : std::sqrt(this->Grid.SquaredDistanceToKth(
+                                                 x, this->Settings.RadiusNeighbors, this->Scratch));
+    this->Out.Radius[i] = radius;
+    const double graphReach = this->FillGraphRow(i);
+    PointRole& role = this->Roles[i];
+    role.FitRadius = radius * this->Settings.FitRadius;
+    role.Fittable = role.FitRadius > 0.0 && std::isfinite(role.FitRadius) &&
+      UsableForLines(this->Input, i) && MakeLineFrame(this->Input, i, role.Frame);
+    // About width points lie within graphReach, so about width (R / reach)^2
+    // within the fit radius R of a surface.
+    const double ratio = role.FitRadius / graphReach;
+    role.Dense =
+      graphReach > 0.0 && this->Out.GraphWidth * ratio * ratio >= this->Settings.SharedFitPoints;
+  }
+
+private:
+  /// Returns the distance to the farthest point of the row (0 when empty).
+  double FillGraphRow(std::int64_t i)
+  {
+    const int width = this->Out.GraphWidth;
+    std::int64_t* row = &this->Out.Graph[i * width];
+    std::fill(row, row + width, -1);
+    this->Nearest.clear();
+    if (this->Grid.GatherNearest(this->Input.Points + 3 * i, width + 1, this->Shell) > 0.0)
+    {
+      for (std::size_t k = 0; k < this->Shell.Count; ++k)
+      {
+        const double dx = this->Shell.Dx[k], dy = this->Shell.Dy[k], dz = this->Shell.Dz[k];
+        if (this->Shell.Ids[k] != i)
+        {
+          this->Nearest.emplace_back(dx * dx + dy * dy + dz * dz, this->Shell.Ids[k]);
+        }
+      }
+    }
+    const std::size_t kept = std::min<std::size_t>(this->Nearest.size(), width);
+    std::partial_sort(this->Nearest.begin(), this->Nearest.begin() + kept, this->Nearest.end());
+    for (std::size_t k = 0; k < kept; ++k)
+    {
+      row[k] = this->Nearest[k].second;
+    }
+    return kept > 0 ? std::sqrt(this->Nearest[kept - 1].first) : 0.0;
+  }
+
+  const LineInput& Input;
+  const LineSettings& Settings;
+  const PointGrid& Grid;
+  PointDerivatives& Out;
+  std::vector<PointRole>& Roles;
+  ShellPoints Shell;
+  std::vector<std::pair<double, std::int64_t>> Nearest;
   std::vector<double> Scratch;
 };
+
+double TypicalFitRadius(const LineInput& input,
+  const LineSettings& settings,
+  const std::vector<PointRole>& roles)
+{
+  if (input.TypicalRadius > 0.0 && std::isfinite(input.TypicalRadius))
+  {
+    return input.TypicalRadius * settings.FitRadius;
+  }
+  std::vector<double> radii;
+  for (const PointRole& role : roles)
+  {
+    if (role.Fittable)
+    {
+      radii.push_back(role.FitRadius);
+    }
+  }
+  if (radii.empty())
+  {
+    return 0.0;
+  }
+  std::nth_element(radii.begin(), radii.begin() + radii.size() / 2, radii.end());
+  return radii[radii.size() / 2];
+}
+
+/// Anchors among the dense points (one per cell of a lattice of
+/// AnchorSpacing typical radii) and their fits; the anchors whose fit
+/// failed are dropped.
+void FitAnchors(const LineInput& input,
+  const LineSettings& settings,
+  const PointGrid& grid,
+  const std::vector<PointRole>& roles,
+  WorkRunner* runner,
+  SharedCurvatureFits& shared)
+{
+  const double cell = settings.AnchorSpacing * TypicalFitRadius(input, settings, roles);
+  if (!(cell > 0.0) || !std::isfinite(cell))
+  {
+    return;
+  }
+  const double origin[3] = { 0.0, 0.0, 0.0 };
+  shared.Cells.Build(
+    input.Points,
+    input.Normals,
+    input.Count,
+    [&](std::int64_t j) { return grid.GetSortedId(j); },
+    origin,
+    cell,
+    [&](std::int64_t point) { return roles[point].Fittable && roles[point].Dense; },
+    []() { return true; });
+  std::vector<unsigned char> marks(static_cast<std::size_t>(input.Count), 0);
+  shared.Cells.MarkEveryAnchor(marks);
+  std::vector<std::int64_t> anchors;
+  for (std::int64_t j = 0; j < input.Count; ++j)
+  {
+    if (marks[grid.GetSortedId(j)])
+    {
+      anchors.push_back(grid.GetSortedId(j));
+    }
+  }
+  std::vector<CurvatureFit> fits(anchors.size());
+  std::vector<unsigned char> fitted(anchors.size(), 0);
+  RunRanges(runner,
+    static_cast<std::int64_t>(anchors.size()),
+    64,
+    [&](std::int64_t begin, std::int64_t end)
+    {
+      ShellPoints shell;
+      CurvatureFitScratch scratch;
+      for (std::int64_t a = begin; a < end; ++a)
+      {
+        const PointRole& role = roles[anchors[a]];
+        fitted[a] = FitCurvatures(
+          input, settings, grid, anchors[a], role.FitRadius, role.Frame, shell, scratch, fits[a]);
+      }
+    });
+  std::vector<std::int64_t> kept;
+  for (std::size_t a = 0; a < anchors.size(); ++a)
+  {
+    if (fitted[a])
+    {
+      kept.push_back(anchors[a]);
+      shared.Fits.push_back(std::move(fits[a]));
+    }
+  }
+  shared.Cells.NumberAnchors(kept);
+}
 
 } // namespace
 
@@ -293,17 +389,31 @@ PointDerivatives FitDerivatives(const LineInput& input,
   out.Radius.assign(n, 0.0);
   out.GraphWidth = std::max(1, settings.GraphNeighbors);
   out.Graph.assign(n * out.GraphWidth, -1);
+  std::vector<PointRole> roles(n);
+  // In the grid's order: consecutive points share their neighbors, whose
+  // data then stay in cache.
   RunRanges(runner,
     input.Count,
-    2048,
+    Grain,
     [&](std::int64_t begin, std::int64_t end)
     {
-      PointFitter fitter(input, settings, grid, out);
-      // In the grid's order: consecutive points share their neighbors,
-      // whose curvatures then stay in cache.
+      RoleFinder finder(input, settings, grid, out, roles);
       for (std::int64_t j = begin; j < end; ++j)
       {
-        fitter.Fit(grid.GetSortedId(j));
+        finder.Find(grid.GetSortedId(j));
+      }
+    });
+  SharedCurvatureFits shared;
+  FitAnchors(input, settings, grid, roles, runner, shared);
+  RunRanges(runner,
+    input.Count,
+    Grain,
+    [&](std::int64_t begin, std::int64_t end)
+    {
+      DerivativeFitter fitter(input, settings, grid, roles, shared, out);
+      for (std::int64_t j = begin; j < end; ++j)
+      {
+        fitter.Derive(grid.GetSortedId(j));
       }
     });
   return out;

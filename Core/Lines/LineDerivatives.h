@@ -1,8 +1,14 @@
 /**
  * @file LineDerivatives.h
  * @brief Per point: the derivatives of each principal curvature along its
- * own direction, from a cubic least-squares fit of the neighbors'
- * curvatures over the point's tangent plane. No VTK.
+ * own direction, from cubic least-squares fits of the neighbors'
+ * curvatures (CurvatureFit.h). No VTK.
+ *
+ * Where neighborhoods hold hundreds of points (every noisy cloud), nearby
+ * points fit nearly the same samples: only anchor points (AnchorCells.h)
+ * fit, and each point blends the fits of the anchors near it, evaluated at
+ * its own position along its own directions. Elsewhere each point fits its
+ * own neighborhood.
  */
 #ifndef LineDerivatives_h
 #define LineDerivatives_h

@@ -53,6 +53,10 @@ struct LineInput
   const double* Radius = nullptr;
   /// Optional: nonzero where the curvatures are valid.
   const unsigned char* Valid = nullptr;
+  /// Optional: the typical neighborhood radius, which sets the spacing of
+  /// the shared fits' anchors; 0: the median of the points' radii. A
+  /// distributed caller passes the same value on every process.
+  double TypicalRadius = 0.0;
 };
 
 struct LineSettings
@@ -78,6 +82,15 @@ struct LineSettings
   /// At most about this many neighbors per fit: wider neighborhoods are
   /// thinned evenly.
   int FitNeighbors = 500;
+  /// Where a fit's neighborhood holds at least about this many points, one
+  /// fit serves the points near its center (SharedFitReach): the
+  /// neighborhoods of nearby points are then nearly the same set.
+  int SharedFitPoints = 100;
+  /// How far a shared fit serves, in the served point's fit radii.
+  double SharedFitReach = 0.5;
+  /// The side of the cells of the shared fits' anchors, in typical fit
+  /// radii.
+  double AnchorSpacing = 0.4;
   /// Neighbors of each point in the graph whose edges the lines cross.
   int GraphNeighbors = 8;
   /// Nearest neighbors whose distance is the radius where none is given.
