@@ -332,6 +332,94 @@ void TestNoLines(Checks& checks)
   checks.Below("noisy plane: line length (a tenth of its side)", flat, 0.2);
 }
 
+constexpr double BoxRounding = 0.2;
+const Vec BoxHalf{ { 1.2, 0.9, 0.6 } }; // the flat box the rounded one wraps
+
+/// The length of the lines whose points lie over the interior of a flat
+/// face of the rounded box: farther than `margin` from where its rounding
+/// begins.
+double LengthOverFaces(const LineResult& result, double margin)
+{
+  double length = 0.0;
+  for (const CurvatureLine& line : result.Lines)
+  {
+    const std::size_t n = line.Points.size() / 3;
+    for (std::size_t i = 1; i < n; ++i)
+    {
+      const double* a = &line.Points[3 * (i - 1)];
+      const double* b = &line.Points[3 * i];
+      bool overFace = false;
+      for (int axis = 0; axis < 3 && !overFace; ++axis)
+      {
+        overFace = std::fabs(a[axis]) > BoxHalf[axis] && std::fabs(b[axis]) > BoxHalf[axis];
+        for (int k = 1; k < 3; ++k)
+        {
+          const int other = (axis + k) % 3;
+          overFace = overFace && std::fabs(a[other]) < BoxHalf[other] - margin &&
+            std::fabs(b[other]) < BoxHalf[other] - margin;
+        }
+      }
+      if (overFace)
+      {
+        length += std::sqrt((b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]) +
+          (b[2] - a[2]) * (b[2] - a[2]));
+      }
+    }
+  }
+  return length;
+}
+
+/// A rounded box with noise: the crests run along its rounded edges, and no
+/// line may cross the interiors of its flat faces, where the curvatures
+/// are zero and their derivatives noise. Without the significance tests
+/// (Significance, RelativeBend and MinimumLength 0) the same clouds do get
+/// lines there: the check can see them.
+void TestRoundedBox(Checks& checks)
+{
+  const int n = 60000;
+  const double area =
+    8.0 * (BoxHalf[0] * BoxHalf[1] + BoxHalf[1] * BoxHalf[2] + BoxHalf[2] * BoxHalf[0]) +
+    2.0 * testing::Pi * BoxRounding * 2.0 * (BoxHalf[0] + BoxHalf[1] + BoxHalf[2]) +
+    4.0 * testing::Pi * BoxRounding * BoxRounding;
+  const double spacing = std::sqrt(area / n);
+  for (const double noise : { 0.1, 0.5 })
+  {
+    auto samples = testing::SampleRoundedBox(BoxHalf, BoxRounding, n, 81);
+    testing::AddPositionNoise(samples, noise * spacing, 82);
+    const LineArrays arrays = EstimatedArrays(samples);
+    LineSettings settings;
+    ThreadRunner threads(2);
+    const LineResult result = ExtractCurvatureLines(arrays.Input(), settings, &threads);
+    const double margin = 1.5 * result.MedianRadius;
+    settings.Kinds = AllLineKinds;
+    const LineResult allKinds = ExtractCurvatureLines(arrays.Input(), settings, &threads);
+    settings.Significance = 0.0;
+    settings.RelativeBend = 0.0;
+    settings.MinimumLength = 0.0;
+    const LineResult unguarded = ExtractCurvatureLines(arrays.Input(), settings, &threads);
+    const double overFaces = LengthOverFaces(result, margin);
+    const double allOverFaces = LengthOverFaces(allKinds, margin);
+    const double unguardedOverFaces = LengthOverFaces(unguarded, margin);
+    std::printf("rounded box, %.1f spacings of noise: %zu lines, length %.3f (the edges' %.3f); "
+                "over the faces' interiors %.4f, of all kinds %.4f (without the significance "
+                "tests %.3f)\n",
+      noise,
+      result.Lines.size(),
+      TotalLength(result),
+      4.0 * 2.0 * (BoxHalf[0] + BoxHalf[1] + BoxHalf[2]),
+      overFaces,
+      allOverFaces,
+      unguardedOverFaces);
+    checks.Below(
+      "rounded box: ridge and valley length over the faces' interiors", overFaces, 1e-12);
+    checks.Below(
+      "rounded box: line length of all kinds over the faces' interiors", allOverFaces, 1e-12);
+    checks.True("rounded box: the check sees lines over the faces when unguarded",
+      unguardedOverFaces > 10.0 * spacing);
+    checks.True("rounded box: crests along the edges", TotalLength(result) > 0.0);
+  }
+}
+
 /// Bad input is a clear error; threads do not change the lines.
 void TestInputAndThreads(Checks& checks)
 {
@@ -377,6 +465,7 @@ int main(int argc, char* argv[])
       { "NoisyEllipsoid", TestNoisyEllipsoid },
       { "Bump", TestBump },
       { "NoLines", TestNoLines },
+      { "RoundedBox", TestRoundedBox },
       { "InputAndThreads", TestInputAndThreads },
     });
 }

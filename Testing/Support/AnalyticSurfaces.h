@@ -341,6 +341,90 @@ inline Surface Wave(double half, double amp, double w)
     });
 }
 
+/// A box with rounded edges: the points at distance `radius` from the box
+/// [-half, half] (flat faces, quarter cylinders along the edges, sphere
+/// octants at the corners), sampled uniformly by area; outward normals.
+/// On the faces both curvatures are 0, across an edge 1/radius (along it
+/// 0), at a corner 1/radius.
+inline std::vector<SurfaceSample> SampleRoundedBox(const Vec& half,
+  double radius,
+  int count,
+  std::uint64_t seed)
+{
+  Random random(seed);
+  double faces[3], edges[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    const double a = half[(k + 1) % 3], b = half[(k + 2) % 3];
+    faces[k] = 2.0 * 4.0 * a * b;                       // the two faces across axis k
+    edges[k] = 4.0 * 0.5 * Pi * radius * 2.0 * half[k]; // the four edges along axis k
+  }
+  const double corners = 4.0 * Pi * radius * radius;
+  const double total = faces[0] + faces[1] + faces[2] + edges[0] + edges[1] + edges[2] + corners;
+  std::vector<SurfaceSample> samples;
+  samples.reserve(count);
+  auto sign = [&random]() { return random.Uniform() < 0.5 ? -1.0 : 1.0; };
+  while (static_cast<int>(samples.size()) < count)
+  {
+    double pick = random.Uniform() * total;
+    SurfaceSample s{};
+    s.BoundaryDistance = Infinity;
+    int axis = 0;
+    while (axis < 3 && pick >= faces[axis])
+    {
+      pick -= faces[axis++];
+    }
+    Vec offset{ { 0.0, 0.0, 0.0 } }; // the unit normal, away from the box
+    Vec core{ { 0.0, 0.0, 0.0 } };   // the nearest point of the box
+    if (axis < 3)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        core[k] = (2.0 * random.Uniform() - 1.0) * half[k];
+      }
+      offset[axis] = sign();
+      core[axis] = offset[axis] * half[axis];
+      s.MaximumDirection[(axis + 1) % 3] = 1.0;
+    }
+    else
+    {
+      axis = 0;
+      while (axis < 3 && pick >= edges[axis])
+      {
+        pick -= edges[axis++];
+      }
+      if (axis < 3)
+      {
+        const int a = (axis + 1) % 3, b = (axis + 2) % 3;
+        const double angle = 0.5 * Pi * random.Uniform();
+        const double sa = sign(), sb = sign();
+        offset[a] = sa * std::cos(angle);
+        offset[b] = sb * std::sin(angle);
+        core[axis] = (2.0 * random.Uniform() - 1.0) * half[axis];
+        core[a] = sa * half[a];
+        core[b] = sb * half[b];
+        s.MaximumCurvature = 1.0 / radius;
+        s.MaximumDirection = Unit(Cross(
+          offset, Vec{ { axis == 0 ? 1.0 : 0.0, axis == 1 ? 1.0 : 0.0, axis == 2 ? 1.0 : 0.0 } }));
+      }
+      else
+      {
+        offset = Unit(Vec{ { random.Normal(), random.Normal(), random.Normal() } });
+        for (int k = 0; k < 3; ++k)
+        {
+          core[k] = (offset[k] < 0.0 ? -1.0 : 1.0) * half[k];
+        }
+        s.MaximumCurvature = s.MinimumCurvature = 1.0 / radius;
+        s.MaximumDirection = Unit(Cross(offset, Vec{ { 0.0, 0.0, 1.0 } }));
+      }
+    }
+    s.Point = Add(core, Scale(radius, offset));
+    s.Normal = offset;
+    samples.push_back(s);
+  }
+  return samples;
+}
+
 /// Adds isotropic Gaussian noise of standard deviation sigma to the points
 /// (normals and exact values stay those of the noise-free surface).
 inline void AddPositionNoise(std::vector<SurfaceSample>& samples, double sigma, std::uint64_t seed)
