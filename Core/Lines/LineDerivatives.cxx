@@ -156,7 +156,16 @@ private:
 
   void AddFit(std::int64_t i, const CurvatureFit& fit, double weight, BlendedDerivatives blend[2])
   {
-    const double given = this->Input.StandardError ? this->Input.StandardError[i] : 0.0;
+    // The noise of the curvatures a fit sees. Its residuals measure it
+    // where they are many (a dense neighborhood). The curvatures' standard
+    // error bounds each one's whole error, most of it shared by
+    // neighbors (the bias of a neighborhood, which moves with it and
+    // leaves the derivatives): taken for independent noise it hides every
+    // gentle extremum of a noisy cloud. It remains the floor where the
+    // residuals of a few dozen samples say little, on clean clouds, whose
+    // curvatures' small errors vary at the scale of the neighborhood.
+    const double given =
+      this->Roles[i].Dense || !this->Input.StandardError ? 0.0 : this->Input.StandardError[i];
     const LineFrame& frame = this->Roles[i].Frame;
     const double* x = this->Input.Points + 3 * i;
     DirectionalDerivatives derivatives[2];
