@@ -20,7 +20,7 @@ LINE_EXTENSIONS = (".vtp", ".ply")
 # The --line-kinds names and the filter's Kinds.
 LINE_KINDS = {"ridges-and-valleys": "Ridges and Valleys", "ridges": "Ridges", "valleys": "Valleys",
               "all": "All Extremal Lines"}
-# Line_Kind's values, as docs/curvature-lines.md and the GUI's legend name them.
+# Line_Kind's values, as the GUI's legend names them (pcurv::LineKindName).
 KIND_NAMES = ("ridge", "valley", "max of k_max", "min of k_max", "max of k_min", "min of k_min")
 
 
