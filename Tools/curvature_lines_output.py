@@ -6,8 +6,8 @@ A .ply holds a vertex element (x y z as double, Line_Curvature) and an
 edge element (vertex1 vertex2, the two vertices of one segment of a
 polyline, as int, then the segment's line's Line_Kind as uchar,
 Line_Strength and Line_Length as double), binary little endian: MeshLab
-and CloudCompare read the edges as polylines or segments with those
-properties. An open polyline of n vertices gives n - 1 edges, a closed
+and CloudCompare read the edges as segments with those properties, the
+plugin's PLY Point Cloud Reader as line cells with them as cell data. An open polyline of n vertices gives n - 1 edges, a closed
 one n.
 """
 

@@ -70,8 +70,8 @@ by default OUTPUT's stem + _lines.vtp: .vtp (polylines with cell data
 Line_Kind, Line_Strength, Line_Length and point data Line_Curvature, for
 ParaView) or .ply (binary: a vertex element x y z Line_Curvature and an
 edge element vertex1 vertex2 Line_Kind Line_Strength Line_Length, one edge
-per segment, for MeshLab and CloudCompare; ParaView's PLY reader reads its
-vertices only). Give PATH as --lines=PATH or after INPUT and OUTPUT. The
+per segment, for MeshLab and CloudCompare, and which the plugin's PLY
+reader reads back as lines). Give PATH as --lines=PATH or after INPUT and OUTPUT. The
 summary then also counts the lines by kind, with their length.
 
 The plugin is loaded from --plugin, else $PRINCIPAL_CURVATURES_PLUGIN, else

@@ -12,7 +12,8 @@ along x = 0 and whose valleys along x = +-1.77:
 * --lines=X.ply: a vertex element with Line_Curvature and an edge element
   with Line_Kind, Line_Strength and Line_Length read back equal to the
   .vtp's, as many edges as points minus open polylines; VTK's PLY reader
-  reads its vertices;
+  reads its vertices, the plugin's PLY reader its edges as lines with
+  their arrays;
 * bad paths (another extension, a missing folder, the output itself): exit
   2 with a message naming the problem, before any estimate.
 
@@ -25,6 +26,7 @@ import subprocess
 import sys
 
 import numpy
+from paraview import servermanager, simple
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkIOPLY import vtkPLYReader
 from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
@@ -124,6 +126,12 @@ def check_ply(path, lines):
     reader.SetFileName(path)
     reader.Update()
     check(reader.GetOutput().GetNumberOfPoints() == len(vertices), "ply: VTK's PLY reader reads the vertices")
+    plugin_reader = simple.PLYPointCloudReader(FileName=path)
+    read = servermanager.Fetch(plugin_reader)
+    kind = read.GetCellData().GetArray("Line_Kind")
+    check(read.GetNumberOfLines() == len(edges) and kind is not None
+          and numpy.array_equal(vtk_to_numpy(kind), edges["Line_Kind"]),
+          "ply: the plugin's PLY reader reads the edges as lines with Line_Kind")
 
 
 def check_bad_paths(tool, plugin, cloud, output):
@@ -137,6 +145,7 @@ def check_bad_paths(tool, plugin, cloud, output):
 
 
 def main(tool, plugin, folder):
+    simple.LoadPlugin(plugin, remote=False)
     os.makedirs(folder, exist_ok=True)
     cloud = os.path.join(folder, "lines_bump.xyz")
     write_bump(cloud)
