@@ -87,8 +87,10 @@ import time
 
 from paraview import servermanager, simple
 
-from curvature_lines_output import (LINE_KINDS, default_lines_path, lines_filter, lines_path_problem,
-                                    summarize_lines, write_lines)
+# Its sibling module, also when this file is loaded by path (tests do).
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from curvature_lines_output import (LINE_KINDS, default_lines_path, lines_filter,  # noqa: E402
+                                    lines_path_problem, summarize_lines, write_lines)
 
 REPOSITORY = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 DEFAULT_PLUGIN = os.path.join(
