@@ -302,5 +302,20 @@ std::string Body::ReadVertices(const Element& vertex,
   return std::string();
 }
 
+//------------------------------------------------------------------------------
+std::string Body::ReadRows(const Element& element, std::vector<double>& rows)
+{
+  const std::size_t width = element.Properties.size();
+  rows.assign(static_cast<std::size_t>(element.Count) * width, 0.0);
+  for (std::uint64_t record = 0; record < element.Count; ++record)
+  {
+    if (!this->Record(element, rows.data() + record * width))
+    {
+      return this->Failure(element, record);
+    }
+  }
+  return std::string();
+}
+
 } // namespace ply
 } // namespace pcurv

@@ -30,6 +30,10 @@ public:
     std::uint64_t begin,
     std::uint64_t end);
 
+  /// Reads all records of element into rows, one value per property (a
+  /// list's length for a list) and record after record.
+  std::string ReadRows(const Element& element, std::vector<double>& rows);
+
 private:
   /// The next value of type into value; false at the end of the file or
   /// (ascii) on a word that is not a number of that type, with Problem set.

@@ -150,6 +150,12 @@ int FindProperty(const Element& element, const char* name)
   return -1;
 }
 
+/// A property that can hold a vertex index: an integer type.
+bool IsIntegerIndex(const Property& property)
+{
+  return property.ValueType != Type::Float32 && property.ValueType != Type::Float64;
+}
+
 /// Makes properties `names` the components of a new column, when all are
 /// there (and of the type `only` if given). Returns the column or -1.
 int Group(const Element& vertex,
@@ -467,19 +473,39 @@ std::string File::ReadHeader(std::uint64_t fileSize)
   if (error.empty())
   {
     this->TheLayout = PlanVertexColumns(this->Vertices(), this->TheHeader.Comments);
+    if (!FindEdgeElement(this->TheHeader, this->Edge, this->EdgeFirst, this->EdgeSecond))
+    {
+      this->EdgeFirst = this->EdgeSecond = -1;
+    }
   }
   return error;
 }
 
 //------------------------------------------------------------------------------
-std::string File::Read(std::uint64_t begin, std::uint64_t end)
+bool FindEdgeElement(const Header& header, std::size_t& edge, int& first, int& second)
+{
+  for (edge = 0; edge < header.Elements.size(); ++edge)
+  {
+    const Element& element = header.Elements[edge];
+    first = FindProperty(element, "vertex1");
+    second = FindProperty(element, "vertex2");
+    if (element.Name == "edge" && first >= 0 && second >= 0 &&
+      IsIntegerIndex(element.Properties[first]) && IsIntegerIndex(element.Properties[second]))
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+//------------------------------------------------------------------------------
+std::string File::SkipTo(std::size_t element, Body& body)
 {
   if (std::fseek(this->Stream(), static_cast<long>(this->TheHeader.BodyOffset), SEEK_SET) != 0)
   {
     return std::string("cannot seek to the data: ") + std::strerror(errno);
   }
-  Body body(this->Stream(), this->TheHeader.BodyFormat);
-  for (std::size_t e = 0; e < this->Vertex; ++e)
+  for (std::size_t e = 0; e < element; ++e)
   {
     std::string error = body.SkipElement(this->TheHeader.Elements[e]);
     if (!error.empty())
@@ -487,7 +513,54 @@ std::string File::Read(std::uint64_t begin, std::uint64_t end)
       return error;
     }
   }
-  return body.ReadVertices(this->Vertices(), this->TheLayout, begin, end);
+  return std::string();
+}
+
+//------------------------------------------------------------------------------
+std::string File::Read(std::uint64_t begin, std::uint64_t end)
+{
+  Body body(this->Stream(), this->TheHeader.BodyFormat);
+  const std::string error = this->SkipTo(this->Vertex, body);
+  return error.empty() ? body.ReadVertices(this->Vertices(), this->TheLayout, begin, end) : error;
+}
+
+//------------------------------------------------------------------------------
+const Element* File::Edges() const
+{
+  return this->EdgeFirst >= 0 ? &this->TheHeader.Elements[this->Edge] : nullptr;
+}
+
+//------------------------------------------------------------------------------
+std::string File::ReadEdges(std::vector<double>& rows)
+{
+  const Element* edges = this->Edges();
+  if (!edges)
+  {
+    rows.clear();
+    return std::string();
+  }
+  Body body(this->Stream(), this->TheHeader.BodyFormat);
+  std::string error = this->SkipTo(this->Edge, body);
+  if (error.empty())
+  {
+    error = body.ReadRows(*edges, rows);
+  }
+  const std::size_t width = edges->Properties.size();
+  const auto vertices = static_cast<double>(this->Vertices().Count);
+  for (std::size_t row = 0; error.empty() && row < rows.size() / width; ++row)
+  {
+    for (int end : { this->EdgeFirst, this->EdgeSecond })
+    {
+      const double index = rows[row * width + end];
+      if (error.empty() && !(index >= 0 && index < vertices))
+      {
+        error = "edge " + std::to_string(row) + ": vertex " +
+          std::to_string(static_cast<long long>(index)) + " is not one of the " +
+          std::to_string(this->Vertices().Count) + " vertices";
+      }
+    }
+  }
+  return error;
 }
 
 } // namespace ply

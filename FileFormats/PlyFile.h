@@ -2,7 +2,9 @@
  * PLY files (ascii, binary_little_endian, binary_big_endian) read as point
  * clouds: the header checked, then the vertex element's properties read
  * into the caller's arrays, in their own types (x y z stay double when the
- * file has double). Other elements are skipped. No VTK here;
+ * file has double); an edge element (vertex1 vertex2: segments between two
+ * vertices, as MeshLab writes them) read as rows of values. Other elements
+ * are skipped. No VTK here;
  * vtkPLYPointCloudReader is the VTK glue.
  */
 #ifndef pcurv_PlyFile_h
@@ -78,6 +80,11 @@ std::string ParseHeader(const char* data, std::size_t size, Header& header);
 /// scalar x, y and z properties (naming the missing ones).
 std::string FindVertexElement(const Header& header, std::size_t& vertex);
 
+/// Index of an edge element whose scalar integer properties vertex1 and
+/// vertex2 (their indices in it: first, second) name a segment's two
+/// vertices; false if the header has none.
+bool FindEdgeElement(const Header& header, std::size_t& edge, int& first, int& second);
+
 /// An output array: its values are written through Data (Count x Components).
 struct Column
 {
@@ -109,6 +116,8 @@ struct VertexLayout
 VertexLayout PlanVertexColumns(const Element& vertex,
   const std::vector<std::string>& comments = std::vector<std::string>());
 
+class Body;
+
 /// An open PLY file: Open (InputFile's) reads and checks the header and
 /// the vertex element, Read the vertices.
 class File final : public InputFile
@@ -121,11 +130,22 @@ public:
   /// first; row 0 is vertex begin); an empty string, or what went wrong.
   std::string Read(std::uint64_t begin, std::uint64_t end);
 
+  /// The edge element (FindEdgeElement), or null without one.
+  const Element* Edges() const;
+  /// Reads the edge element: each edge's property values in their order
+  /// (a list's length for a list) into rows, one row after the other; an
+  /// empty string, or what went wrong (a vertex index out of range too).
+  std::string ReadEdges(std::vector<double>& rows);
+
 private:
   std::string ReadHeader(std::uint64_t fileSize) override;
+  std::string SkipTo(std::size_t element, Body& body);
 
   Header TheHeader;
   std::size_t Vertex = 0;
+  std::size_t Edge = 0;
+  int EdgeFirst = -1;
+  int EdgeSecond = -1;
   VertexLayout TheLayout;
 };
 

@@ -3,6 +3,8 @@
 #include "FileFormats/PlyFile.h"
 #include "PointCloudReaderSupport.h"
 
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkErrorCode.h"
@@ -13,8 +15,10 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
 #include "vtkStringArray.h"
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -99,8 +103,57 @@ void AddFieldComments(const pcurv::ply::Header& header, vtkPolyData* output)
   }
 }
 
-/// The piece of the file's vertices that outInfo asks for, in output; an
-/// empty string, or what is wrong.
+/// The file's edges between two vertices of the piece [begin, end) as line
+/// cells, their other scalar properties as cell data in their own types.
+std::string AddEdgeLines(pcurv::ply::File& file,
+  std::uint64_t begin,
+  std::uint64_t end,
+  vtkPolyData* output)
+{
+  std::vector<double> rows;
+  std::string error = file.ReadEdges(rows);
+  std::size_t edge = 0;
+  int first = -1, second = -1;
+  pcurv::ply::FindEdgeElement(file.GetHeader(), edge, first, second);
+  const std::vector<pcurv::ply::Property>& properties = file.Edges()->Properties;
+  std::vector<vtkSmartPointer<vtkDataArray>> arrays(properties.size());
+  for (std::size_t p = 0; p < properties.size(); ++p)
+  {
+    if (static_cast<int>(p) != first && static_cast<int>(p) != second && !properties[p].IsList)
+    {
+      arrays[p] = pcurv::readers::NewArray(
+        VtkTypeOf(properties[p].ValueType), properties[p].Name.c_str(), 1, 0);
+      output->GetCellData()->AddArray(arrays[p]);
+    }
+  }
+  vtkNew<vtkCellArray> lines;
+  for (std::size_t row = 0; error.empty() && row < rows.size() / properties.size(); ++row)
+  {
+    const double* values = rows.data() + row * properties.size();
+    const auto a = static_cast<std::uint64_t>(values[first]);
+    const auto b = static_cast<std::uint64_t>(values[second]);
+    if (a < begin || a >= end || b < begin || b >= end)
+    {
+      continue; // an edge across pieces belongs to neither
+    }
+    const vtkIdType ends[2] = { static_cast<vtkIdType>(a - begin),
+      static_cast<vtkIdType>(b - begin) };
+    lines->InsertNextCell(2, ends);
+    for (std::size_t p = 0; p < arrays.size(); ++p)
+    {
+      if (arrays[p])
+      {
+        arrays[p]->InsertNextTuple1(values[p]);
+      }
+    }
+  }
+  output->SetLines(lines);
+  return error;
+}
+
+/// The piece of the file's vertices that outInfo asks for, in output (as
+/// vertex cells, or the file's edges as line cells); an empty string, or
+/// what is wrong.
 std::string ReadVertices(const char* fileName, vtkPolyData* output, vtkInformation* outInfo)
 {
   pcurv::ply::File file;
@@ -113,7 +166,14 @@ std::string ReadVertices(const char* fileName, vtkPolyData* output, vtkInformati
   const vtkIdType count = static_cast<vtkIdType>(piece.End - piece.Begin);
   MakeArrays(output, file.Layout(), count);
   error = file.Read(piece.Begin, piece.End);
-  pcurv::readers::AddVertexCells(output, count);
+  if (error.empty() && file.Edges())
+  {
+    error = AddEdgeLines(file, piece.Begin, piece.End, output);
+  }
+  else
+  {
+    pcurv::readers::AddVertexCells(output, count);
+  }
   AddFieldComments(file.GetHeader(), output);
   return error;
 }

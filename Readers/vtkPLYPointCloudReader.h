@@ -22,14 +22,18 @@
  *   properties' type, and Normals and RGB under the name a comment gives;
  * - the header's "field" comments as field data (numbers as a double
  *   array, other text as a string array: `Curvature_Unit`).
- * Other elements (faces, edges, ...) are skipped: the output is the cloud,
- * with one vertex cell per point. Piece requests are honored.
+ * An edge element with integer vertex1 and vertex2 (segments, as MeshLab
+ * and the command-line tool's curvature lines have them) gives one line
+ * cell per edge instead of the vertex cells, its other scalar properties
+ * cell data of their names and types (in a piece, the edges between two of
+ * its vertices). Other elements (faces, ...) are skipped: the output is the
+ * cloud, with one vertex cell per point. Piece requests are honored.
  *
  * Errors, one vtkErrorMacro naming the file and then what is wrong: not a
  * PLY file, a header line that is wrong (with its number; an unknown format
  * or property type, no end_header), no vertex element, a vertex element
  * without x, y or z (naming the missing ones and the properties there
- * are), a truncated body or a value that is not a number of its type (the
+ * are), an edge naming a vertex the file does not have, a truncated body or a value that is not a number of its type (the
  * element and record). The output is then empty and GetErrorCode() is set.
  *
  * The parsing is pcurv::ply (FileFormats/PlyFile.h), free of VTK.

@@ -9,6 +9,7 @@ Run with ParaView's Python:
         [--normals NAME | --estimate-normals] [--orientation outward|viewpoint|axis]
         [--viewpoint X Y Z] [--axis X Y Z] [--threads T] [--plugin PATH]
         [--single-precision] [--no-diagnostics] [--progress | --no-progress]
+        [--lines [PATH]] [--line-kinds ridges-and-valleys|ridges|valleys|all]
 
 Without normals in the input (an x y z scan), the normals are estimated and
 oriented (outward by default) and written to OUTPUT as Normals; colors are
@@ -63,6 +64,16 @@ estimated; with either, a .vtp is also compressed (zlib), and with
 to a millionth of the cloud's size. Together they make a 3M-point result
 less than 40 % of the default size.
 
+--lines also writes the curvature lines (docs/curvature-lines.md: ridges
+and valleys by default, every extremal line with --line-kinds all) to PATH,
+by default OUTPUT's stem + _lines.vtp: .vtp (polylines with cell data
+Line_Kind, Line_Strength, Line_Length and point data Line_Curvature, for
+ParaView) or .ply (binary: a vertex element x y z Line_Curvature and an
+edge element vertex1 vertex2 Line_Kind Line_Strength Line_Length, one edge
+per segment, for MeshLab and CloudCompare, and which the plugin's PLY
+reader reads back as lines). Give PATH as --lines=PATH or after INPUT and OUTPUT. The
+summary then also counts the lines by kind, with their length.
+
 The plugin is loaded from --plugin, else $PRINCIPAL_CURVATURES_PLUGIN, else
 the build tree next to this script; not at all if it is already loaded
 (PV_PLUGIN_CONFIG_FILE pointing at the build's plugins XML autoloads it).
@@ -75,6 +86,11 @@ import sys
 import time
 
 from paraview import servermanager, simple
+
+# Its sibling module, also when this file is loaded by path (tests do).
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from curvature_lines_output import (LINE_KINDS, default_lines_path, lines_filter,  # noqa: E402
+                                    lines_path_problem, summarize_lines, write_lines)
 
 REPOSITORY = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 DEFAULT_PLUGIN = os.path.join(
@@ -197,6 +213,12 @@ def parse_arguments(argv):
                        help="show the stages and a progress line on stderr (default: when stderr is a terminal)")
     shown.add_argument("--no-progress", dest="progress", action="store_false",
                        help="never show them")
+    parser.add_argument("--lines", nargs="?", const="", metavar="PATH",
+                        help="also write the curvature lines (ridges and valleys) to PATH, .vtp or .ply (PLY "
+                             "vertices and edges); without PATH, OUTPUT's stem + _lines.vtp. Give PATH as "
+                             "--lines=PATH or after INPUT OUTPUT")
+    parser.add_argument("--line-kinds", choices=sorted(LINE_KINDS), default="ridges-and-valleys",
+                        help="which lines --lines writes (default: %(default)s; all: every extremal line)")
     parser.add_argument("--plugin", metavar="PATH",
                         default=os.environ.get("PRINCIPAL_CURVATURES_PLUGIN") or DEFAULT_PLUGIN,
                         help="PrincipalCurvatures.so (default: $PRINCIPAL_CURVATURES_PLUGIN or %(default)s)")
@@ -221,6 +243,11 @@ def parse_arguments(argv):
         arguments.progress = sys.stderr.isatty()
     if os.path.splitext(arguments.output)[1].lower() not in OUTPUT_EXTENSIONS:
         parser.error("OUTPUT must be a %s file (got %s)" % ("/".join(OUTPUT_EXTENSIONS), arguments.output))
+    if arguments.lines == "":
+        arguments.lines = default_lines_path(arguments.output)
+    problem = arguments.lines is not None and lines_path_problem(arguments.lines, arguments.output)
+    if problem:
+        parser.error(problem)
     return arguments
 
 
@@ -821,14 +848,33 @@ def main(argv):
                  single=arguments.single_precision)
     progress.end()
 
+    lines = None
+    if arguments.lines:
+        progress.begin("finding the curvature lines")
+        lines_proxy = lines_filter(curvatures, arguments.line_kinds)
+        progress.watch(lines_proxy)
+        lines_proxy.UpdatePipeline()
+        progress.end()
+        lines = servermanager.Fetch(lines_proxy)
+        progress.begin("writing %s" % arguments.lines)
+        try:
+            write_lines(lines_proxy, lines, arguments.lines)
+        except OSError as error:
+            fail("could not write %s: %s" % (arguments.lines, error))
+        progress.end()
+
     summarize(result, seconds, [
         ("input", arguments.input),
         ("normals", normals_description),
         ("fit mode", arguments.fit_mode),
         ("neighborhood", neighborhood_description(curvatures)),
     ])
+    if lines is not None:
+        summarize_lines(lines)
     print()
     print("wrote %s" % arguments.output)
+    if lines is not None:
+        print("wrote %s" % arguments.lines)
     return 0
 
 

@@ -25,6 +25,22 @@ enum class LineKind : unsigned char
 };
 constexpr int LineKindCount = 6;
 
+/// The kind's name, as ParaView's legend and the command-line tool's
+/// summary list it ("Ridge", "Valley", ...); "Unknown" beyond the kinds.
+/// Inline so that the GUI takes the names from here too.
+inline const char* LineKindName(LineKind kind)
+{
+  constexpr const char* Names[] = {
+    "Ridge", "Valley", "Max of k_max", "Min of k_max", "Max of k_min", "Min of k_min"
+  };
+  static_assert(sizeof(Names) / sizeof(Names[0]) == LineKindCount);
+  const auto code = static_cast<int>(kind);
+  return code < LineKindCount ? Names[code] : "Unknown";
+}
+
+/// The name of the lines' cell array holding the kinds.
+constexpr const char* LineKindArrayName = "Line_Kind";
+
 /// Bit of a kind in LineSettings::Kinds.
 constexpr unsigned KindBit(LineKind kind)
 {

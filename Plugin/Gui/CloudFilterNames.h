@@ -23,6 +23,13 @@ inline bool IsCloudFilter(vtkSMProxy* proxy)
       std::strcmp(name, "PointCloudNormalEstimation") == 0);
 }
 
+/// The plugin's Curvature Lines filter (Plugin/CurvatureLines.xml).
+inline bool IsCurvatureLines(vtkSMProxy* proxy)
+{
+  const char* name = proxy ? proxy->GetXMLName() : nullptr;
+  return name && std::strcmp(name, "CurvatureLines") == 0;
+}
+
 /// The plugin's readers (Plugin/PointCloudReaders.xml).
 inline bool IsCloudReader(vtkSMProxy* proxy)
 {

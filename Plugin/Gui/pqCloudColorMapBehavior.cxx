@@ -2,11 +2,13 @@
 
 #include "CloudFilterNames.h"
 #include "Estimation/ShapeClass.h"
+#include "Lines/LineTypes.h"
 
 #include "pqApplicationCore.h"
 #include "pqDataRepresentation.h"
 #include "pqServerManagerModel.h"
 #include "pqView.h"
+#include "vtkDataObject.h"
 #include "vtkSMPVRepresentationProxy.h"
 #include "vtkSMPropertyHelper.h"
 #include "vtkSMSessionProxyManager.h"
@@ -18,29 +20,79 @@
 
 namespace
 {
+using Color = std::array<double, 3>;
+
 /// A color per pcurv::ShapeClass, by code: gray undetermined, pale flat,
 /// warm convex (dome red, ridge orange), cool concave (cup blue, valley
 /// cyan), saddle green: the features stand out on the flat ground.
-constexpr std::array<std::array<double, 3>, static_cast<int>(pcurv::ShapeClass::Count)>
-  ShapeClassColors = { { { 0.45, 0.45, 0.45 },
-    { 0.90, 0.88, 0.80 },
-    { 0.84, 0.15, 0.16 },
-    { 0.17, 0.32, 0.80 },
-    { 1.00, 0.60, 0.10 },
-    { 0.30, 0.80, 0.90 },
-    { 0.20, 0.65, 0.25 } } };
+constexpr std::array<Color, static_cast<int>(pcurv::ShapeClass::Count)> ShapeClassColors = { {
+  { 0.45, 0.45, 0.45 },
+  { 0.90, 0.88, 0.80 },
+  { 0.84, 0.15, 0.16 },
+  { 0.17, 0.32, 0.80 },
+  { 1.00, 0.60, 0.10 },
+  { 0.30, 0.80, 0.90 },
+  { 0.20, 0.65, 0.25 },
+} };
+
+/// A color per pcurv::LineKind, by code. The lines are drawn over points
+/// colored by a curvature with a blue-white-red map, ridges where it is red
+/// and valleys where it is blue: ridges orange and valleys green stand out
+/// there and on gray; the other kinds are told apart from both.
+constexpr std::array<Color, pcurv::LineKindCount> LineKindColors = { {
+  { 1.00, 0.60, 0.00 },
+  { 0.00, 0.70, 0.35 },
+  { 0.90, 0.35, 0.75 },
+  { 0.55, 0.35, 0.10 },
+  { 0.55, 0.85, 0.95 },
+  { 0.35, 0.20, 0.60 },
+} };
+
+/// An array of codes shown as categories: its name, its codes' names and
+/// colors.
+struct CategoricalArray
+{
+  const char* ArrayName;
+  int Count;
+  const char* (*Name)(int code);
+  const Color* Colors;
+};
+
+const CategoricalArray CategoricalArrays[] = {
+  { pcurv::ShapeClassArrayName,
+    static_cast<int>(pcurv::ShapeClass::Count),
+    [](int code) { return pcurv::ShapeClassName(static_cast<pcurv::ShapeClass>(code)); },
+    ShapeClassColors.data() },
+  { pcurv::LineKindArrayName,
+    pcurv::LineKindCount,
+    [](int code) { return pcurv::LineKindName(static_cast<pcurv::LineKind>(code)); },
+    LineKindColors.data() },
+};
+
+/// The categorical array of that name, or null.
+const CategoricalArray* CategoriesOf(const char* arrayName)
+{
+  for (const CategoricalArray& categories : CategoricalArrays)
+  {
+    if (arrayName && std::string(arrayName) == categories.ArrayName)
+    {
+      return &categories;
+    }
+  }
+  return nullptr;
+}
 
 /// The map as categories: one color and one legend entry (its name) per
-/// class, whatever range the map had.
-void MakeShapeClassMap(vtkSMProxy* map)
+/// code, whatever range the map had.
+void MakeCategoricalMap(vtkSMProxy* map, const CategoricalArray& categories)
 {
   std::vector<std::string> annotations;
   std::vector<double> colors;
-  for (int code = 0; code < static_cast<int>(pcurv::ShapeClass::Count); ++code)
+  for (int code = 0; code < categories.Count; ++code)
   {
     annotations.push_back(std::to_string(code));
-    annotations.emplace_back(pcurv::ShapeClassName(static_cast<pcurv::ShapeClass>(code)));
-    colors.insert(colors.end(), ShapeClassColors[code].begin(), ShapeClassColors[code].end());
+    annotations.emplace_back(categories.Name(code));
+    colors.insert(colors.end(), categories.Colors[code].begin(), categories.Colors[code].end());
   }
   // "Interpret Values As Categories" in the GUI and pvpython.
   vtkSMPropertyHelper(map, "IndexedLookup").Set(1);
@@ -58,6 +110,26 @@ void MakeShapeClassMap(vtkSMProxy* map)
     vtkSMPropertyHelper(map, "AnnotationsInitialized").Set(1);
   }
   map->UpdateVTKObjects();
+}
+
+/// A new display of Curvature Lines: colored by the lines' kinds (its
+/// cells), with lines wide enough to read over the cloud's points.
+void ShowLinesByKind(vtkSMProxy* display)
+{
+  vtkSMPropertyHelper(display, "ColorArrayName")
+    .SetInputArrayToProcess(vtkDataObject::FIELD_ASSOCIATION_CELLS, pcurv::LineKindArrayName);
+  if (display->GetProperty("LineWidth"))
+  {
+    vtkSMPropertyHelper(display, "LineWidth").Set(3.0);
+  }
+  display->UpdateVTKObjects();
+}
+
+/// A display of one of the plugin's filters (curvatures, normals, lines).
+bool ShowsCloudFilter(vtkSMProxy* display)
+{
+  vtkSMProxy* input = vtkSMPropertyHelper(display, "Input").GetAsProxy();
+  return pcurv::IsCloudFilter(input) || pcurv::IsCurvatureLines(input);
 }
 } // namespace
 
@@ -79,7 +151,7 @@ vtkSMProxy* MapOfSameArrayInView(pqRepresentation* representation,
     vtkSMProxy* proxy = other ? other->getProxy() : nullptr;
     if (!proxy || other == representation || !other->isVisible() ||
       !proxy->GetProperty("LookupTable") || !proxy->GetProperty("Input") ||
-      !pcurv::IsCloudFilter(vtkSMPropertyHelper(proxy, "Input").GetAsProxy()))
+      !ShowsCloudFilter(proxy))
     {
       continue;
     }
@@ -138,11 +210,15 @@ void pqCloudColorMapBehavior::giveOwnColorMap(pqRepresentation* representation)
   {
     return;
   }
-  if (!pcurv::IsCloudFilter(vtkSMPropertyHelper(display, "Input").GetAsProxy()))
+  if (!ShowsCloudFilter(display))
   {
     return;
   }
   vtkSMPropertyHelper(display, "UseSeparateColorMap").Set(1);
+  if (pcurv::IsCurvatureLines(vtkSMPropertyHelper(display, "Input").GetAsProxy()))
+  {
+    ShowLinesByKind(display);
+  }
   // The display is already colored (by the output's active scalars) with
   // the shared map: coloring again picks the display's own map, which is
   // then scaled to this output alone.
@@ -163,22 +239,24 @@ void pqCloudColorMapBehavior::giveOwnColorMap(pqRepresentation* representation)
       display, /*extend=*/false, /*force=*/true);
   }
   display->UpdateVTKObjects();
-  // Whenever the display is colored by the shape classes (and again when
-  // its map changes: ParaView sets the array, then the map), categories.
+  // Whenever the display is colored by the shape classes or the line
+  // kinds (and again when its map changes: ParaView sets the array, then
+  // the map), categories; the lines are colored by their kinds already.
   if (auto* data = qobject_cast<pqDataRepresentation*>(representation))
   {
     QObject::connect(data,
       &pqDataRepresentation::colorArrayNameModified,
       this,
-      [data]() { pqCloudColorMapBehavior::colorClasses(data); });
+      [data]() { pqCloudColorMapBehavior::colorCategories(data); });
     QObject::connect(data,
       &pqDataRepresentation::colorTransferFunctionModified,
       this,
-      [data]() { pqCloudColorMapBehavior::colorClasses(data); });
+      [data]() { pqCloudColorMapBehavior::colorCategories(data); });
+    pqCloudColorMapBehavior::colorCategories(data);
   }
 }
 
-void pqCloudColorMapBehavior::colorClasses(pqDataRepresentation* representation)
+void pqCloudColorMapBehavior::colorCategories(pqDataRepresentation* representation)
 {
   vtkSMProxy* display = representation->getProxy();
   vtkSMPropertyHelper colorArray(display, "ColorArrayName", /*quiet=*/true);
@@ -191,17 +269,18 @@ void pqCloudColorMapBehavior::colorClasses(pqDataRepresentation* representation)
   // a name that ends with the array's.
   const char* mapName =
     map ? map->GetSessionProxyManager()->GetProxyName("lookup_tables", map) : nullptr;
-  const std::string suffix = std::string(pcurv::ShapeClassArrayName) + ".PVLookupTable";
+  const CategoricalArray* categories = CategoriesOf(arrayName);
+  const std::string suffix =
+    std::string(categories ? categories->ArrayName : "") + ".PVLookupTable";
   const std::string registered = mapName ? mapName : "";
-  if (!map || !arrayName || std::string(arrayName) != pcurv::ShapeClassArrayName ||
-    registered.size() < suffix.size() ||
+  if (!map || !categories || registered.size() < suffix.size() ||
     registered.compare(registered.size() - suffix.size(), suffix.size(), suffix) != 0 ||
     vtkSMPropertyHelper(map, "IndexedLookup").GetAsInt() == 1)
   {
     return;
   }
-  MakeShapeClassMap(map);
-  // The legend: the class names by their colors.
+  MakeCategoricalMap(map, *categories);
+  // The legend: the names by their colors.
   if (pqView* view = representation->getView())
   {
     vtkSMPVRepresentationProxy::SetScalarBarVisibility(display, view->getProxy(), true);

@@ -20,8 +20,10 @@
  * views keep separate maps. Not applied while a state file loads: its
  * color maps are kept.
  *
- * Colored by Shape_Class, a display's map is categorical: a color and a
- * legend entry named after each class (pcurv::ShapeClass), shown.
+ * Colored by Shape_Class or Line_Kind, a display's map is categorical: a
+ * color and a legend entry named after each class (pcurv::ShapeClass) or
+ * line kind (pcurv::LineKind), shown. A display of Curvature Lines is
+ * colored by Line_Kind when it is first shown, its lines 3 pixels wide.
  */
 #ifndef pqCloudColorMapBehavior_h
 #define pqCloudColorMapBehavior_h
@@ -45,8 +47,9 @@ private Q_SLOTS:
   void giveOwnColorMap(pqRepresentation* representation);
 
 private:
-  /// Colored by Shape_Class: its map as categories with the class names.
-  static void colorClasses(pqDataRepresentation* representation);
+  /// Colored by Shape_Class or Line_Kind: its map as categories with
+  /// their names.
+  static void colorCategories(pqDataRepresentation* representation);
 };
 
 #endif

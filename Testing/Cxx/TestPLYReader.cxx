@@ -2,13 +2,17 @@
 // little and big endian, with an element before the vertices and faces
 // after them, double x y z kept exactly, float ones as float, normals under
 // two naming schemes, uchar colors as RGB, every other vertex property as
-// its own array of its type, a vertex list property skipped; then bad
+// its own array of its type, a vertex list property skipped; an edge
+// element (vertex1 vertex2, as the command-line tool writes curvature
+// lines) as line cells with its other properties as cell data; then bad
 // files, each with the error it must give (and no points, no crash).
 #include "ReaderTestHelpers.h"
 #include "TestChecks.h"
 #include "vtkPLYPointCloudReader.h"
 
+#include "vtkCellData.h"
 #include "vtkErrorCode.h"
+#include "vtkIdList.h"
 #include "vtkNew.h"
 #include "vtkPoints.h"
 
@@ -181,6 +185,37 @@ void CheckGoodFile(Checks& checks,
   }
 }
 
+/// Edges: two segments of a polyline over three of four vertices, each
+/// with its kind and length, as line cells and cell data.
+void CheckEdges(Checks& checks, const std::string& folder)
+{
+  const std::string path = folder + "/edges.ply";
+  WriteBytes(path,
+    "ply\nformat ascii 1.0\nelement vertex 4\nproperty double x\nproperty double y\n"
+    "property double z\nelement edge 2\nproperty int vertex1\nproperty int vertex2\n"
+    "property uchar Line_Kind\nproperty double Line_Length\nend_header\n"
+    "0 0 0\n1 0 0\n2 0 0\n9 9 9\n0 1 1 2.5\n1 2 1 2.5\n");
+  const Read read = ReadPly(path);
+  vtkPolyData* lines = read.Cloud;
+  checks.True("edges: no error", read.Errors.empty());
+  checks.Equal("edges: points", lines->GetNumberOfPoints(), 4);
+  checks.Equal("edges: line cells", lines->GetNumberOfLines(), 2);
+  checks.Equal("edges: no vertex cells", lines->GetNumberOfVerts(), 0);
+  vtkDataArray* kind = lines->GetCellData()->GetArray("Line_Kind");
+  vtkDataArray* length = lines->GetCellData()->GetArray("Line_Length");
+  checks.True("edges: Line_Kind uchar, Line_Length double",
+    kind && length && kind->GetDataType() == VTK_UNSIGNED_CHAR &&
+      length->GetDataType() == VTK_DOUBLE && lines->GetCellData()->GetNumberOfArrays() == 2);
+  if (lines->GetNumberOfLines() == 2 && kind && length)
+  {
+    vtkNew<vtkIdList> ends;
+    lines->GetCellPoints(1, ends);
+    checks.True("edges: the second from vertex 1 to 2", ends->GetId(0) == 1 && ends->GetId(1) == 2);
+    checks.Near("edges: kind", kind->GetComponent(1, 0), 1, 0);
+    checks.Near("edges: length", length->GetComponent(1, 0), 2.5, 0);
+  }
+}
+
 struct BadCase
 {
   const char* Name;
@@ -244,6 +279,11 @@ void CheckBadFiles(Checks& checks, const std::string& folder)
     { "bad_value.ply",
       "ply\nformat ascii 1.0\nelement vertex 2\n" + xyz + "end_header\n1 2 3\n4 abc 6\n",
       "element vertex 1: 'abc' is not a float value" },
+    { "edge_out_of_range.ply",
+      "ply\nformat ascii 1.0\nelement vertex 2\n" + xyz +
+        "element edge 2\nproperty int vertex1\nproperty int vertex2\nend_header\n"
+        "0 0 0\n1 1 1\n0 1\n1 7\n",
+      "edge 1: vertex 7 is not one of the 2 vertices" },
     { "out_of_range.ply",
       "ply\nformat ascii 1.0\nelement vertex 1\n" + xyz +
         "property uchar red\nend_header\n1 2 3 300\n",
@@ -278,6 +318,7 @@ int main(int argc, char* argv[])
     CheckGoodFile(checks, folder, format, false, "normal_");
     CheckGoodFile(checks, folder, format, true, "n");
   }
+  CheckEdges(checks, folder);
   CheckBadFiles(checks, folder);
   return checks.Summary();
 }

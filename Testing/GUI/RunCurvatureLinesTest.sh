@@ -1,0 +1,106 @@
+#!/usr/bin/env bash
+# Curvature Lines in the real ParaView GUI under Xvfb, as a user gets them
+# (curvature_lines_script.py opens a Gaussian bump): Apply (Alt+A), then
+# Principal Curvatures and Curvature Lines each by the quick launch
+# (Ctrl+Space, the label typed, Enter) and Apply. At that first Apply the
+# lines must show over the curvatures' points (not replace them), colored
+# by Line_Kind (cells) with a categorical map named after the kinds, its
+# legend shown and lines 3 pixels wide; on the captured screen, the ridge
+# orange and valley green of that map, and the legend's names (tesseract).
+#   RunCurvatureLinesTest.sh PARAVIEW PLUGIN SCREENSHOT.png
+set -u
+paraview=$1 plugin=$2 screenshot=$3
+here=$(cd "$(dirname "$0")" && pwd)
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+export GUI_TEST_PLUGIN=$plugin GUI_TEST_MARKER=$work/marker GUI_TEST_WORK=$work
+mkdir -p "$(dirname "$screenshot")"
+rm -f "$screenshot"
+
+xvfb-run -a -s "-screen 0 1600x1000x24" bash -c '
+  apply() {
+    xdotool windowfocus --sync "$window"
+    xdotool key --clearmodifiers alt+a
+    sleep 8
+  }
+  # Creates a filter on the active source through the quick launch.
+  quick_launch() {
+    xdotool windowfocus --sync "$window"
+    xdotool key --clearmodifiers ctrl+space
+    sleep 2
+    xdotool type --delay 80 "$1"
+    sleep 2
+    xdotool key Return
+    sleep 3
+  }
+  "$0" --dr --script="$1" > "$GUI_TEST_WORK/paraview.log" 2>&1 &
+  pid=$!
+  for i in $(seq 1 120); do [ -s "$GUI_TEST_MARKER" ] && break; sleep 1; done
+  window=$(xdotool search --sync --onlyvisible --name "ParaView" | head -n 1)
+  if [ -n "$window" ]; then
+    xdotool windowmove "$window" 0 0 windowsize "$window" 1600 1000
+    sleep 3
+    apply
+    quick_launch "principal"
+    apply
+    quick_launch "curvature lines"
+    apply
+    for i in $(seq 1 60); do grep -q "^lines shown" "$GUI_TEST_WORK/state" 2>/dev/null && break; sleep 1; done
+    sleep 3
+    import -window root "$2"
+  fi
+  kill "$pid" 2>/dev/null
+  wait "$pid" 2>/dev/null
+  exit 0' "$paraview" "$here/curvature_lines_script.py" "$screenshot"
+
+status=0
+marker=$(cat "$GUI_TEST_MARKER" 2>/dev/null || echo "no marker: the GUI script did not run")
+echo "GUI script: $marker"
+case "$marker" in ready*) ;; *) tail -n 20 "$work/paraview.log"; exit 1 ;; esac
+state=$(cat "$work/state" 2>/dev/null)
+echo "after the last Apply:"
+sed "s/^/  /" <<< "$state"
+expect() {
+  if grep -qx "$1" <<< "$state"; then echo "as expected: $1"; else echo "FAILED: expected '$1'"; status=1; fi
+}
+expect "curvatures shown"
+expect "colored by CELLS Line_Kind"
+expect "line width 3"
+expect "categorical 1"
+expect "annotations 0,Ridge,1,Valley,2,Max of k_max,3,Min of k_max,4,Max of k_min,5,Min of k_min"
+expect "legend 1"
+grep -q "^lines shown [1-9]" <<< "$state" && echo "lines found and shown" ||
+  { echo "FAILED: no lines shown"; status=1; }
+if [ ! -s "$screenshot" ]; then
+  echo "FAILED: no screenshot"
+  exit 1
+fi
+# The render view (right of the panels) shows the ridge orange (1, 0.6, 0)
+# and the valley green (0, 0.7, 0.35) of the kinds' map, which the
+# curvatures' blue-white-red map has not.
+read -r oranges greens <<< "$(convert "$screenshot" -crop 1100x850+480+100 +repage txt:- |
+  awk -F"[(),: ]+" '/^[0-9]/ { r = $3; g = $4; b = $5
+    if (r > 220 && g > 120 && g < 185 && b < 50) o++
+    if (r < 50 && g > 150 && b > 60 && b < 120) n++ }
+    END { printf "%d %d", o, n }')"
+if [ "${oranges:-0}" -gt 100 ] && [ "${greens:-0}" -gt 100 ]; then
+  echo "screen: $oranges ridge-orange and $greens valley-green pixels"
+else
+  echo "FAILED: screen shows ${oranges:-0} ridge-orange and ${greens:-0} valley-green pixels"
+  status=1
+fi
+if command -v tesseract > /dev/null; then
+  found=$(convert "$screenshot" -crop 1100x850+480+100 +repage -resize 200% -colorspace Gray png:- |
+    tesseract - - --psm 11 2>/dev/null | grep -o -w -E "Ridge|Valley" | sort -u | tr '\n' ' ')
+  if [ "$(wc -w <<< "$found")" -eq 2 ]; then
+    echo "legend read on screen: $found"
+  else
+    echo "FAILED: the legend's Ridge and Valley are not on screen (read: $found)"
+    status=1
+  fi
+else
+  echo "FAILED: tesseract is not installed (Scripts/setup.sh installs it)"
+  status=1
+fi
+echo "screenshot: $screenshot"
+exit $status
