@@ -28,7 +28,8 @@ void CheckInput(const LineInput& input, const LineSettings& settings)
   if (!(settings.MinimumLength >= 0.0) || !(settings.MinimumStrength >= 0.0) ||
     !(settings.Significance >= 0.0) || !(settings.RelativeBend >= 0.0) ||
     !(settings.FitRadius > 0.0) || settings.GraphNeighbors < 3 || settings.FitNeighbors < 20 ||
-    settings.RadiusNeighbors < 6)
+    settings.RadiusNeighbors < 6 || settings.MinimumFitPoints < 0 || settings.SharedFitPoints < 1 ||
+    !(settings.SharedFitReach > 0.0) || !(settings.AnchorSpacing > 0.0))
   {
     throw LineInputError("curvature lines: settings out of range");
   }

@@ -51,8 +51,9 @@ bool Normalize(LineVector& v)
 struct PointRole
 {
   double FitRadius = 0.0;
-  bool Fittable = false; ///< usable curvatures, a frame and a radius
-  bool Dense = false;    ///< its neighborhood holds SharedFitPoints or more
+  bool Fittable = false;  ///< usable curvatures, a frame and a radius
+  bool Dense = false;     ///< its neighborhood holds SharedFitPoints or more
+  bool Shareable = false; ///< so does its fit's (MinimumFitPoints)
   LineFrame Frame;
 };
 
@@ -111,7 +112,7 @@ public:
       return;
     }
     BlendedDerivatives blend[2];
-    if (!(role.Dense && this->BlendShared(i, blend)))
+    if (!(role.Shareable && this->BlendShared(i, blend)))
     {
       CurvatureFit fit;
       if (!FitCurvatures(this->Input,
@@ -254,8 +255,16 @@ public:
     // About width points lie within graphReach, so about width (R / reach)^2
     // within the fit radius R of a surface.
     const double ratio = role.FitRadius / graphReach;
-    role.Dense =
-      graphReach > 0.0 && this->Out.GraphWidth * ratio * ratio >= this->Settings.SharedFitPoints;
+    const double within = this->Out.GraphWidth * ratio * ratio;
+    role.Dense = graphReach > 0.0 && within >= this->Settings.SharedFitPoints;
+    const double least = this->Settings.MinimumFitPoints;
+    if (graphReach > 0.0 && within < least)
+    {
+      // A clean cloud's curvatures come from a few dozen neighbors: their
+      // derivatives need a wider fit than they did.
+      role.FitRadius *= std::sqrt(least / within);
+    }
+    role.Shareable = graphReach > 0.0 && std::max(within, least) >= this->Settings.SharedFitPoints;
   }
 
 private:
@@ -343,7 +352,7 @@ void FitAnchors(const LineInput& input,
     [&](std::int64_t j) { return grid.GetSortedId(j); },
     origin,
     cell,
-    [&](std::int64_t point) { return roles[point].Fittable && roles[point].Dense; },
+    [&](std::int64_t point) { return roles[point].Fittable && roles[point].Shareable; },
     []() { return true; });
   std::vector<unsigned char> marks(static_cast<std::size_t>(input.Count), 0);
   shared.Cells.MarkEveryAnchor(marks);
@@ -355,7 +364,8 @@ void FitAnchors(const LineInput& input,
       anchors.push_back(grid.GetSortedId(j));
     }
   }
-  std::vector<CurvatureFit> fits(anchors.size());
+  std::vector<CurvatureFit>& fits = shared.Fits;
+  fits.resize(anchors.size());
   std::vector<unsigned char> fitted(anchors.size(), 0);
   RunRanges(runner,
     static_cast<std::int64_t>(anchors.size()),
@@ -371,15 +381,17 @@ void FitAnchors(const LineInput& input,
           input, settings, grid, anchors[a], role.FitRadius, role.Frame, shell, scratch, fits[a]);
       }
     });
+  // The anchors whose fit held, in order, and their fits in place.
   std::vector<std::int64_t> kept;
   for (std::size_t a = 0; a < anchors.size(); ++a)
   {
     if (fitted[a])
     {
+      fits[kept.size()] = fits[a];
       kept.push_back(anchors[a]);
-      shared.Fits.push_back(std::move(fits[a]));
     }
   }
+  fits.resize(kept.size());
   shared.Cells.NumberAnchors(kept);
 }
 

@@ -4,10 +4,10 @@
  * own direction, from cubic least-squares fits of the neighbors'
  * curvatures (CurvatureFit.h). No VTK.
  *
- * Where neighborhoods hold hundreds of points (every noisy cloud), nearby
- * points fit nearly the same samples: only anchor points (AnchorCells.h)
- * fit, and each point blends the fits of the anchors near it, evaluated at
- * its own position along its own directions. Elsewhere each point fits its
+ * A fit takes at least about a hundred points, so nearby points fit
+ * nearly the same samples: only anchor points (AnchorCells.h) fit, and
+ * each point blends the fits of the anchors near it, evaluated at its own
+ * position along its own directions; a point no anchor serves fits its
  * own neighborhood.
  */
 #ifndef LineDerivatives_h

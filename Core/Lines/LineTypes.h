@@ -98,6 +98,10 @@ struct LineSettings
   /// At most about this many neighbors per fit: wider neighborhoods are
   /// thinned evenly.
   int FitNeighbors = 500;
+  /// A fit takes at least about this many points: where the curvatures'
+  /// neighborhoods hold fewer (clean clouds), the fit's radius grows to
+  /// hold them.
+  int MinimumFitPoints = 100;
   /// Where a fit's neighborhood holds at least about this many points, one
   /// fit serves the points near its center (SharedFitReach): the
   /// neighborhoods of nearby points are then nearly the same set.
