@@ -14,7 +14,9 @@ by planes across x into four slabs (the principal ellipses of an ellipsoid
 run across the cuts) and dealt out point by point (piece i % 4: every
 rank's piece spans the whole cloud), and compares: the same number of
 lines, of the same kinds, through the same points to the last bit, with
-the same lengths and strengths; every line on rank 0.
+the same lengths and strengths; every line on rank 0. A cloud with one
+point that is not finite, in the last slab, gives no line on any rank (and
+the run ends: the ranks agree on the error before any collective step).
 """
 
 import os
@@ -165,6 +167,11 @@ def write_reference(cloud, prefix):
     numpy.savetxt(prefix + "_cuts.txt", [x[s[0]] for s in slabs[1:]])
     ids = numpy.arange(data.GetNumberOfPoints())
     write_pieces(data, [ids[k::PIECES] for k in range(PIECES)], prefix + "_interleaved")
+    # The slabs again, the last with a point whose x is not a number.
+    coordinates = vtk_to_numpy(data.GetPoints().GetData())
+    coordinates[slabs[-1][0], 0] = numpy.nan
+    data.GetPoints().Modified()
+    write_pieces(data, slabs, prefix + "_bad")
     source = simple.XMLPolyDataReader(FileName=[prefix + "_curvatures.vtp"])
     for variant, kinds in VARIANTS.items():
         write(draw(source, kinds, "%s_serial_%s.pvtp" % (prefix, variant)),
@@ -198,6 +205,14 @@ def main(plugin, cloud, action, prefix):
             if process is not None and process.GetNumberOfTuples() > 0 and \
                     vtk_to_numpy(process).max() != 0:
                 failures.append("%s: lines on other ranks than 0" % label)
+    # Bad input on one rank: every rank stops (none waits for the others in
+    # a collective step that never comes), and no rank draws a line.
+    bad = CurvatureLines(Input=simple.OpenDataFile(prefix + "_bad.pvtp"))  # noqa: F821
+    bad.UpdatePipeline()
+    drawn = bad.GetDataInformation().GetNumberOfCells()
+    print("%-40s %d lines" % ("%d ranks, one point not finite" % ranks, drawn))
+    if drawn != 0:
+        failures.append("%d ranks, one point not finite: %d lines drawn" % (ranks, drawn))
     for failure in failures:
         print("FAILED " + failure)
     print("%d failed" % len(failures))
