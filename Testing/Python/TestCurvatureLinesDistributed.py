@@ -12,7 +12,9 @@ the default ridges and valleys). Each parallel run draws them again from
 the curvatures as read (every point on rank 0, the other ranks empty), cut
 by planes across x into four slabs (the principal ellipses of an ellipsoid
 run across the cuts) and dealt out point by point (piece i % 4: every
-rank's piece spans the whole cloud), and compares: the same number of
+rank's piece spans the whole cloud), and from the whole pipeline run in
+parallel (the cloud redistributed into spatial pieces, as D3 does, and its
+curvatures estimated there), and compares: the same number of
 lines, of the same kinds, through the same points to the last bit, with
 the same lengths and strengths; every line on rank 0. A cloud with one
 point that is not finite, in the last slab, gives no line on any rank (and
@@ -179,6 +181,15 @@ def write_reference(cloud, prefix):
     return 0
 
 
+def parallel_curvatures(cloud):
+    """The whole pipeline in parallel: the cloud cut into spatial pieces
+    (RedistributeDataSet, as D3), its curvatures estimated there."""
+    pieces = simple.RedistributeDataSet(Input=simple.XMLPolyDataReader(FileName=[cloud]))
+    curvatures = PrincipalCurvatures(Input=pieces)  # noqa: F821 (LoadPlugin's)
+    curvatures.Normals = ["POINTS", "Normals"]
+    return curvatures
+
+
 def main(plugin, cloud, action, prefix):
     simple.LoadPlugin(plugin, remote=False, ns=globals())
     if action == "--write-reference":
@@ -187,7 +198,8 @@ def main(plugin, cloud, action, prefix):
     cuts = numpy.atleast_1d(numpy.loadtxt(prefix + "_cuts.txt"))
     splits = (("as read", simple.XMLPolyDataReader(FileName=[prefix + "_curvatures.vtp"])),
               ("slabs", simple.OpenDataFile(prefix + "_slabs.pvtp")),
-              ("interleaved", simple.OpenDataFile(prefix + "_interleaved.pvtp")))
+              ("interleaved", simple.OpenDataFile(prefix + "_interleaved.pvtp")),
+              ("curvatures in parallel", parallel_curvatures(cloud)))
     failures = []
     for variant, kinds in VARIANTS.items():
         reference = lines_of(read("%s_lines_%s.vtp" % (prefix, variant)))
