@@ -3,7 +3,7 @@
 Serial reference (pvpython):
     TestCurvatureLinesDistributed.py PLUGIN CLOUD.vtp --write-reference PREFIX
 Parallel check (mpiexec -n N pvbatch --mpi):
-    TestCurvatureLinesDistributed.py PLUGIN CLOUD.vtp --compare PREFIX
+    TestCurvatureLinesDistributed.py PLUGIN CLOUD.vtp --compare PREFIX [--noisy]
 
 The reference run estimates the curvatures of CLOUD once (serially) and
 writes them, whole and cut into pieces, so that every run draws its lines
@@ -190,7 +190,7 @@ def parallel_curvatures(cloud):
     return curvatures
 
 
-def main(plugin, cloud, action, prefix):
+def main(plugin, cloud, action, prefix, kind="--clean"):
     simple.LoadPlugin(plugin, remote=False, ns=globals())
     if action == "--write-reference":
         return write_reference(cloud, prefix)
@@ -205,7 +205,10 @@ def main(plugin, cloud, action, prefix):
         reference = lines_of(read("%s_lines_%s.vtp" % (prefix, variant)))
         across = cut_lines(reference, cuts)
         print("%-40s %d serial lines, %d across the slabs' cuts" % (variant, len(reference), across))
-        if len(reference) < 3 or across < 2:
+        # A noisy cloud has few lines that stand out of the noise, but its
+        # wide neighborhoods take the shared fits (anchors) in every piece.
+        least = (1, 1) if kind == "--noisy" else (3, 2)
+        if len(reference) < least[0] or across < least[1]:
             failures.append("%s: too few serial lines (%d) or across the cuts (%d)"
                             % (variant, len(reference), across))
         for split, source in splits:
@@ -232,7 +235,7 @@ def main(plugin, cloud, action, prefix):
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 5:
+    if len(sys.argv) not in (5, 6):
         print(__doc__)
         sys.exit(2)
     status = main(*sys.argv[1:])
