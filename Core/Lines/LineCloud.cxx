@@ -372,24 +372,30 @@ double GlobalMedian(std::vector<double> values, const Collectives& processes)
   {
     return 0.0;
   }
-  // Nonnegative doubles order as their bits do: bisect the bits for the
-  // least value with more than total / 2 values at or below it.
+  // Nonnegative doubles order as their bits do: the median's bits, a byte
+  // at a time from the top, each from a histogram of the values that
+  // share the bytes found so far (eight collective steps).
   std::vector<std::uint64_t> bits(values.size());
   std::transform(values.begin(), values.end(), bits.begin(), Bits);
-  std::uint64_t low = 0, high = Bits(std::numeric_limits<double>::max());
-  while (low < high)
+  std::int64_t rank = total / 2; // among the values sharing `low`'s top bytes
+  std::uint64_t low = 0;
+  for (int shift = 56; shift >= 0; shift -= 8)
   {
-    const std::uint64_t middle = low + (high - low) / 2;
-    const std::int64_t atOrBelow = processes.Sum(static_cast<std::int64_t>(
-      std::count_if(bits.begin(), bits.end(), [middle](std::uint64_t b) { return b <= middle; })));
-    if (atOrBelow > total / 2)
+    std::vector<std::int64_t> histogram(256, 0);
+    for (const std::uint64_t b : bits)
     {
-      high = middle;
+      if (shift == 56 || (b >> (shift + 8)) == (low >> (shift + 8)))
+      {
+        ++histogram[(b >> shift) & 0xff];
+      }
     }
-    else
+    processes.Sum(histogram);
+    int bucket = 0;
+    while (rank >= histogram[bucket])
     {
-      low = middle + 1;
+      rank -= histogram[bucket++];
     }
+    low |= static_cast<std::uint64_t>(bucket) << shift;
   }
   double median;
   std::memcpy(&median, &low, sizeof median);
