@@ -1,5 +1,6 @@
 #include "vtkCurvatureLines.h"
 
+#include "ControllerCollectives.h"
 #include "FilterProgress.h"
 #include "Lines/CurvatureLines.h"
 
@@ -131,7 +132,10 @@ int vtkCurvatureLines::RequestData(vtkInformation*,
   }
   const vtkIdType n = input->GetNumberOfPoints();
   WriteLines(pcurv::LineResult{}, output);
-  if (n == 0)
+  // In a parallel run every process takes part in every collective step,
+  // even with an empty piece or bad input: failures are agreed on first.
+  const pcurv::ControllerCollectives processes;
+  if (n == 0 && !processes.IsDistributed())
   {
     return 1;
   }
@@ -141,11 +145,16 @@ int vtkCurvatureLines::RequestData(vtkInformation*,
   const std::vector<double> dMax = ReadArray(pd, "Maximum_Curvature_Direction", 3);
   const std::vector<double> dMin = ReadArray(pd, "Minimum_Curvature_Direction", 3);
   const std::vector<double> normals = ReadNormals(pd);
-  if (kMax.empty() || kMin.empty() || dMax.empty() || normals.empty())
+  const bool arraysFound =
+    n == 0 || !(kMax.empty() || kMin.empty() || dMax.empty() || normals.empty());
+  if (!arraysFound)
   {
     vtkErrorMacro("Curvature Lines needs the output of Principal Curvatures: the point arrays "
                   "Maximum_Curvature, Minimum_Curvature, Maximum_Curvature_Direction (3 "
                   "components) and normals (Fitted_Normal or Normals).");
+  }
+  if (!processes.Min(arraysFound ? 1 : 0))
+  {
     return 0;
   }
   std::vector<double> xyz(3 * static_cast<std::size_t>(n));
@@ -177,7 +186,8 @@ int vtkCurvatureLines::RequestData(vtkInformation*,
   try
   {
     pcurv::SMPToolsRunner runner(0);
-    WriteLines(pcurv::ExtractCurvatureLines(in, settings, &runner), output);
+    // Distributed: the lines of the whole cloud, on process 0.
+    WriteLines(pcurv::ExtractCurvatureLines(in, settings, processes, &runner), output);
   }
   catch (const pcurv::LineInputError& error)
   {

@@ -1,5 +1,7 @@
 #include "Lines/CurvatureLines.h"
 
+#include "Cloud/Collectives.h"
+#include "Lines/LineCloud.h"
 #include "Lines/LineTracing.h"
 #include "Neighbors/PointGrid.h"
 
@@ -43,48 +45,6 @@ void CheckInput(const LineInput& input, const LineSettings& settings)
   }
 }
 
-/// The lattice of the point grid: cells about the typical neighborhood
-/// radius (given, or guessed from the box and the count).
-GridLattice PointLattice(const LineInput& input, const LineSettings& settings)
-{
-  double lower[3] = { HUGE_VAL, HUGE_VAL, HUGE_VAL },
-         upper[3] = { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL };
-  for (std::int64_t i = 0; i < input.Count; ++i)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      lower[k] = std::min(lower[k], input.Points[3 * i + k]);
-      upper[k] = std::max(upper[k], input.Points[3 * i + k]);
-    }
-  }
-  double cell = 0.0;
-  if (input.Radius)
-  {
-    std::vector<double> radii;
-    for (std::int64_t i = 0; i < input.Count; i += std::max<std::int64_t>(1, input.Count / 1000))
-    {
-      if (input.Radius[i] > 0.0 && std::isfinite(input.Radius[i]))
-      {
-        radii.push_back(input.Radius[i]);
-      }
-    }
-    if (!radii.empty())
-    {
-      std::nth_element(radii.begin(), radii.begin() + radii.size() / 2, radii.end());
-      cell = radii[radii.size() / 2];
-    }
-  }
-  if (!(cell > 0.0))
-  {
-    const double diagonal = std::sqrt((upper[0] - lower[0]) * (upper[0] - lower[0]) +
-      (upper[1] - lower[1]) * (upper[1] - lower[1]) +
-      (upper[2] - lower[2]) * (upper[2] - lower[2]));
-    cell =
-      diagonal * std::sqrt(settings.RadiusNeighbors / static_cast<double>(input.Count)) + 1e-300;
-  }
-  return GridLattice::Make(lower, upper, input.Count, cell);
-}
-
 double Median(std::vector<double> values)
 {
   if (values.empty())
@@ -93,37 +53,6 @@ double Median(std::vector<double> values)
   }
   std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
   return values[values.size() / 2];
-}
-
-/// The lattice of the grid the lines work on: cells about the distance to
-/// a point's graph neighbors (measured on a thousand of the points, on a
-/// first grid of cells one neighborhood wide), so that the nearest-neighbor
-/// query every point makes visits a few dozen points, not a neighborhood's
-/// thousands.
-GridLattice GraphLattice(const LineInput& input, const LineSettings& settings, WorkRunner* runner)
-{
-  const GridLattice coarse = PointLattice(input, settings);
-  PointGrid grid;
-  grid.Build(input.Points, input.Count, coarse, runner);
-  std::vector<double> distances, scratch;
-  const std::int64_t step = std::max<std::int64_t>(1, input.Count / 1024);
-  for (std::int64_t i = 0; i < input.Count; i += step)
-  {
-    distances.push_back(
-      grid.SquaredDistanceToKth(input.Points + 3 * i, settings.GraphNeighbors + 1, scratch));
-  }
-  const double cell = 1.5 * std::sqrt(Median(distances));
-  if (!(cell > 0.0) || !(cell < coarse.CellSize))
-  {
-    return coarse;
-  }
-  double lower[3], upper[3];
-  for (int k = 0; k < 3; ++k)
-  {
-    lower[k] = coarse.Origin[k];
-    upper[k] = coarse.Origin[k] + (coarse.LastCell[k] + 1.0) * coarse.CellSize;
-  }
-  return GridLattice::Make(lower, upper, input.Count, cell);
 }
 
 /// A traced line with its length and strength.
@@ -149,32 +78,84 @@ CurvatureLine Measure(const TracedLine& traced)
   return line;
 }
 
+/// Whether every process's input is good; throws the local error, or one
+/// naming another process, when some is not. Collective.
+void AgreeOnInput(const LineInput& input,
+  const LineSettings& settings,
+  const Collectives& processes)
+{
+  std::string problem;
+  try
+  {
+    CheckInput(input, settings);
+  }
+  catch (const LineInputError& error)
+  {
+    problem = error.what();
+  }
+  if (processes.Min(problem.empty() ? 1 : 0) == 0)
+  {
+    throw LineInputError(
+      problem.empty() ? "curvature lines: bad input on another process" : problem);
+  }
+}
+
+/// The median neighborhood radius of the own points that were fitted.
+double MedianRadius(const LineInput& local,
+  const PointDerivatives& derivatives,
+  const Collectives& processes)
+{
+  std::vector<double> radii;
+  for (std::int64_t i = 0; i < local.Count; ++i)
+  {
+    if (derivatives.Fitted[i] && (!local.Owned || local.Owned[i]))
+    {
+      radii.push_back(derivatives.Radius[i]);
+    }
+  }
+  return GlobalMedian(std::move(radii), processes);
+}
+
 } // namespace
 
 LineResult ExtractCurvatureLines(const LineInput& input,
   const LineSettings& settings,
   WorkRunner* runner)
 {
-  CheckInput(input, settings);
+  return ExtractCurvatureLines(input, settings, Collectives(), runner);
+}
+
+LineResult ExtractCurvatureLines(const LineInput& input,
+  const LineSettings& settings,
+  const Collectives& processes,
+  WorkRunner* runner)
+{
+  AgreeOnInput(input, settings, processes);
   LineResult result;
-  if (input.Count == 0)
+  const LineCloud cloud = GatherLineCloud(input, settings, processes);
+  if (cloud.GlobalCount == 0)
   {
     return result;
   }
-  PointGrid grid;
-  grid.Build(input.Points, input.Count, GraphLattice(input, settings, runner), runner);
-  const PointDerivatives derivatives = FitDerivatives(input, settings, grid, runner);
-  std::vector<double> radii;
-  for (std::int64_t i = 0; i < input.Count; ++i)
+  LineInput local = cloud.AsInput();
+  const GraphScale scale = MeasureGraphScale(cloud, settings, processes, runner);
+  local.TypicalRadius = scale.TypicalRadius;
+  PointDerivatives derivatives;
+  std::vector<LineCrossing> own;
+  if (local.Count > 0)
   {
-    if (derivatives.Fitted[i])
-    {
-      radii.push_back(derivatives.Radius[i]);
-    }
+    PointGrid grid;
+    grid.Build(local.Points, local.Count, scale.Lattice, runner);
+    derivatives = FitDerivatives(local, settings, grid, runner);
+    own = FindCrossings(local, settings, derivatives, grid.GetSortedIds(), runner);
   }
-  result.MedianRadius = Median(radii);
-  const std::vector<LineCrossing> crossings =
-    FindCrossings(input, settings, derivatives, grid.GetSortedIds(), runner);
+  result.MedianRadius = MedianRadius(local, derivatives, processes);
+  // Few against the points: traced on one process, in one order.
+  const std::vector<LineCrossing> crossings = GatherCrossings(own, processes);
+  if (processes.GetLocalProcessId() != 0)
+  {
+    return result;
+  }
   result.Crossings = static_cast<std::int64_t>(crossings.size());
   std::vector<double> edges;
   for (const LineCrossing& c : crossings)

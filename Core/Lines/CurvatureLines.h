@@ -23,6 +23,7 @@
 
 namespace pcurv
 {
+class Collectives;
 
 struct CurvatureLine
 {
@@ -45,6 +46,16 @@ struct LineResult
 /// does not depend on `runner` (which runs the per-point fits).
 LineResult ExtractCurvatureLines(const LineInput& input,
   const LineSettings& settings,
+  WorkRunner* runner = nullptr);
+
+/// The same, in a distributed run where `input` is this process's part
+/// of the cloud (any part: a spatial piece, every n-th point, none): the
+/// lines of the whole cloud, the same to the last bit as a serial run's,
+/// returned on process 0 (the others get none, and Crossings and
+/// ShortLines 0). Every process must call it. Collective.
+LineResult ExtractCurvatureLines(const LineInput& input,
+  const LineSettings& settings,
+  const Collectives& processes,
   WorkRunner* runner = nullptr);
 
 } // namespace pcurv

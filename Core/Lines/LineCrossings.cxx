@@ -166,7 +166,7 @@ std::vector<LineCrossing> FindCrossings(const LineInput& input,
         for (std::int64_t j = b * Block; j < std::min(input.Count, (b + 1) * Block); ++j)
         {
           const std::int64_t p = order[j];
-          if (!derivatives.Fitted[p])
+          if (!derivatives.Fitted[p] || (input.Owned && !input.Owned[p]))
           {
             continue;
           }

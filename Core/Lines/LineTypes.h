@@ -73,6 +73,12 @@ struct LineInput
   /// the shared fits' anchors; 0: the median of the points' radii. A
   /// distributed caller passes the same value on every process.
   double TypicalRadius = 0.0;
+  /// Optional (a distributed run): nonzero at this process's own points.
+  /// The others, its halo, lend their curvatures to the fits and their
+  /// derivatives to the edges of own points; only the graph edges an own
+  /// point crosses (FindCrossings) give crossings here, so that each edge
+  /// is crossed by one process.
+  const unsigned char* Owned = nullptr;
 };
 
 struct LineSettings
