@@ -2,6 +2,7 @@
 
 #include "Cloud/Collectives.h"
 #include "Cloud/Halo.h"
+#include "Lines/LineDerivatives.h"
 #include "Neighbors/PointGrid.h"
 
 #include <algorithm>
@@ -218,34 +219,35 @@ GridLattice CommonLattice(const LineInput& own,
 /// The largest neighborhood radius of any process's points (an upper bound
 /// where the radii are not given: the distance to the RadiusNeighbors-th
 /// nearest own point, infinite on a process with fewer points).
-double LargestRadius(const LineInput& own,
+/// The largest fit radius of the own points (GrownFitRadius), at least:
+/// their graph reach is measured among the own points alone, which can
+/// only lengthen it.
+double LargestFitRadius(const LineInput& own,
   const LineSettings& settings,
   bool hasRadius,
   const GridLattice& lattice,
   const Collectives& processes)
 {
   double largest = 0.0;
-  if (hasRadius)
-  {
-    for (std::int64_t i = 0; i < own.Count; ++i)
-    {
-      if (std::isfinite(own.Radius[i]))
-      {
-        largest = std::max(largest, own.Radius[i]);
-      }
-    }
-  }
-  else if (own.Count > settings.RadiusNeighbors)
+  if (own.Count > std::max(settings.RadiusNeighbors, settings.GraphNeighbors))
   {
     PointGrid grid;
     grid.Build(own.Points, own.Count, lattice);
     std::vector<double> scratch;
     for (std::int64_t i = 0; i < own.Count; ++i)
     {
-      largest = std::max(
-        largest, grid.SquaredDistanceToKth(own.Points + 3 * i, settings.RadiusNeighbors, scratch));
+      const double* x = own.Points + 3 * i;
+      const double radius = hasRadius
+        ? own.Radius[i]
+        : std::sqrt(grid.SquaredDistanceToKth(x, settings.RadiusNeighbors, scratch));
+      const double graphReach =
+        std::sqrt(grid.SquaredDistanceToKth(x, settings.GraphNeighbors + 1, scratch));
+      const double fit = GrownFitRadius(radius * settings.FitRadius, graphReach, settings);
+      if (std::isfinite(fit))
+      {
+        largest = std::max(largest, fit);
+      }
     }
-    largest = std::sqrt(largest);
   }
   else if (own.Count > 0)
   {
@@ -290,8 +292,7 @@ LineCloud GatherLineCloud(const LineInput& own,
     // within R of it and is chosen among the points of its cell, each
     // with its graph row; and the grid's cells those queries visit must
     // be whole.
-    const double radius = LargestRadius(own, settings, hasRadius, lattice, processes) *
-      std::max(1.0, settings.FitRadius);
+    const double radius = LargestFitRadius(own, settings, hasRadius, lattice, processes);
     const double cells = settings.AnchorSpacing * radius + lattice.CellSize;
     const double reach = (3.0 * radius + std::sqrt(3.0) * cells) * (1.0 + 1e-9);
     halo = ExchangeHaloRecords(

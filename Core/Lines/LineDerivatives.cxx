@@ -257,14 +257,9 @@ public:
     const double ratio = role.FitRadius / graphReach;
     const double within = this->Out.GraphWidth * ratio * ratio;
     role.Dense = graphReach > 0.0 && within >= this->Settings.SharedFitPoints;
-    const double least = this->Settings.MinimumFitPoints;
-    if (graphReach > 0.0 && within < least)
-    {
-      // A clean cloud's curvatures come from a few dozen neighbors: their
-      // derivatives need a wider fit than they did.
-      role.FitRadius *= std::sqrt(least / within);
-    }
-    role.Shareable = graphReach > 0.0 && std::max(within, least) >= this->Settings.SharedFitPoints;
+    role.FitRadius = GrownFitRadius(role.FitRadius, graphReach, this->Settings);
+    role.Shareable = graphReach > 0.0 &&
+      std::max<double>(within, this->Settings.MinimumFitPoints) >= this->Settings.SharedFitPoints;
   }
 
 private:
@@ -396,6 +391,18 @@ void FitAnchors(const LineInput& input,
 }
 
 } // namespace
+
+double GrownFitRadius(double fitRadius, double graphReach, const LineSettings& settings)
+{
+  // About GraphNeighbors points lie within graphReach, so about
+  // GraphNeighbors (R / graphReach)^2 within R on a surface. A clean
+  // cloud's curvatures come from a few dozen neighbors: their derivatives
+  // need a wider fit than they did.
+  const double least = graphReach *
+    std::sqrt(
+      static_cast<double>(settings.MinimumFitPoints) / std::max(1, settings.GraphNeighbors));
+  return graphReach > 0.0 ? std::max(fitRadius, least) : fitRadius;
+}
 
 PointDerivatives FitDerivatives(const LineInput& input,
   const LineSettings& settings,

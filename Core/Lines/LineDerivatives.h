@@ -51,6 +51,12 @@ struct PointDerivatives
   int GraphWidth = 0;
 };
 
+/// The radius of a point's fit: `fitRadius` (its neighborhood radius times
+/// LineSettings::FitRadius), grown to hold about MinimumFitPoints where
+/// its GraphNeighbors nearest points, within `graphReach`, say it holds
+/// fewer.
+double GrownFitRadius(double fitRadius, double graphReach, const LineSettings& settings);
+
 /// Fits every point of `input` over its neighbors in `grid` (built on
 /// input.Points).
 PointDerivatives FitDerivatives(const LineInput& input,
