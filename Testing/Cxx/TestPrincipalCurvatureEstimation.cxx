@@ -419,13 +419,10 @@ void TestSignsAndNormals(Checks& checks)
   checks.Near("fixed thresholds reported", fixed->GetUsedSurroundingsThreshold(), 0.5, 0.0);
 }
 
-/// 1 and 2 threads give bit-identical arrays. Under the sanitizers, which
-/// look for memory errors rather than for differences, a third of the
-/// points: still many work chunks (1024 points each) per thread, in every
-/// mode; the plain build compares the full size.
+/// 1 and 2 threads give bit-identical arrays.
 void TestThreadIndependence(Checks& checks)
 {
-  auto cloud = MakeCloud(Sample(Torus(3.0, 1.0), UnderSanitizers ? 10000 : 30000, 13));
+  auto cloud = MakeCloud(Sample(Torus(3.0, 1.0), 30000, 13));
   for (int mode = 0; mode < 3; ++mode)
   {
     auto one = Run(cloud, mode, 1);
