@@ -10,48 +10,41 @@
 #   RunAbortTest.sh PARAVIEW PLUGIN SCREENSHOT.png
 set -u
 paraview=$1 plugin=$2 screenshot=$3
-here=$(cd "$(dirname "$0")" && pwd)
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-export GUI_TEST_PLUGIN=$plugin GUI_TEST_MARKER=$work/marker GUI_TEST_WORK=$work
-mkdir -p "$(dirname "$screenshot")"
-rm -f "$screenshot"
+source "$(dirname "$0")/GuiHarness.sh"
+gui_init "$screenshot"
+export GUI_TEST_PLUGIN=$plugin
 
-xvfb-run -a -s "-screen 0 1600x1000x24" bash -c '
-  "$0" --dr --script="$1" > "$GUI_TEST_WORK/paraview.log" 2>&1 &
-  pid=$!
-  for i in $(seq 1 120); do [ -s "$GUI_TEST_MARKER.running" ] && break; sleep 1; done
+gui_drive() {
+  gui_wait_for "$GUI_TEST_MARKER.running"
   sleep 4
-  import -window root "$2"
+  gui_capture "$screenshot"
   window=$(xdotool search --onlyvisible --name "ParaView" | head -n 1)
+  [ -n "$window" ] || return
   eval "$(xdotool getwindowgeometry --shell "$window")"
-  echo "window $X $Y $WIDTH $HEIGHT" > "$GUI_TEST_WORK/geometry"
+  echo "window $X $Y $WIDTH $HEIGHT" > "$work/geometry"
   # The status bar: the bottom 30 rows of the window. The Abort button is
   # the only red there, and only while it is enabled.
-  convert "$2" -crop "${WIDTH}x30+${X}+$((Y + HEIGHT - 30))" +repage txt:- |
-    awk -F"[(),: ]+" -v x0="$X" -v y0="$((Y + HEIGHT - 30))" "
-      /^[0-9]/ { if (\$3 > 180 && \$4 < 90 && \$5 < 90) { n++; sx += \$1; sy += \$2 } }
-      END { if (n) printf \"%d %d %d\n\", x0 + sx / n, y0 + sy / n, n }" > "$GUI_TEST_WORK/button"
-  if [ -s "$GUI_TEST_WORK/button" ]; then
-    read -r bx by pixels < "$GUI_TEST_WORK/button"
+  convert "$screenshot" -crop "${WIDTH}x30+${X}+$((Y + HEIGHT - 30))" +repage txt:- |
+    awk -F"[(),: ]+" -v x0="$X" -v y0="$((Y + HEIGHT - 30))" '
+      /^[0-9]/ { if ($3 > 180 && $4 < 90 && $5 < 90) { n++; sx += $1; sy += $2 } }
+      END { if (n) printf "%d %d %d\n", x0 + sx / n, y0 + sy / n, n }' > "$work/button"
+  if [ -s "$work/button" ]; then
+    read -r bx by pixels < "$work/button"
     xdotool mousemove "$bx" "$by"
     # The click lies between these two times. xdotool click waits its
     # --delay (100 ms unless given) after the last click too, and the
     # driver shares the cores with the run: the run may return, and the GUI
     # log it, before the second time is taken.
-    date +%s.%N > "$GUI_TEST_WORK/clicking"
+    date +%s.%N > "$work/clicking"
     xdotool click --delay 0 1
-    date +%s.%N > "$GUI_TEST_WORK/clicked"
+    date +%s.%N > "$work/clicked"
   fi
-  for i in $(seq 1 150); do [ -s "$GUI_TEST_MARKER" ] && break; sleep 1; done
-  kill "$pid" 2>/dev/null
-  wait "$pid" 2>/dev/null
-  exit 0' "$paraview" "$here/abort_script.py" "$screenshot"
+  gui_wait_for "$GUI_TEST_MARKER"
+}
+gui_run "$paraview" --dr --script="$here/abort_script.py"
 
 status=0
-marker=$(cat "$GUI_TEST_MARKER" 2>/dev/null || echo "no marker: the GUI script did not finish")
-echo "GUI script: $marker"
-case "$marker" in ok*) ;; *) status=1; tail -n 20 "$work/paraview.log" ;; esac
+gui_read_marker 'ok*' || status=1
 cat "$work/geometry" 2>/dev/null
 if [ -s "$work/button" ]; then
   read -r bx by pixels < "$work/button"

@@ -9,8 +9,8 @@
 #   RunCommandLineLasTest.sh PARAVIEW PLUGINS_XML
 set -u
 paraview=$1 plugins_xml=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+source "$(dirname "$0")/GuiHarness.sh"
+gui_init
 export PV_PLUGIN_CONFIG_FILE=$plugins_xml
 
 # LAS 1.2, point format 0: a 20 x 20 grid of points.
@@ -28,21 +28,17 @@ with open(sys.argv[1], "wb") as handle:
     handle.write(bytes(header) + records)
 PYTHON
 
-xvfb-run -a -s "-screen 0 1600x1000x24" bash -c '
-  "$0" --dr "$1" > "$2/paraview.log" 2>&1 &
-  pid=$!
-  window=$(timeout 120 xdotool search --sync --onlyvisible --name "ParaView" | head -n 1)
-  [ -n "$window" ] && xdotool windowmove "$window" 0 0 windowsize "$window" 1600 1000
+# No script to write a marker: the window's showing, then time to read.
+gui_drive() {
+  gui_place_window
   sleep 15
-  import -window root "$2/screen.png"
-  kill "$pid" 2>/dev/null
-  wait "$pid" 2>/dev/null
-  exit 0' "$paraview" "$work/scan.las" "$work"
+  gui_capture "$work/screen.png"
+}
+gui_run "$paraview" --dr "$work/scan.las"
 
 status=0
 if [ ! -s "$work/screen.png" ]; then
   echo "FAILED: no screenshot"
-  tail -n 20 "$work/paraview.log"
   exit 1
 fi
 # The pipeline browser (top left), enlarged for OCR: the reader's entry.

@@ -10,53 +10,43 @@
 #   RunCurvatureLinesTest.sh PARAVIEW PLUGIN SCREENSHOT.png
 set -u
 paraview=$1 plugin=$2 screenshot=$3
-here=$(cd "$(dirname "$0")" && pwd)
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-export GUI_TEST_PLUGIN=$plugin GUI_TEST_MARKER=$work/marker GUI_TEST_WORK=$work
-mkdir -p "$(dirname "$screenshot")"
-rm -f "$screenshot"
+source "$(dirname "$0")/GuiHarness.sh"
+gui_init "$screenshot"
+export GUI_TEST_PLUGIN=$plugin
 
-xvfb-run -a -s "-screen 0 1600x1000x24" bash -c '
-  apply() {
-    xdotool windowfocus --sync "$window"
-    xdotool key --clearmodifiers alt+a
-    sleep 8
-  }
-  # Creates a filter on the active source through the quick launch.
-  quick_launch() {
-    xdotool windowfocus --sync "$window"
-    xdotool key --clearmodifiers ctrl+space
-    sleep 2
-    xdotool type --delay 80 "$1"
-    sleep 2
-    xdotool key Return
-    sleep 3
-  }
-  "$0" --dr --script="$1" > "$GUI_TEST_WORK/paraview.log" 2>&1 &
-  pid=$!
-  for i in $(seq 1 120); do [ -s "$GUI_TEST_MARKER" ] && break; sleep 1; done
-  window=$(xdotool search --sync --onlyvisible --name "ParaView" | head -n 1)
-  if [ -n "$window" ]; then
-    xdotool windowmove "$window" 0 0 windowsize "$window" 1600 1000
+apply() {
+  xdotool windowfocus --sync "$window"
+  xdotool key --clearmodifiers alt+a
+  sleep 8
+}
+# Creates a filter on the active source through the quick launch.
+quick_launch() {
+  xdotool windowfocus --sync "$window"
+  xdotool key --clearmodifiers ctrl+space
+  sleep 2
+  xdotool type --delay 80 "$1"
+  sleep 2
+  xdotool key Return
+  sleep 3
+}
+gui_drive() {
+  gui_wait_for "$GUI_TEST_MARKER"
+  if gui_place_window; then
     sleep 3
     apply
     quick_launch "principal"
     apply
     quick_launch "curvature lines"
     apply
-    for i in $(seq 1 60); do grep -q "^lines shown" "$GUI_TEST_WORK/state" 2>/dev/null && break; sleep 1; done
+    for i in $(seq 1 60); do grep -q "^lines shown" "$work/state" 2>/dev/null && break; sleep 1; done
     sleep 3
-    import -window root "$2"
+    gui_capture "$screenshot"
   fi
-  kill "$pid" 2>/dev/null
-  wait "$pid" 2>/dev/null
-  exit 0' "$paraview" "$here/curvature_lines_script.py" "$screenshot"
+}
+gui_run "$paraview" --dr --script="$here/curvature_lines_script.py"
 
 status=0
-marker=$(cat "$GUI_TEST_MARKER" 2>/dev/null || echo "no marker: the GUI script did not run")
-echo "GUI script: $marker"
-case "$marker" in ready*) ;; *) tail -n 20 "$work/paraview.log"; exit 1 ;; esac
+gui_read_marker 'ready*' || exit 1
 state=$(cat "$work/state" 2>/dev/null)
 echo "after the last Apply:"
 sed "s/^/  /" <<< "$state"

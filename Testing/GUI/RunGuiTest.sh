@@ -7,29 +7,13 @@
 #   RunGuiTest.sh PARAVIEW PLUGIN CLOUD SCREENSHOT.png
 set -u
 paraview=$1 plugin=$2 cloud=$3 screenshot=$4
-here=$(cd "$(dirname "$0")" && pwd)
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-export GUI_TEST_PLUGIN=$plugin GUI_TEST_CLOUD=$cloud GUI_TEST_MARKER=$work/marker
-mkdir -p "$(dirname "$screenshot")"
-rm -f "$screenshot"
-
-xvfb-run -a -s "-screen 0 1600x1000x24" bash -c '
-  "$0" --dr --script="$1" > "$2/paraview.log" 2>&1 &
-  pid=$!
-  for i in $(seq 1 120); do [ -s "$GUI_TEST_MARKER" ] && break; sleep 1; done
-  window=$(xdotool search --sync --onlyvisible --name "ParaView" | head -n 1)
-  [ -n "$window" ] && xdotool windowmove "$window" 0 0 windowsize "$window" 1600 1000
-  sleep 5
-  import -window root "$3"
-  kill "$pid" 2>/dev/null
-  wait "$pid" 2>/dev/null
-  exit 0' "$paraview" "$here/gui_script.py" "$work" "$screenshot"
+source "$(dirname "$0")/GuiHarness.sh"
+gui_init "$screenshot"
+export GUI_TEST_PLUGIN=$plugin GUI_TEST_CLOUD=$cloud
+gui_run "$paraview" --dr --script="$here/gui_script.py"
 
 status=0
-marker=$(cat "$GUI_TEST_MARKER" 2>/dev/null || echo "no marker: the GUI script did not run")
-echo "GUI script: $marker"
-case "$marker" in ok*) ;; *) status=1; tail -n 20 "$work/paraview.log" ;; esac
+gui_read_marker 'ok*' || status=1
 # A normals-less .xyz: read by the plugin's reader, normals estimated.
 case "$marker" in *"reader ASCIIPointCloudReader, normals estimated True, colored by Mean_Curvature_Clipped, representation 'Points'"*) ;;
   *) echo "FAILED: the .xyz was not read by the plugin's reader with estimated normals and shown as points colored by Mean_Curvature_Clipped"; status=1 ;; esac

@@ -9,53 +9,40 @@
 #   RunHelpTest.sh PARAVIEW PLUGIN SCREENSHOT.png
 set -u
 paraview=$1 plugin=$2 screenshot=$3
-here=$(cd "$(dirname "$0")" && pwd)
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-export GUI_TEST_PLUGIN=$plugin GUI_TEST_MARKER=$work/marker GUI_TEST_WORK=$work
-mkdir -p "$(dirname "$screenshot")"
-rm -f "$screenshot"
+source "$(dirname "$0")/GuiHarness.sh"
+gui_init "$screenshot"
+export GUI_TEST_PLUGIN=$plugin
 
-xvfb-run -a -s "-screen 0 1600x1000x24" bash -c '
-  "$0" --dr --script="$1" > "$GUI_TEST_WORK/paraview.log" 2>&1 &
-  pid=$!
-  for i in $(seq 1 120); do [ -s "$GUI_TEST_MARKER" ] && break; sleep 1; done
-  window=$(xdotool search --sync --onlyvisible --name "ParaView" | head -n 1)
-  if [ -n "$window" ]; then
-    xdotool windowmove "$window" 0 0 windowsize "$window" 1600 1000
+gui_drive() {
+  gui_wait_for "$GUI_TEST_MARKER"
+  if gui_place_window; then
     sleep 5
-    import -window root "$GUI_TEST_WORK/before.png"
+    gui_capture "$work/before.png"
     # The panel buttons Apply, Reset, Delete, ?: the word Delete by OCR
     # (tsv: left top width height of each word), at three times the size.
-    convert "$GUI_TEST_WORK/before.png" -crop 500x1000+0+0 +repage -resize 300% \
-      -colorspace Gray "$GUI_TEST_WORK/left.png"
-    tesseract "$GUI_TEST_WORK/left.png" - tsv 2>/dev/null |
-      awk -F "\t" "\$12 == \"Delete\" { print int((\$7 + \$9) / 3), int((\$8 + \$10 / 2) / 3); exit }" \
-      > "$GUI_TEST_WORK/delete"
-    read -r dx dy < "$GUI_TEST_WORK/delete"
+    convert "$work/before.png" -crop 500x1000+0+0 +repage -resize 300% -colorspace Gray "$work/left.png"
+    tesseract "$work/left.png" - tsv 2>/dev/null |
+      awk -F "\t" '$12 == "Delete" { print int(($7 + $9) / 3), int(($8 + $10 / 2) / 3); exit }' \
+      > "$work/delete"
+    read -r dx dy < "$work/delete"
     if [ -n "${dx:-}" ]; then
       # The "?" button: right of the Delete button, whose text ends about
       # 12 pixels before its edge; the ? button is about 26 pixels wide.
-      echo "$dx $dy" > "$GUI_TEST_WORK/clicked"
+      echo "$dx $dy" > "$work/clicked"
       xdotool mousemove $((dx + 27)) "$dy" click 1
-      help=$(timeout 60 xdotool search --sync --onlyvisible --name "Online Help" | head -n 1)
-      if [ -n "$help" ]; then
-        xdotool windowmove "$help" 0 0 windowsize "$help" 1600 1000
+      if gui_place_window "Online Help"; then
         sleep 5
-        import -window root "$2"
-        echo found > "$GUI_TEST_WORK/help_window"
+        gui_capture "$screenshot"
+        echo found > "$work/help_window"
       fi
     fi
   fi
-  [ -s "$2" ] || import -window root "$2"
-  kill "$pid" 2>/dev/null
-  wait "$pid" 2>/dev/null
-  exit 0' "$paraview" "$here/help_script.py" "$screenshot"
+  [ -s "$screenshot" ] || gui_capture "$screenshot"
+}
+gui_run "$paraview" --dr --script="$here/help_script.py"
 
 status=0
-marker=$(cat "$GUI_TEST_MARKER" 2>/dev/null || echo "no marker: the GUI script did not run")
-echo "GUI script: $marker"
-case "$marker" in ready*) ;; *) tail -n 20 "$work/paraview.log"; exit 1 ;; esac
+gui_read_marker 'ready*' || exit 1
 if [ -s "$work/clicked" ]; then
   echo "clicked the ? right of Delete at $(cat "$work/clicked")"
 else

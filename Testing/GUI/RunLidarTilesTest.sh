@@ -12,49 +12,32 @@
 #   RunLidarTilesTest.sh PARAVIEW PLUGIN SCREENSHOT.png
 set -u
 paraview=$1 plugin=$2 screenshot=$3
-here=$(cd "$(dirname "$0")" && pwd)
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-export GUI_TEST_PLUGIN=$plugin GUI_TEST_MARKER=$work/marker GUI_TEST_WORK=$work
-mkdir -p "$(dirname "$screenshot")"
-rm -f "$screenshot"
+source "$(dirname "$0")/GuiHarness.sh"
+gui_init "$screenshot"
+export GUI_TEST_PLUGIN=$plugin
 
-xvfb-run -a -s "-screen 0 1600x1000x24" bash -c '
-  # Opens a file through File > Open, then applies it.
-  open_and_apply() {
-    xdotool windowfocus --sync "$window"
-    xdotool key --clearmodifiers ctrl+o
-    dialog=$(timeout 60 xdotool search --sync --onlyvisible --name "Open File" | head -n 1)
-    [ -n "$dialog" ] || { echo "no Open File dialog for $1" >> "$GUI_TEST_WORK/events"; return; }
-    sleep 2
-    xdotool type --delay 40 "$1"
-    sleep 1
-    xdotool key Return
-    sleep 5
-    xdotool windowfocus --sync "$window"
-    xdotool key --clearmodifiers alt+a
-    sleep 6
-  }
-  "$0" --dr --script="$1" > "$GUI_TEST_WORK/paraview.log" 2>&1 &
-  pid=$!
-  for i in $(seq 1 120); do [ -s "$GUI_TEST_MARKER" ] && break; sleep 1; done
-  window=$(xdotool search --sync --onlyvisible --name "ParaView" | head -n 1)
-  if [ -n "$window" ]; then
-    xdotool windowmove "$window" 0 0 windowsize "$window" 1600 1000
-    sleep 3
-    open_and_apply "$GUI_TEST_WORK/tile_west.las"
-    cp "$GUI_TEST_WORK/state" "$GUI_TEST_WORK/state_first" 2>/dev/null
-    open_and_apply "$GUI_TEST_WORK/tile_east.las"
-    import -window root "$2"
-  fi
-  kill "$pid" 2>/dev/null
-  wait "$pid" 2>/dev/null
-  exit 0' "$paraview" "$here/lidar_tiles_script.py" "$screenshot"
+# Opens a file through File > Open, then applies it.
+open_and_apply() {
+  gui_type_in_dialog "Open File" ctrl+o "$1" ||
+    { echo "no Open File dialog for $1" >> "$work/events"; return; }
+  sleep 5
+  xdotool windowfocus --sync "$window"
+  xdotool key --clearmodifiers alt+a
+  sleep 6
+}
+gui_drive() {
+  gui_wait_for "$GUI_TEST_MARKER"
+  gui_place_window || return
+  sleep 3
+  open_and_apply "$work/tile_west.las"
+  cp "$work/state" "$work/state_first" 2>/dev/null
+  open_and_apply "$work/tile_east.las"
+  gui_capture "$screenshot"
+}
+gui_run "$paraview" --dr --script="$here/lidar_tiles_script.py"
 
 status=0
-marker=$(cat "$GUI_TEST_MARKER" 2>/dev/null || echo "no marker: the GUI script did not run")
-echo "GUI script: $marker"
-case "$marker" in ready*) ;; *) tail -n 20 "$work/paraview.log"; exit 1 ;; esac
+gui_read_marker 'ready*' || exit 1
 if [ -s "$work/events" ]; then
   sed "s/^/FAILED: /" "$work/events"
   status=1

@@ -9,20 +9,13 @@
 #   RunQuickLaunchTest.sh PARAVIEW PLUGIN CLOUD SCREENSHOT.png
 set -u
 paraview=$1 plugin=$2 cloud=$3 screenshot=$4
-here=$(cd "$(dirname "$0")" && pwd)
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-export GUI_TEST_PLUGIN=$plugin GUI_TEST_CLOUD=$cloud GUI_TEST_MARKER=$work/marker
-mkdir -p "$(dirname "$screenshot")"
-rm -f "$screenshot"
+source "$(dirname "$0")/GuiHarness.sh"
+gui_init "$screenshot"
+export GUI_TEST_PLUGIN=$plugin GUI_TEST_CLOUD=$cloud
 
-xvfb-run -a -s "-screen 0 1600x1000x24" bash -c '
-  "$0" --dr --script="$1" > "$2/paraview.log" 2>&1 &
-  pid=$!
-  for i in $(seq 1 120); do [ -s "$GUI_TEST_MARKER" ] && break; sleep 1; done
-  window=$(xdotool search --sync --onlyvisible --name "ParaView" | head -n 1)
-  if [ -n "$window" ]; then
-    xdotool windowmove "$window" 0 0 windowsize "$window" 1600 1000
+gui_drive() {
+  gui_wait_for "$GUI_TEST_MARKER"
+  if gui_place_window; then
     sleep 3
     xdotool windowfocus --sync "$window"
     xdotool key --clearmodifiers ctrl+space
@@ -32,15 +25,12 @@ xvfb-run -a -s "-screen 0 1600x1000x24" bash -c '
     xdotool key Return
     sleep 4
   fi
-  import -window root "$3"
-  kill "$pid" 2>/dev/null
-  wait "$pid" 2>/dev/null
-  exit 0' "$paraview" "$here/quick_launch_script.py" "$work" "$screenshot"
+  gui_capture "$screenshot"
+}
+gui_run "$paraview" --dr --script="$here/quick_launch_script.py"
 
 status=0
-marker=$(cat "$GUI_TEST_MARKER" 2>/dev/null || echo "no marker: the GUI script did not run")
-echo "GUI script: $marker"
-case "$marker" in ready*Normals*) ;; *) status=1; echo "FAILED: no cloud with normals"; tail -n 20 "$work/paraview.log" ;; esac
+gui_read_marker 'ready*Normals*' || { status=1; echo "FAILED: no cloud with normals"; }
 # Bad text clouds (empty, two columns, words) opened and shown in the GUI
 # by the plugin's reader, with the GUI still running afterwards.
 case "$marker" in *"bad files read by ASCIIPointCloudReader ASCIIPointCloudReader ASCIIPointCloudReader"*)

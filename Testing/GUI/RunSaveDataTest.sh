@@ -10,11 +10,8 @@
 #   RunSaveDataTest.sh PARAVIEW PLUGIN SCREENSHOT.png
 set -u
 paraview=$1 plugin=$2 screenshot=$3
-here=$(cd "$(dirname "$0")" && pwd)
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-mkdir -p "$(dirname "$screenshot")"
-rm -f "$screenshot"
+source "$(dirname "$0")/GuiHarness.sh"
+gui_init "$screenshot"
 # A 2-unit sphere of 3000 points whose first point is (637180.123456,
 # 4100000.654321, 14.25), digits that 5 significant ones would lose.
 awk 'BEGIN { n = 3000; pi = atan2(0, -1)
@@ -22,41 +19,29 @@ awk 'BEGIN { n = 3000; pi = atan2(0, -1)
   for (i = 1; i < n; ++i) { z = 1 - 2 * (i + 0.5) / n; r = sqrt(1 - z * z); phi = (i + 0.5) * pi * (3 - sqrt(5))
     printf "%.10f %.10f %.10f\n", 637180.123456 + 2 * r * cos(phi), 4100000.654321 + 2 * r * sin(phi), 12.25 + 2 * z } }' \
   > "$work/sphere.xyz"
-export GUI_TEST_PLUGIN=$plugin GUI_TEST_CLOUD=$work/sphere.xyz GUI_TEST_MARKER=$work/marker
+export GUI_TEST_PLUGIN=$plugin GUI_TEST_CLOUD=$work/sphere.xyz
 
-xvfb-run -a -s "-screen 0 1600x1000x24" bash -c '
-  "$0" --dr --script="$1" > "$2/paraview.log" 2>&1 &
-  pid=$!
-  for i in $(seq 1 120); do [ -s "$GUI_TEST_MARKER" ] && break; sleep 1; done
-  window=$(xdotool search --sync --onlyvisible --name "ParaView" | head -n 1)
-  xdotool windowmove "$window" 0 0 windowsize "$window" 1600 1000
+gui_drive() {
+  gui_wait_for "$GUI_TEST_MARKER"
+  gui_place_window
   sleep 3
   for extension in ply csv; do
-    xdotool windowfocus --sync "$window"
-    xdotool key --clearmodifiers ctrl+s
-    if ! timeout 60 xdotool search --sync --onlyvisible --name "Save File" > /dev/null; then
-      echo "no Save File dialog for .$extension" >> "$2/events"
+    if ! gui_type_in_dialog "Save File" ctrl+s "$work/saved.$extension"; then
+      echo "no Save File dialog for .$extension" >> "$work/events"
       continue
     fi
-    sleep 2
-    xdotool type --delay 40 "$2/saved.$extension"
-    sleep 1
-    xdotool key Return
     sleep 3
-    [ "$extension" = ply ] && import -window root "$3"
+    [ "$extension" = ply ] && gui_capture "$screenshot"
     if xdotool search --onlyvisible --name "Configure Writer" > /dev/null; then
       xdotool key Return
       sleep 3
     fi
   done
-  kill "$pid" 2>/dev/null
-  wait "$pid" 2>/dev/null
-  exit 0' "$paraview" "$here/gui_script.py" "$work" "$screenshot"
+}
+gui_run "$paraview" --dr --script="$here/gui_script.py"
 
 status=0
-marker=$(cat "$GUI_TEST_MARKER" 2>/dev/null || echo "no marker: the GUI script did not run")
-echo "GUI script: $marker"
-case "$marker" in ok*) ;; *) status=1; tail -n 20 "$work/paraview.log" ;; esac
+gui_read_marker 'ok*' || status=1
 [ -s "$work/events" ] && { echo "FAILED: $(cat "$work/events")"; status=1; }
 header=$(sed -n '1,/^end_header/p' "$work/saved.ply" 2>/dev/null | tr -d '\0')
 for line in "comment written by the PrincipalCurvatures plugin (vtkPLYPointCloudWriter)" \

@@ -7,29 +7,12 @@
 #   RunShapeClassTest.sh PARAVIEW PLUGIN SCREENSHOT.png
 set -u
 paraview=$1 plugin=$2 screenshot=$3
-here=$(cd "$(dirname "$0")" && pwd)
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-export GUI_TEST_PLUGIN=$plugin GUI_TEST_MARKER=$work/marker GUI_TEST_WORK=$work
-mkdir -p "$(dirname "$screenshot")"
-rm -f "$screenshot"
+source "$(dirname "$0")/GuiHarness.sh"
+gui_init "$screenshot"
+export GUI_TEST_PLUGIN=$plugin
+gui_run "$paraview" --dr --script="$here/shape_class_script.py"
 
-xvfb-run -a -s "-screen 0 1600x1000x24" bash -c '
-  "$0" --dr --script="$1" > "$GUI_TEST_WORK/paraview.log" 2>&1 &
-  pid=$!
-  for i in $(seq 1 120); do [ -s "$GUI_TEST_MARKER" ] && break; sleep 1; done
-  window=$(xdotool search --sync --onlyvisible --name "ParaView" | head -n 1)
-  [ -n "$window" ] && xdotool windowmove "$window" 0 0 windowsize "$window" 1600 1000
-  sleep 5
-  import -window root "$2"
-  kill "$pid" 2>/dev/null
-  wait "$pid" 2>/dev/null
-  exit 0' "$paraview" "$here/shape_class_script.py" "$screenshot"
-
-marker=$(cat "$GUI_TEST_MARKER" 2>/dev/null || echo "no marker: the GUI script did not run")
-echo "GUI script:"
-echo "$marker"
-case "$marker" in ok*) ;; *) tail -n 20 "$work/paraview.log"; exit 1 ;; esac
+gui_read_marker 'ok*' || exit 1
 status=0
 expect() {
   if grep -qx "$1" <<< "$marker"; then echo "as expected: $1"; else echo "FAILED: expected '$1'"; status=1; fi

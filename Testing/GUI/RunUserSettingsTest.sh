@@ -10,10 +10,9 @@
 #   RunUserSettingsTest.sh PARAVIEW PLUGIN
 set -u
 paraview=$1 plugin=$2
-here=$(cd "$(dirname "$0")" && pwd)
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-export GUI_TEST_PLUGIN=$plugin GUI_TEST_MARKER=$work/marker GUI_TEST_WORK=$work
+source "$(dirname "$0")/GuiHarness.sh"
+gui_init
+export GUI_TEST_PLUGIN=$plugin
 export HOME=$work/home XDG_CONFIG_HOME=$work/home/.config
 settings=$XDG_CONFIG_HOME/ParaView/ParaView-UserSettings.json
 mkdir -p "$(dirname "$settings")"
@@ -27,10 +26,8 @@ cat > "$settings" <<'JSON'
 }
 JSON
 
-xvfb-run -a -s "-screen 0 1600x1000x24" bash -c '
-  "$0" --script="$1" > "$GUI_TEST_WORK/paraview.log" 2>&1 &
-  pid=$!
-  for i in $(seq 1 120); do [ -s "$GUI_TEST_MARKER" ] && break; sleep 1; done
+gui_drive() {
+  gui_wait_for "$GUI_TEST_MARKER"
   sleep 3
   # A first start with these settings shows the welcome dialog.
   welcome=$(xdotool search --onlyvisible --name "Welcome to ParaView" | head -n 1)
@@ -41,31 +38,17 @@ xvfb-run -a -s "-screen 0 1600x1000x24" bash -c '
   fi
   window=$(xdotool search --onlyvisible --name "ParaView 5" | head -n 1)
   if [ -n "$window" ]; then
-    xdotool windowfocus --sync "$window"
-    xdotool key --clearmodifiers ctrl+o
-    dialog=$(timeout 60 xdotool search --sync --onlyvisible --name "Open File" | head -n 1)
-    if [ -n "$dialog" ]; then
-      sleep 2
-      xdotool type --delay 40 "$GUI_TEST_WORK/scan.xyz"
-      sleep 1
-      xdotool key Return
-      sleep 6
-    fi
+    gui_type_in_dialog "Open File" ctrl+o "$work/scan.xyz" && sleep 6
     xdotool windowfocus --sync "$window"
     xdotool key --clearmodifiers ctrl+q
   fi
-  for i in $(seq 1 60); do kill -0 "$pid" 2>/dev/null || break; sleep 1; done
-  if kill -0 "$pid" 2>/dev/null; then
-    echo "ParaView did not quit" > "$GUI_TEST_WORK/not_quit"
-    kill "$pid"
-  fi
-  wait "$pid" 2>/dev/null
-  exit 0' "$paraview" "$here/file_open_script.py"
+  gui_wait_exit 60 || echo "ParaView did not quit" > "$work/not_quit"
+}
+# No --dr: the user's settings are read.
+gui_run "$paraview" --script="$here/file_open_script.py"
 
 status=0
-marker=$(cat "$GUI_TEST_MARKER" 2>/dev/null || echo "no marker: the GUI script did not run")
-echo "GUI script: $marker"
-case "$marker" in ready*) ;; *) tail -n 20 "$work/paraview.log"; exit 1 ;; esac
+gui_read_marker 'ready*' || exit 1
 if grep -q "^xyzreader .*scan\.xyz$" "$work/sources" 2>/dev/null; then
   echo "scan.xyz opened with the user's default, the XYZ Reader"
 else
