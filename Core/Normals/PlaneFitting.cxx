@@ -62,72 +62,14 @@ struct QuadricSystem
   }
 };
 
-/// The variance of the neighbors' heights about a quadric over the PCA
-/// plane (axes: the covariance's eigenvectors): the noise alone, where the
-/// plane's own residual also holds the surface's bending, which is no
-/// error of the plane's normal.
-double NoiseVariance(const NeighborOffsets& offsets,
-  double inverseRadius,
-  const Eigen::Matrix3d& axes)
-{
-  if (offsets.Count <= 6)
-  {
-    return std::numeric_limits<double>::infinity();
-  }
-  const QuadricSystem system(offsets, inverseRadius, axes);
-  return system.ResidualVariance(system.Normal.ldlt().solve(system.Right), offsets.Count);
-}
-
-/// The normal at the point itself of a quadric fitted to the neighbors'
-/// heights over the plane whose normal is axes.col(0): the PCA plane's
-/// normal is the surface's near the neighbors' centroid, which a one-sided
-/// neighborhood (a boundary) moves away from the point, the quadric's is
-/// the point's. Writes it to `normal` and returns its standard error in
-/// radians (from the slopes' covariance), infinite where the fit is
-/// undetermined (`normal` then unchanged).
-double QuadricNormal(const NeighborOffsets& offsets,
-  double inverseRadius,
-  const Eigen::Matrix3d& axes,
-  double* normal)
-{
-  if (offsets.Count <= 6)
-  {
-    return std::numeric_limits<double>::infinity();
-  }
-  const QuadricSystem system(offsets, inverseRadius, axes);
-  const Eigen::LDLT<QuadricSystem::Matrix6> factors(system.Normal);
-  const QuadricSystem::Vector6 pivots = factors.vectorD();
-  if (factors.info() != Eigen::Success || !(pivots.minCoeff() > 1e-12 * pivots.maxCoeff()))
-  {
-    return std::numeric_limits<double>::infinity();
-  }
-  const QuadricSystem::Vector6 solution = factors.solve(system.Right);
-  const double noise = system.ResidualVariance(solution, offsets.Count);
-  const QuadricSystem::Matrix6 inverse = factors.solve(QuadricSystem::Matrix6::Identity());
-  const Eigen::Vector3d n =
-    (axes.col(0) - solution[1] * axes.col(1) - solution[2] * axes.col(2)).normalized();
-  const double error = std::sqrt(noise * (inverse(1, 1) + inverse(2, 2)));
-  if (!n.allFinite() || !std::isfinite(error))
-  {
-    return std::numeric_limits<double>::infinity();
-  }
-  std::copy_n(n.data(), 3, normal);
-  return error;
-}
-
-/// How far, in radians, the PCA normal of the neighbors is expected to be
+/// How far, in radians, a PCA normal of `count` points is expected to be
 /// turned by their noise (first-order perturbation of the eigenvector: a
-/// turn towards tangent axis j has variance s2 lj / (count (lj - l0)^2),
-/// l the covariance's eigenvalues per point, ascending, s2 the noise's
-/// variance); infinite where the smallest eigenvalue is not separated from
-/// the others (the normal undetermined).
-double NormalStandardError(const NeighborOffsets& offsets,
-  double inverseRadius,
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>& solver)
+/// turn towards tangent axis j has variance noise lj / (count (lj -
+/// l0)^2), l the covariance's eigenvalues per point, ascending, `noise`
+/// the heights' variance about the surface); infinite where the smallest
+/// eigenvalue is not separated from the others (the normal undetermined).
+double NormalStandardError(const Eigen::Vector3d& variances, double noise, std::size_t count)
 {
-  const double count = static_cast<double>(offsets.Count);
-  const Eigen::Vector3d variances = solver.eigenvalues() / count;
-  const double noise = NoiseVariance(offsets, inverseRadius, solver.eigenvectors());
   double variance = 0.0;
   for (int j = 1; j < 3; ++j)
   {
@@ -138,20 +80,28 @@ double NormalStandardError(const NeighborOffsets& offsets,
     }
     variance += noise * variances[j] / (gap * gap);
   }
-  return std::sqrt(variance / count);
+  return std::sqrt(variance / static_cast<double>(count));
 }
+
+/// The covariance's eigenvectors (columns, the normal first) and its
+/// eigenvalues per point, ascending.
+struct PlaneAxes
+{
+  Eigen::Matrix3d Axes;
+  Eigen::Vector3d Variances;
+};
 
 /// The normal of the plane through the neighbors (offsets from the point,
 /// in units of the radius) by PCA: the eigenvector of the smallest
 /// eigenvalue of their covariance; signed so that its largest component is
 /// positive (any fixed rule: the orientation decides the sign later). The
 /// sums run in the neighbors' order, one accumulator a matrix entry.
-/// Returns whether the neighbors span a plane (LinearShare); with
-/// `standardError`, writes the normal's expected turn there.
+/// Returns whether the neighbors span a plane (LinearShare); with `axes`,
+/// writes the covariance's eigen-decomposition there.
 bool FitPlane(const NeighborOffsets& offsets,
   double inverseRadius,
   double* normal,
-  double* standardError = nullptr)
+  PlaneAxes* axes = nullptr)
 {
   const std::size_t count = offsets.Count;
   const double* dx = offsets.Dx.data();
@@ -176,9 +126,10 @@ bool FitPlane(const NeighborOffsets& offsets,
     normal[k] = std::isfinite(n[k]) ? n[k] : 0.0;
   }
   const Eigen::Vector3d variances = solver.eigenvalues(); // ascending
-  if (standardError)
+  if (axes)
   {
-    *standardError = NormalStandardError(offsets, inverseRadius, solver);
+    axes->Axes = solver.eigenvectors();
+    axes->Variances = variances / static_cast<double>(count);
   }
   return variances[1] >= LinearShare * variances[2];
 }
@@ -412,8 +363,7 @@ double LineAngle(const double* a, const double* b)
 }
 
 /// One neighborhood's plane for the normals' scale: the PCA normal and its
-/// standard error, and the normal at the point itself (QuadricNormal) and
-/// its own.
+/// standard error, and the normal at the point itself and its own.
 struct ScaledPlane
 {
   double Normal[3] = { 0.0, 0.0, 0.0 };
@@ -422,20 +372,47 @@ struct ScaledPlane
   double AtPointError = 0.0;
 };
 
-/// The neighbors' ScaledPlane; false where they do not span a plane.
+/// The neighbors' ScaledPlane; false where they do not span a plane. One
+/// quadric h = a + b u + c v + d u^2 + e u v + f v^2 over the PCA plane
+/// (offsets in units of the radius, the point at their origin) gives both
+/// the noise (the heights' residual variance about it: the plane's own
+/// residual also holds the surface's bending, which is no error of its
+/// normal) and the normal at the point (the PCA normal tilted by the
+/// slopes b, c: the PCA plane's normal is the surface's near the
+/// neighbors' centroid, which a one-sided neighborhood moves away from
+/// the point). Errors are infinite where the quadric is undetermined.
 bool FitScaledPlane(const NeighborOffsets& offsets, double inverseRadius, ScaledPlane& plane)
 {
-  if (!FitPlane(offsets, inverseRadius, plane.Normal, &plane.Error))
+  PlaneAxes axes;
+  if (!FitPlane(offsets, inverseRadius, plane.Normal, &axes))
   {
     return false;
   }
-  // The quadric's frame: the PCA normal and two tangent axes.
-  const Eigen::Vector3d n(plane.Normal[0], plane.Normal[1], plane.Normal[2]);
-  Eigen::Matrix3d axes;
-  axes.col(0) = n;
-  axes.col(1) = n.unitOrthogonal();
-  axes.col(2) = n.cross(axes.col(1));
-  plane.AtPointError = QuadricNormal(offsets, inverseRadius, axes, plane.AtPoint);
+  plane.Error = plane.AtPointError = std::numeric_limits<double>::infinity();
+  if (offsets.Count <= 6)
+  {
+    return true;
+  }
+  const QuadricSystem system(offsets, inverseRadius, axes.Axes);
+  const Eigen::LDLT<QuadricSystem::Matrix6> factors(system.Normal);
+  const QuadricSystem::Vector6 pivots = factors.vectorD();
+  if (factors.info() != Eigen::Success || !(pivots.minCoeff() > 1e-12 * pivots.maxCoeff()))
+  {
+    return true;
+  }
+  const QuadricSystem::Vector6 solution = factors.solve(system.Right);
+  const double noise = system.ResidualVariance(solution, offsets.Count);
+  plane.Error = NormalStandardError(axes.Variances, noise, offsets.Count);
+  const QuadricSystem::Matrix6 inverse = factors.solve(QuadricSystem::Matrix6::Identity());
+  const Eigen::Vector3d n =
+    (axes.Axes.col(0) - solution[1] * axes.Axes.col(1) - solution[2] * axes.Axes.col(2))
+      .normalized();
+  const double error = std::sqrt(noise * (inverse(1, 1) + inverse(2, 2)));
+  if (n.allFinite() && std::isfinite(error))
+  {
+    std::copy_n(n.data(), 3, plane.AtPoint);
+    plane.AtPointError = error;
+  }
   return true;
 }
 
