@@ -520,7 +520,6 @@ EstimationSummary EstimateCloud(CloudPoints cloud,
   if (settings.EstimateNormals)
   {
     NormalSettings normals = settings.Normals;
-    normals.ChooseScale = settings.Mode == FitMode::OrientedCircles;
     for (double& c : normals.Viewpoint)
     {
       c *= unit.Scale;
