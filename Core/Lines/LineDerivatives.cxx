@@ -51,9 +51,8 @@ bool Normalize(LineVector& v)
 struct PointRole
 {
   double FitRadius = 0.0;
-  bool Fittable = false;  ///< usable curvatures, a frame and a radius
-  bool Dense = false;     ///< its neighborhood holds SharedFitPoints or more
-  bool Shareable = false; ///< so does its fit's (MinimumFitPoints)
+  bool Fittable = false; ///< usable curvatures, a frame and a radius
+  bool Dense = false;    ///< its neighborhood holds SharedFitPoints or more
   LineFrame Frame;
 };
 
@@ -112,7 +111,7 @@ public:
       return;
     }
     BlendedDerivatives blend[2];
-    if (!(role.Shareable && this->BlendShared(i, blend)))
+    if (!(role.Dense && this->BlendShared(i, blend)))
     {
       CurvatureFit fit;
       if (!FitCurvatures(this->Input,
@@ -258,8 +257,6 @@ public:
     const double within = this->Out.GraphWidth * ratio * ratio;
     role.Dense = graphReach > 0.0 && within >= this->Settings.SharedFitPoints;
     role.FitRadius = GrownFitRadius(role.FitRadius, graphReach, this->Settings);
-    role.Shareable = graphReach > 0.0 &&
-      std::max<double>(within, this->Settings.MinimumFitPoints) >= this->Settings.SharedFitPoints;
   }
 
 private:
@@ -347,7 +344,7 @@ void FitAnchors(const LineInput& input,
     [&](std::int64_t j) { return grid.GetSortedId(j); },
     origin,
     cell,
-    [&](std::int64_t point) { return roles[point].Fittable && roles[point].Shareable; },
+    [&](std::int64_t point) { return roles[point].Fittable && roles[point].Dense; },
     []() { return true; });
   std::vector<unsigned char> marks(static_cast<std::size_t>(input.Count), 0);
   shared.Cells.MarkEveryAnchor(marks);

@@ -4,11 +4,12 @@
  * own direction, from cubic least-squares fits of the neighbors'
  * curvatures (CurvatureFit.h). No VTK.
  *
- * A fit takes at least about a hundred points, so nearby points fit
- * nearly the same samples: only anchor points (AnchorCells.h) fit, and
- * each point blends the fits of the anchors near it, evaluated at its own
- * position along its own directions; a point no anchor serves fits its
- * own neighborhood.
+ * A fit takes at least about a hundred points. Where the curvatures'
+ * neighborhoods hold that many or more (every noisy cloud), nearby points
+ * fit nearly the same samples: only anchor points (AnchorCells.h) fit,
+ * and each point blends the fits of the anchors near it, evaluated at its
+ * own position along its own directions. Elsewhere, and where no anchor
+ * serves a point, it fits its own neighborhood.
  */
 #ifndef LineDerivatives_h
 #define LineDerivatives_h
