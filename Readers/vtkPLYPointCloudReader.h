@@ -33,8 +33,8 @@
  * PLY file, a header line that is wrong (with its number; an unknown format
  * or property type, no end_header), no vertex element, a vertex element
  * without x, y or z (naming the missing ones and the properties there
- * are), an edge naming a vertex the file does not have, a truncated body or a value that is not a number of its type (the
- * element and record). The output is then empty and GetErrorCode() is set.
+ * are), an edge naming a vertex the file does not have, a truncated body or a value that is not a
+ * number of its type (the element and record). The output is then empty and GetErrorCode() is set.
  *
  * The parsing is pcurv::ply (FileFormats/PlyFile.h), free of VTK.
  *
