@@ -34,7 +34,8 @@ if [ "$step" != --test-only ]; then
   nice cmake --build build-asan -j 2 --target TestCurvatureCore TestPrincipalCurvatureEstimation \
     TestCloudEstimation TestOrientedCircles TestAutomaticScale TestNormalEstimation TestNeighborGrid TestOutliers TestOpenScans \
     TestDynamicAdjustment TestBadInputConfiguration TestBadInputPoints TestBadInputScale \
-    TestLASReader TestLASWriter TestPointCloudWriters TestPLYReader ReplayReaderSeeds
+    TestLASReader TestLASWriter TestPointCloudWriters TestPLYReader ReplayReaderSeeds \
+    TestCurvatureLines TestShapeClass TestTimeLeft
 fi
 built=$(date +%s)
 if [ "$step" = --build-only ]; then
@@ -48,5 +49,5 @@ cd build-asan
 # slowdown of the sanitizers on a busy 2-core machine. Two tests at a time:
 # most are single-threaded, and the sanitized runs are most of CI's time.
 nice ctest --output-on-failure --timeout 3600 -j 2 \
-  -R "${PCURV_SANITIZE_TESTS:-^((CurvatureCore|PrincipalCurvatureEstimation|DynamicAdjustment|BadInput(Configuration|Points|Scale))(_STDThread)?|(CloudEstimation|OrientedCircles|AutomaticScale|NormalEstimation|NeighborGrid|Outliers|OpenScans)\..*|BadInputExtreme_.*|LASReader|LASWriter\..*|PointCloudWriters\..*|PLYReader|FuzzReaderSeeds)$}"
+  -R "${PCURV_SANITIZE_TESTS:-^((CurvatureCore|PrincipalCurvatureEstimation|DynamicAdjustment|BadInput(Configuration|Points|Scale))(_STDThread)?|(CloudEstimation|OrientedCircles|AutomaticScale|NormalEstimation|NeighborGrid|Outliers|OpenScans)\..*|BadInputExtreme_.*|LASReader|LASWriter\..*|PointCloudWriters\..*|PLYReader|FuzzReaderSeeds|CurvatureLines\.(ExactEllipsoid|NoisyEllipsoid|InputAndThreads)|ShapeClass\.(ClassRule|TrustedKeepsCrests)|TimeLeft\..*)$}"
 echo "sanitizers: build $((built - start)) s, tests $(($(date +%s) - built)) s"
