@@ -520,6 +520,7 @@ EstimationSummary EstimateCloud(CloudPoints cloud,
   if (settings.EstimateNormals)
   {
     NormalSettings normals = settings.Normals;
+    normals.ChooseScale = settings.Mode == FitMode::OrientedCircles;
     for (double& c : normals.Viewpoint)
     {
       c *= unit.Scale;

@@ -34,6 +34,11 @@ struct NormalSettings
 {
   /// Neighbors of the PCA plane fit (the point itself not counted).
   int NumberOfNeighbors = static_cast<int>(PCURV_DEFAULT("NormalNeighbors"));
+  /// Whether each point's plane may grow beyond NumberOfNeighbors while
+  /// wider planes agree with it (PlaneFitting.cxx, GrowWhileAgreeing): set
+  /// by the estimation for the fit beyond the paper, not by the user; the
+  /// paper's fits and the normals filter keep the k nearest's plane.
+  bool ChooseScale = false;
   /// Nearest neighbors each point is joined to in the orientation graph.
   int GraphNeighbors = 8;
   NormalOrientation Orientation =

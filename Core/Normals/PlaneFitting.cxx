@@ -26,13 +26,82 @@ namespace
 /// all one line's), and the PCA normal is a random turn about the line.
 constexpr double LinearShare = 0.05;
 
+/// The normal equations of a quadric h = a + b u + c v + d u^2 + e u v +
+/// f v^2 fitted to the neighbors' heights h over a plane (axes: its normal
+/// and two tangent axes; offsets in units of the radius, the point at
+/// their origin), and the sum of the squared heights.
+struct QuadricSystem
+{
+  using Vector6 = Eigen::Matrix<double, 6, 1>;
+  using Matrix6 = Eigen::Matrix<double, 6, 6>;
+  Matrix6 Normal = Matrix6::Zero();
+  Vector6 Right = Vector6::Zero();
+  double Heights = 0.0;
+
+  QuadricSystem(const NeighborOffsets& offsets, double inverseRadius, const Eigen::Matrix3d& axes)
+  {
+    for (std::size_t i = 0; i < offsets.Count; ++i)
+    {
+      const Eigen::Vector3d d(offsets.Dx[i] * inverseRadius,
+        offsets.Dy[i] * inverseRadius,
+        offsets.Dz[i] * inverseRadius);
+      const double h = d.dot(axes.col(0)), u = d.dot(axes.col(1)), v = d.dot(axes.col(2));
+      Vector6 row;
+      row << 1.0, u, v, u * u, u * v, v * v;
+      this->Normal.noalias() += row * row.transpose();
+      this->Right += h * row;
+      this->Heights += h * h;
+    }
+  }
+
+  /// The heights' variance about the quadric with coefficients `solution`.
+  double ResidualVariance(const Vector6& solution, std::size_t count) const
+  {
+    return std::max(0.0, this->Heights - solution.dot(this->Right)) /
+      static_cast<double>(count - 6);
+  }
+};
+
+/// How far, in radians, a PCA normal of `count` points is expected to be
+/// turned by their noise (first-order perturbation of the eigenvector: a
+/// turn towards tangent axis j has variance noise lj / (count (lj -
+/// l0)^2), l the covariance's eigenvalues per point, ascending, `noise`
+/// the heights' variance about the surface); infinite where the smallest
+/// eigenvalue is not separated from the others (the normal undetermined).
+double NormalStandardError(const Eigen::Vector3d& variances, double noise, std::size_t count)
+{
+  double variance = 0.0;
+  for (int j = 1; j < 3; ++j)
+  {
+    const double gap = variances[j] - std::max(0.0, variances[0]);
+    if (!(gap > 0.0) || !std::isfinite(noise))
+    {
+      return std::numeric_limits<double>::infinity();
+    }
+    variance += noise * variances[j] / (gap * gap);
+  }
+  return std::sqrt(variance / static_cast<double>(count));
+}
+
+/// The covariance's eigenvectors (columns, the normal first) and its
+/// eigenvalues per point, ascending.
+struct PlaneAxes
+{
+  Eigen::Matrix3d Axes;
+  Eigen::Vector3d Variances;
+};
+
 /// The normal of the plane through the neighbors (offsets from the point,
 /// in units of the radius) by PCA: the eigenvector of the smallest
 /// eigenvalue of their covariance; signed so that its largest component is
 /// positive (any fixed rule: the orientation decides the sign later). The
 /// sums run in the neighbors' order, one accumulator a matrix entry.
-/// Returns whether the neighbors span a plane (LinearShare).
-bool FitPlane(const NeighborOffsets& offsets, double inverseRadius, double* normal)
+/// Returns whether the neighbors span a plane (LinearShare); with `axes`,
+/// writes the covariance's eigen-decomposition there.
+bool FitPlane(const NeighborOffsets& offsets,
+  double inverseRadius,
+  double* normal,
+  PlaneAxes* axes = nullptr)
 {
   const std::size_t count = offsets.Count;
   const double* dx = offsets.Dx.data();
@@ -57,6 +126,11 @@ bool FitPlane(const NeighborOffsets& offsets, double inverseRadius, double* norm
     normal[k] = std::isfinite(n[k]) ? n[k] : 0.0;
   }
   const Eigen::Vector3d variances = solver.eigenvalues(); // ascending
+  if (axes)
+  {
+    axes->Axes = solver.eigenvectors();
+    axes->Variances = variances / static_cast<double>(count);
+  }
   return variances[1] >= LinearShare * variances[2];
 }
 
@@ -281,6 +355,130 @@ void FitBeyondLine(const OrderedCloud& ordered,
   }
 }
 
+/// The unoriented angle between two unit normals, radians.
+double LineAngle(const double* a, const double* b)
+{
+  const double cosine = std::fabs(a[0] * b[0] + a[1] * b[1] + a[2] * b[2]);
+  return std::acos(std::min(1.0, cosine));
+}
+
+/// One neighborhood's plane for the normals' scale: the PCA normal and its
+/// standard error, and the normal at the point itself and its own.
+struct ScaledPlane
+{
+  double Normal[3] = { 0.0, 0.0, 0.0 };
+  double Error = 0.0;
+  double AtPoint[3] = { 0.0, 0.0, 0.0 };
+  double AtPointError = 0.0;
+};
+
+/// The neighbors' ScaledPlane; false where they do not span a plane. One
+/// quadric h = a + b u + c v + d u^2 + e u v + f v^2 over the PCA plane
+/// (offsets in units of the radius, the point at their origin) gives both
+/// the noise (the heights' residual variance about it: the plane's own
+/// residual also holds the surface's bending, which is no error of its
+/// normal) and the normal at the point (the PCA normal tilted by the
+/// slopes b, c: the PCA plane's normal is the surface's near the
+/// neighbors' centroid, which a one-sided neighborhood moves away from
+/// the point). Errors are infinite where the quadric is undetermined.
+bool FitScaledPlane(const NeighborOffsets& offsets, double inverseRadius, ScaledPlane& plane)
+{
+  PlaneAxes axes;
+  if (!FitPlane(offsets, inverseRadius, plane.Normal, &axes))
+  {
+    return false;
+  }
+  plane.Error = plane.AtPointError = std::numeric_limits<double>::infinity();
+  if (offsets.Count <= 6)
+  {
+    return true;
+  }
+  const QuadricSystem system(offsets, inverseRadius, axes.Axes);
+  const Eigen::LDLT<QuadricSystem::Matrix6> factors(system.Normal);
+  const QuadricSystem::Vector6 pivots = factors.vectorD();
+  if (factors.info() != Eigen::Success || !(pivots.minCoeff() > 1e-12 * pivots.maxCoeff()))
+  {
+    return true;
+  }
+  const QuadricSystem::Vector6 solution = factors.solve(system.Right);
+  const double noise = system.ResidualVariance(solution, offsets.Count);
+  plane.Error = NormalStandardError(axes.Variances, noise, offsets.Count);
+  const QuadricSystem::Matrix6 inverse = factors.solve(QuadricSystem::Matrix6::Identity());
+  const Eigen::Vector3d n =
+    (axes.Axes.col(0) - solution[1] * axes.Axes.col(1) - solution[2] * axes.Axes.col(2))
+      .normalized();
+  const double error = std::sqrt(noise * (inverse(1, 1) + inverse(2, 2)));
+  if (n.allFinite() && std::isfinite(error))
+  {
+    std::copy_n(n.data(), 3, plane.AtPoint);
+    plane.AtPointError = error;
+  }
+  return true;
+}
+
+/// The normal at the largest neighborhood that still agrees: the plane
+/// through twice, four and eight times the k nearest is taken while its
+/// normal lies within AgreementTolerance times the sum of the standard
+/// errors of every smaller one's (Lepski's rule, as the curvatures' scale
+/// is chosen). Where noise turns the k-neighbor normal, the wider planes
+/// average it out; where the surface bends them away (a boundary, a sharp
+/// bend), they part and the growth stops. The PCA normals, the more
+/// precise, choose the scale; a grown neighborhood's normal at the point
+/// itself is the result (the PCA plane's where the quadric is
+/// undetermined). `first` is the k nearest's plane.
+void GrowWhileAgreeing(const OrderedCloud& ordered,
+  const double x[3],
+  double radius,
+  std::size_t wanted,
+  NearestSearch& search,
+  const ScaledPlane& first,
+  double* normal)
+{
+  constexpr int Doublings = 3;
+  constexpr double AgreementTolerance = 2.0;
+  ScaledPlane planes[Doublings + 1];
+  planes[0] = first;
+  int chosen = 0;
+  const double guess = search.Guess; // the next point's: the k nearest's
+  for (int level = 1; level <= Doublings; ++level)
+  {
+    const std::size_t count = wanted << level;
+    double gathered = 0.0;
+    search.Guess = radius * std::sqrt(static_cast<double>(1 << level));
+    if (static_cast<std::size_t>(ordered.Size()) <= count ||
+      !GatherAtLeast(ordered, x, count, search, gathered))
+    {
+      break;
+    }
+    const double grown = std::nextafter(std::sqrt(KthSquared(search, gathered, count)), HUGE_VAL);
+    KeepWithinRadius(ordered, x, grown, search);
+    ScaledPlane& candidate = planes[level];
+    if (search.Offsets.Count < 3 || !FitScaledPlane(search.Offsets, 1.0 / grown, candidate))
+    {
+      break;
+    }
+    bool agrees = true;
+    for (int smaller = 0; smaller < level; ++smaller)
+    {
+      agrees = agrees &&
+        LineAngle(candidate.Normal, planes[smaller].Normal) <=
+          AgreementTolerance * (planes[smaller].Error + candidate.Error);
+    }
+    if (!agrees)
+    {
+      break;
+    }
+    chosen = level;
+  }
+  search.Guess = guess;
+  // The k nearest keep their plane's normal: their centroid lies near the
+  // point, and a quadric's slopes over so few points (a scan's few lines
+  // among them) are less certain than the offset they would correct.
+  const ScaledPlane& plane = planes[chosen];
+  const bool atPoint = chosen > 0 && std::isfinite(plane.AtPointError);
+  std::copy_n(atPoint ? plane.AtPoint : plane.Normal, 3, normal);
+}
+
 } // namespace
 
 /// One point's plane and graph neighbors: the k nearest found with one
@@ -320,11 +518,21 @@ void FitPoint(const OrderedCloud& ordered,
     normal[0] = normal[1] = normal[2] = 0.0;
     return;
   }
-  const bool planar = FitPlane(search.Offsets, 1.0 / radius, normal);
+  ScaledPlane first;
+  const bool planar = settings.ChooseScale ? FitScaledPlane(search.Offsets, 1.0 / radius, first)
+                                           : FitPlane(search.Offsets, 1.0 / radius, normal);
   WriteNearestOthers(position, radius, search, fits.GraphNeighbors, fits.Neighbors);
   if (!planar)
   {
+    if (settings.ChooseScale)
+    {
+      std::copy_n(first.Normal, 3, normal);
+    }
     FitBeyondLine(ordered, x, radius, wanted, search, normal);
+  }
+  else if (settings.ChooseScale)
+  {
+    GrowWhileAgreeing(ordered, x, radius, wanted, search, first, normal);
   }
 }
 

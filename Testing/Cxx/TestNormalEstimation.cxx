@@ -156,6 +156,70 @@ void TestScanLineNormals(Checks& checks)
   checks.True("scan-line normals: 3 threads bit-identical to 1", estimated.BitIdentical(threaded));
 }
 
+/// The survey's score of one point: the squared errors of the unsigned,
+/// sorted principal curvatures (an unestimated point counts as 0, 0).
+double SortedSquaredError(const Results& r, const testing::SurfaceSample& s, std::size_t i)
+{
+  const double a = r.Valid[i] ? std::fabs(r.Minimum[i]) : 0.0;
+  const double b = r.Valid[i] ? std::fabs(r.Maximum[i]) : 0.0;
+  const double ta = std::fabs(s.MinimumCurvature), tb = std::fabs(s.MaximumCurvature);
+  const double e1 = std::min(a, b) - std::min(ta, tb), e2 = std::max(a, b) - std::max(ta, tb);
+  return (e1 * e1 + e2 * e2) / 2.0;
+}
+
+/// Noise of about one spacing, no normals: the k nearest's planes are
+/// turned by the noise, some nearly into the tangent plane, and where a
+/// point's normal is that far off, its curvatures are off by tens of times
+/// the surface's. The normals' scale, chosen from the data, averages the
+/// noise out where the surface allows.
+void TestHeavyNoiseNormals(Checks& checks)
+{
+  const testing::Surface surfaces[] = { testing::Paraboloid(1.0, 1.0), testing::Saddle(1.0, 1.0) };
+  for (const testing::Surface& surface : surfaces)
+  {
+    auto samples = testing::Sample(surface, 12000, 71);
+    const double spacing = 2.0 / std::sqrt(12000.0);
+    testing::AddPositionNoise(samples, spacing, 72);
+    for (auto& s : samples)
+    {
+      s.Normal = { { 0.0, 0.0, 0.0 } };
+    }
+    EstimationSettings settings;
+    settings.EstimateNormals = true;
+    SerialRunner serial;
+    ThreadRunner threads(2);
+    Results one(samples.size(), false), two(samples.size(), false);
+    std::vector<double> normals(3 * samples.size()), threaded(3 * samples.size());
+    CurvatureBuffers buffers = one.Buffers();
+    buffers.Normals = normals.data();
+    EstimateCloud(MakeCloud(samples), settings, Collectives{}, serial, nullptr, buffers);
+    buffers = two.Buffers();
+    buffers.Normals = threaded.data();
+    EstimateCloud(MakeCloud(samples), settings, Collectives{}, threads, nullptr, buffers);
+    const auto exact = testing::Sample(surface, 12000, 71); // the noise-free normals
+    std::size_t within = 0;
+    double squared = 0.0;
+    for (std::size_t i = 0; i < samples.size(); ++i)
+    {
+      const double dot = testing::Dot(
+        { { normals[3 * i], normals[3 * i + 1], normals[3 * i + 2] } }, exact[i].Normal);
+      within += std::fabs(dot) >= std::cos(10.0 * 3.141592653589793 / 180.0);
+      squared += SortedSquaredError(one, samples[i], i);
+    }
+    const double share = static_cast<double>(within) / samples.size();
+    const double rmse = std::sqrt(squared / samples.size());
+    std::printf("%s, noise of one spacing: %.1f %% of the normals within 10 degrees, k RMSE %.4f\n",
+      surface.Name.c_str(),
+      100.0 * share,
+      rmse);
+    const std::string name = surface.Name + " at one spacing's noise";
+    checks.True((name + ": 90 % of the normals within 10 degrees").c_str(), share >= 0.9);
+    checks.True((name + ": curvature RMSE below 0.18").c_str(), rmse < 0.18);
+    checks.True((name + ": 2 threads bit-identical to 1").c_str(),
+      one.BitIdentical(two) && normals == threaded);
+  }
+}
+
 /// The orientation graph's lists, built by hand: every point's one edge
 /// goes to point 0 (and point 0's to point 1, which the reverse edge makes
 /// redundant), so point 0's list holds every other point in order: more
@@ -237,6 +301,7 @@ int main(int argc, char* argv[])
     {
       { "NormalEstimation", TestNormalEstimation },
       { "ScanLineNormals", TestScanLineNormals },
+      { "HeavyNoiseNormals", TestHeavyNoiseNormals },
       { "OrientationGraphLists", TestOrientationGraphLists },
       { "WideOrientationGraph", TestWideOrientationGraph },
     });
