@@ -321,9 +321,10 @@ bool ChooseAnchors(AnchorTable& anchors,
 /// wide radii too: where the normals follow the surface as exact normals
 /// of a noisy cloud do (AutomaticScaleEstimator::NormalFollowsSurface) at
 /// most of the points of the cloud's spacing sample (the same points and
-/// counts for any split among processes). Estimated normals share their
-/// errors with their neighbors, and the fourth order's extra unknowns take
-/// those up rather than the surface's shape: there it does worse.
+/// counts for any split among processes). Normals of a few nearest
+/// neighbors' planes share their errors with their neighbors, and the
+/// fourth order's extra unknowns would take those up: they fail the test.
+/// Normals whose scale grew with the noise pass it under light noise.
 bool NormalsFollowTheSurface(const CloudPoints& cloud,
   const PointGrid& grid,
   const NeighborhoodRule& rule,
@@ -399,7 +400,8 @@ bool EstimateEveryPoint(CloudPoints cloud,
     rule.Automatic.FourthOrder =
       NormalsFollowTheSurface(cloud, grid, rule, fit, boxes, run.Processes);
     summary.FourthOrderFits = rule.Automatic.FourthOrder;
-    if (!rule.Automatic.FourthOrder)
+    // Estimated normals add nothing to the positions (WideLevels).
+    if (!rule.Automatic.FourthOrder || settings.EstimateNormals)
     {
       rule.Automatic.SetLevels(rule.Automatic.WideLevels);
     }

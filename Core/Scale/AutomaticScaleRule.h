@@ -46,11 +46,11 @@ struct AutomaticScaleRule
   double TypicalRadius = 0; // the cloud's typical first radius (a length)
   bool ShareFits = false;   // points near an anchor take its fit (SharedFits.h)
   bool FourthOrder = false; // wide radii fit the surface's fourth order too
-  /// Levels where the normals do not follow the surface (FourthOrder
-  /// false): one radius more, about 4000 neighbors. Estimated normals are
-  /// about as uncertain as the positions, so the ladder's band (the
-  /// positions' standard error) is the estimate's own and shows the bias
-  /// of a wider radius; where the normals follow the surface the combined
+  /// Levels where the normals were estimated or do not follow the surface
+  /// (FourthOrder false): one radius more, about 4000 neighbors. Normals
+  /// estimated from the positions add nothing the positions do not hold,
+  /// so the ladder's band is the estimate's own and shows the bias of a
+  /// wider radius; where given normals follow the surface the combined
   /// fit is far more precise than that band, which hides the bias a wider
   /// radius adds.
   int WideLevels = 9;

@@ -73,13 +73,14 @@ void TestAutomaticScale(Checks& checks)
     MeanError(noisy, withNoise) < MeanError(noisy, paper));
 }
 
-/// The longer ladder where the normals do not follow the surface
-/// (AutomaticScaleRule::WideLevels): with normals estimated from noisy
-/// positions the growth may go one radius further (about 4000 neighbours
-/// instead of 2000), and a noisy sphere, where no radius adds a bias, takes
-/// it and averages more of the noise out; with exact normals the fourth
-/// order's gate is on and the ladder keeps its eight radii. The same bits
-/// for any thread count, and the reported error still covers the error.
+/// The longer ladder where the normals are estimated or do not follow the
+/// surface (AutomaticScaleRule::WideLevels): with normals estimated from
+/// noisy positions the growth may go one radius further (about 4000
+/// neighbours instead of 2000), even where the fourth order's gate is on,
+/// and a noisy sphere, where no radius adds a bias, takes it and averages
+/// more of the noise out; with exact normals the ladder keeps its eight
+/// radii. The same bits for any thread count, and the reported error still
+/// covers the error.
 void TestWideLadder(Checks& checks)
 {
   std::vector<testing::SurfaceSample> samples = testing::Sample(testing::Sphere(1.0), 20000, 101);
@@ -116,7 +117,6 @@ void TestWideLadder(Checks& checks)
     farTrusted,
     given.Summary.FourthOrderFits ? 1 : 0,
     LargestNeighborCount(given.Serial));
-  checks.True("wide ladder: estimated normals, the fourth order off", !run.Summary.FourthOrderFits);
   checks.True("wide ladder: estimated normals, beyond eight radii's 2048 neighbours",
     LargestNeighborCount(run.Out) > 3000);
   checks.True("wide ladder: exact normals, the fourth order on", given.Summary.FourthOrderFits);

@@ -149,9 +149,10 @@ void TestCubicTerms(Checks& checks)
 /// FourthOrder): on noisy clouds with exact normals the gate turns it on and
 /// the error falls well below the third order's alone (an ellipsoid and a
 /// saddle patch, whose fourth-order terms bias a cubic fit at the radii the
-/// noise calls for); with the filter's own estimated normals the gate
-/// leaves it off. The same bits for any thread count, and the reported
-/// error still covers the error.
+/// noise calls for). The filter's own estimated normals, each at the scale
+/// its neighbors agree on, follow the surface closely enough here for the
+/// fourth order too, and their error stays bounded. The same bits for any
+/// thread count, and the reported error still covers the error.
 void TestFourthOrder(Checks& checks)
 {
   SerialRunner serial;
@@ -159,7 +160,7 @@ void TestFourthOrder(Checks& checks)
   {
     const char* Name;
     std::vector<testing::SurfaceSample> Samples;
-    double Area, Largest, Bound;
+    double Area, Largest, Bound, EstimatedBound;
   };
   // Ellipsoid (3, 2, 1.5): area by Thomsen's formula (within 1 %).
   const double p = 1.6075;
@@ -173,8 +174,9 @@ void TestFourthOrder(Checks& checks)
       testing::Sample(testing::Ellipsoid(3.0, 2.0, 1.5), 20000, 63),
       ellipsoidArea,
       3.0 / (1.5 * 1.5),
-      0.0044 },
-    { "saddle", testing::Sample(testing::Saddle(1.0, 1.0), 20000, 65), 4.0, 1.0, 0.004 },
+      0.0044,
+      0.0070 },
+    { "saddle", testing::Sample(testing::Saddle(1.0, 1.0), 20000, 65), 4.0, 1.0, 0.004, 0.011 },
   };
   for (Case& c : cases)
   {
@@ -198,7 +200,8 @@ void TestFourthOrder(Checks& checks)
       MeanError(c.Samples, estimated) / c.Largest);
     const std::string what = std::string("fourth order, noisy ") + c.Name + ": ";
     checks.True((what + "on with exact normals").c_str(), given.Summary.FourthOrderFits);
-    checks.True((what + "off with estimated normals").c_str(), !ownSummary.FourthOrderFits);
+    checks.True((what + "estimated normals' error below its bound").c_str(),
+      MeanError(c.Samples, estimated) / c.Largest < c.EstimatedBound);
     checks.True((what + "error below its bound").c_str(), error < c.Bound);
     checks.True((what + "no valid point off by 20 % of max |k|").c_str(), cover.Far == 0);
     checks.True((what + "at least 85 % within 2 standard errors").c_str(),
