@@ -209,6 +209,7 @@ struct Estimate
   std::vector<double> Minimum, Maximum, MinimumDirection, MaximumDirection;
   std::vector<unsigned char> Valid, Outlier;
   std::vector<double> SurfaceDistance, StandardError;
+  bool FourthOrder = false; // whether the automatic scale fitted the fourth order
 };
 
 /// The core with the filter's defaults (estimating the normals when none
@@ -261,7 +262,8 @@ Estimate Run(const Shape& cloud, bool givenNormals, int threads, bool moveOutlie
   out.Outlier = e.Outlier.data();
   out.SurfaceDistance = e.SurfaceDistance.data();
   testing::ThreadRunner runner(threads);
-  EstimateCloud(std::move(points), settings, Collectives{}, runner, nullptr, out);
+  e.FourthOrder =
+    EstimateCloud(std::move(points), settings, Collectives{}, runner, nullptr, out).FourthOrderFits;
   return e;
 }
 
@@ -533,10 +535,12 @@ int main(int argc, char* argv[])
       Shape noisy;
       Perturb(clouds[name], condition, noisy);
       Score both[2];
+      bool fourthOrder[2] = { false, false };
       for (int g = 0; g < 2; ++g)
       {
         const Estimate e = Run(noisy, g == 0, threads, moveOutliers);
         both[g] = ScoreOf(e, clouds[name], noisy);
+        fourthOrder[g] = e.FourthOrder;
         if (!dump.empty())
         {
           Dump(dump + "/" + condition + "_" + name + (g == 0 ? "_given" : "_estimated") + ".csv",
@@ -549,7 +553,7 @@ int main(int argc, char* argv[])
       {
         std::printf("  %-15s %-13s given k %.4f (worst 1 %% %.0f %%), estimated k %.4f; "
                     "k kept %.4f %.4f, moved %.4f %.4f; flagged kept %.2f %%, moved %.1f %%; "
-                    "within 2 SE %.1f %% %.1f %%\n",
+                    "within 2 SE %.1f %% %.1f %%; fourth order %d %d\n",
           condition.c_str(),
           name.c_str(),
           both[0].K,
@@ -562,7 +566,9 @@ int main(int argc, char* argv[])
           100 * both[0].FlaggedKept,
           100 * both[0].FlaggedMoved,
           100 * both[0].Covered,
-          100 * both[1].Covered);
+          100 * both[1].Covered,
+          fourthOrder[0] ? 1 : 0,
+          fourthOrder[1] ? 1 : 0);
       }
       for (Score* sum : { &given, &estimated })
       {
