@@ -29,29 +29,75 @@ constexpr double LinearShare = 0.05;
 /// The normal equations of a quadric h = a + b u + c v + d u^2 + e u v +
 /// f v^2 fitted to the neighbors' heights h over a plane (axes: its normal
 /// and two tangent axes; offsets in units of the radius, the point at
-/// their origin), and the sum of the squared heights.
+/// their origin), and the sum of the squared heights. The matrix holds
+/// only the 15 moments of (u, v) up to the fourth order, so those are what
+/// the neighbors' loop sums.
 struct QuadricSystem
 {
   using Vector6 = Eigen::Matrix<double, 6, 1>;
   using Matrix6 = Eigen::Matrix<double, 6, 6>;
-  Matrix6 Normal = Matrix6::Zero();
-  Vector6 Right = Vector6::Zero();
+  Matrix6 Normal;
+  Vector6 Right;
   double Heights = 0.0;
 
   QuadricSystem(const NeighborOffsets& offsets, double inverseRadius, const Eigen::Matrix3d& axes)
   {
+    // Moments u^i v^j, in the order 1; u v; u^2 uv v^2; u^3 u^2v uv^2 v^3;
+    // u^4 u^3v u^2v^2 uv^3 v^4; and the heights' h, hu, hv, hu^2, huv, hv^2.
+    double m[15] = {}, r[6] = {};
+    double heights = 0.0;
+    const Eigen::Vector3d n = axes.col(0) * inverseRadius;
+    const Eigen::Vector3d a = axes.col(1) * inverseRadius;
+    const Eigen::Vector3d b = axes.col(2) * inverseRadius;
     for (std::size_t i = 0; i < offsets.Count; ++i)
     {
-      const Eigen::Vector3d d(offsets.Dx[i] * inverseRadius,
-        offsets.Dy[i] * inverseRadius,
-        offsets.Dz[i] * inverseRadius);
-      const double h = d.dot(axes.col(0)), u = d.dot(axes.col(1)), v = d.dot(axes.col(2));
-      Vector6 row;
-      row << 1.0, u, v, u * u, u * v, v * v;
-      this->Normal.noalias() += row * row.transpose();
-      this->Right += h * row;
-      this->Heights += h * h;
+      const double dx = offsets.Dx[i], dy = offsets.Dy[i], dz = offsets.Dz[i];
+      const double h = dx * n[0] + dy * n[1] + dz * n[2];
+      const double u = dx * a[0] + dy * a[1] + dz * a[2];
+      const double v = dx * b[0] + dy * b[1] + dz * b[2];
+      const double uu = u * u, uv = u * v, vv = v * v;
+      const double terms[15] = { 1.0,
+        u,
+        v,
+        uu,
+        uv,
+        vv,
+        uu * u,
+        uu * v,
+        u * vv,
+        vv * v,
+        uu * uu,
+        uu * uv,
+        uu * vv,
+        uv * vv,
+        vv * vv };
+      for (int k = 0; k < 15; ++k)
+      {
+        m[k] += terms[k];
+      }
+      for (int k = 0; k < 6; ++k)
+      {
+        r[k] += h * terms[k];
+      }
+      heights += h * h;
     }
+    // Entry (i, j) of the matrix is the moment of the product of the
+    // basis functions i and j (1, u, v, u^2, uv, v^2).
+    constexpr int Moment[6][6] = { { 0, 1, 2, 3, 4, 5 },
+      { 1, 3, 4, 6, 7, 8 },
+      { 2, 4, 5, 7, 8, 9 },
+      { 3, 6, 7, 10, 11, 12 },
+      { 4, 7, 8, 11, 12, 13 },
+      { 5, 8, 9, 12, 13, 14 } };
+    for (int i = 0; i < 6; ++i)
+    {
+      for (int j = 0; j < 6; ++j)
+      {
+        this->Normal(i, j) = m[Moment[i][j]];
+      }
+      this->Right[i] = r[i];
+    }
+    this->Heights = heights;
   }
 
   /// The heights' variance about the quadric with coefficients `solution`.
@@ -162,7 +208,7 @@ double KthSmallest(const double* values,
       scratch[kept] = v;
       kept += (v >= low) & (v < high);
     }
-    std::sort(scratch.begin(), scratch.begin() + within);
+    std::nth_element(scratch.begin(), scratch.begin() + (k - below - 1), scratch.begin() + within);
     return scratch[k - below - 1];
   }
   scratch.assign(values, values + count);
@@ -403,11 +449,13 @@ bool FitScaledPlane(const NeighborOffsets& offsets, double inverseRadius, Scaled
   const QuadricSystem::Vector6 solution = factors.solve(system.Right);
   const double noise = system.ResidualVariance(solution, offsets.Count);
   plane.Error = NormalStandardError(axes.Variances, noise, offsets.Count);
-  const QuadricSystem::Matrix6 inverse = factors.solve(QuadricSystem::Matrix6::Identity());
+  // The slopes' variances: the inverse's diagonal entries (1, 1), (2, 2).
+  const Eigen::Matrix<double, 6, 2> inverse =
+    factors.solve(QuadricSystem::Matrix6::Identity().middleCols<2>(1));
   const Eigen::Vector3d n =
     (axes.Axes.col(0) - solution[1] * axes.Axes.col(1) - solution[2] * axes.Axes.col(2))
       .normalized();
-  const double error = std::sqrt(noise * (inverse(1, 1) + inverse(2, 2)));
+  const double error = std::sqrt(noise * (inverse(1, 0) + inverse(2, 1)));
   if (n.allFinite() && std::isfinite(error))
   {
     std::copy_n(n.data(), 3, plane.AtPoint);

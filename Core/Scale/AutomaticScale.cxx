@@ -26,6 +26,10 @@ constexpr int FourthOrderFirstLevel = 4;
 /// Simplest's tolerance: two standard errors of the two fits' difference,
 /// each the combined fit's covariance's inflated as the reported error's.
 constexpr double OrderTolerance = 2.0 * CombinedErrorFactor;
+/// Simplest's tolerance where the normals were estimated: two of the
+/// positions-only fits' standard errors of the difference, which need no
+/// inflation.
+constexpr double EstimatedOrderTolerance = 2.0;
 /// Jets are tried where the ladder reached its precision within its first
 /// three radii (up to twice the first, about 64 neighbors): where noise
 /// grows it further, or where its growth stopped for want of agreement
@@ -113,7 +117,8 @@ bool FitSums(OrientedCircleAccumulatorOf<Order>& accumulator,
 /// precision: on a sphere, which has no fourth-order terms beyond its
 /// circles', its error is about twice the third's at the same radius.
 const OrientedCircleResult& Simplest(const OrientedCircleResult& third,
-  const OrientedCircleResult& fourth)
+  const OrientedCircleResult& fourth,
+  bool estimatedNormals)
 {
   if (!fourth.Curvature.Valid)
   {
@@ -123,10 +128,14 @@ const OrientedCircleResult& Simplest(const OrientedCircleResult& third,
   {
     return fourth;
   }
-  const double difference = std::sqrt(std::max(0.0,
-    fourth.CombinedStandardError * fourth.CombinedStandardError -
-      third.CombinedStandardError * third.CombinedStandardError));
-  const double allowed = OrderTolerance * difference;
+  // Estimated normals share their errors with their neighbors, so the
+  // combined fit's covariance overstates its precision; the positions'
+  // rows are independent, and their errors judge the difference.
+  const double thirdError = estimatedNormals ? third.StandardError : third.CombinedStandardError;
+  const double fourthError = estimatedNormals ? fourth.StandardError : fourth.CombinedStandardError;
+  const double difference =
+    std::sqrt(std::max(0.0, fourthError * fourthError - thirdError * thirdError));
+  const double allowed = (estimatedNormals ? EstimatedOrderTolerance : OrderTolerance) * difference;
   const bool agree =
     std::fabs(third.Curvature.MinimumCurvature - fourth.Curvature.MinimumCurvature) <= allowed &&
     std::fabs(third.Curvature.MaximumCurvature - fourth.Curvature.MaximumCurvature) <= allowed;
@@ -141,6 +150,7 @@ bool FitEitherOrder(QuarticCircleAccumulator& accumulator,
   double inverseUnit,
   double roundingVariance,
   const FitSettings& settings,
+  bool estimatedNormals,
   OrientedCircleResult& result)
 {
   const QuarticCircleSums& sums = accumulator.Sums();
@@ -162,7 +172,7 @@ bool FitEitherOrder(QuarticCircleAccumulator& accumulator,
     settings.MinimumPointsPerDirection,
     settings.MaximumOpposingFraction,
     true);
-  result = Simplest(third, fourth);
+  result = Simplest(third, fourth, estimatedNormals);
   return true;
 }
 /// The nearest points whose squared distance is below `limit`, in their
@@ -242,13 +252,20 @@ ScaleEstimate AutomaticScaleEstimator::Estimate(std::int64_t point,
     inner = r;
     OrientedCircleResult result;
     const bool fitted = fourthOrder
-      ? FitEitherOrder(quartic, frame, inverseUnit, roundingVariance, this->Settings, result)
+      ? FitEitherOrder(quartic,
+          frame,
+          inverseUnit,
+          roundingVariance,
+          this->Settings,
+          rule.EstimatedNormals,
+          result)
       : FitSums(accumulator, frame, inverseUnit, roundingVariance, this->Settings, result);
     if (!fitted)
     {
       reason = UnestimatedReason::ReachesAcross;
       break;
     }
+    result.EstimatedNormals = rule.EstimatedNormals;
     const int neighbors = result.Curvature.NeighborCount;
     reason = result.Curvature.Valid
       ? UnestimatedReason::TooFewNeighbors

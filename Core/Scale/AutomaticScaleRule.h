@@ -46,6 +46,10 @@ struct AutomaticScaleRule
   double TypicalRadius = 0; // the cloud's typical first radius (a length)
   bool ShareFits = false;   // points near an anchor take its fit (SharedFits.h)
   bool FourthOrder = false; // wide radii fit the surface's fourth order too
+  /// The normals were estimated from the positions: the third and fourth
+  /// orders are told apart by the positions' standard errors, since the
+  /// neighbors' normals share their errors.
+  bool EstimatedNormals = false;
   /// Levels where the normals were estimated or do not follow the surface
   /// (FourthOrder false): one radius more, about 4000 neighbors. Normals
   /// estimated from the positions add nothing the positions do not hold,

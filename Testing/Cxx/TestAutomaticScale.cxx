@@ -122,8 +122,9 @@ void TestWideLadder(Checks& checks)
   checks.True("wide ladder: exact normals, the fourth order on", given.Summary.FourthOrderFits);
   checks.True("wide ladder: exact normals, within eight radii's 2048 neighbours",
     LargestNeighborCount(given.Serial) < 3000);
-  // Eight radii gave 0.0102.
-  checks.True("wide ladder: error below its bound", error < 0.0085);
+  // Eight radii gave 0.0102; telling the fourth order from the third by
+  // the combined fit's errors, 0.0053.
+  checks.True("wide ladder: error below its bound", error < 0.0045);
   checks.True("wide ladder: points off by 20 % of |k| within 2 standard errors", farUncovered == 0);
   checks.True("wide ladder: no trusted point off by 20 % of |k|", farTrusted == 0);
   checks.True("wide ladder: at least 85 % within 2 standard errors",
