@@ -28,11 +28,18 @@ with open(sys.argv[1], "wb") as handle:
     handle.write(bytes(header) + records)
 PYTHON
 
-# No script to write a marker: the window's showing, then time to read.
+# The pipeline browser (top left) of the screen, enlarged for OCR: holds
+# the reader's entry once the file has opened.
+browser_shows_scan() {
+  gui_capture "$work/screen.png"
+  convert "$work/screen.png" -crop 300x250+0+130 +repage -resize 300% -colorspace Gray "$work/browser.png"
+  tesseract "$work/browser.png" - 2>/dev/null | grep -q "scan.las"
+}
+# No script to write a marker: the window's showing, then the file's entry
+# read on screen, or time up.
 gui_drive() {
   gui_place_window
-  sleep 15
-  gui_capture "$work/screen.png"
+  gui_until 60 browser_shows_scan
 }
 gui_run "$paraview" --dr "$work/scan.las"
 
@@ -41,8 +48,6 @@ if [ ! -s "$work/screen.png" ]; then
   echo "FAILED: no screenshot"
   exit 1
 fi
-# The pipeline browser (top left), enlarged for OCR: the reader's entry.
-convert "$work/screen.png" -crop 300x250+0+130 +repage -resize 300% -colorspace Gray "$work/browser.png"
 if tesseract "$work/browser.png" - 2>/dev/null | grep -q "scan.las"; then
   echo "scan.las opened from the command line"
 else

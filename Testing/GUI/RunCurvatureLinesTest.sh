@@ -14,32 +14,29 @@ source "$(dirname "$0")/GuiHarness.sh"
 gui_init "$screenshot"
 export GUI_TEST_PLUGIN=$plugin
 
+# Applies, then waits until the view has rendered with a line of the
+# state that matches PATTERN; with no PATTERN, until the screen is still.
 apply() {
   xdotool windowfocus --sync "$window"
+  [ -n "${1:-}" ] || gui_mark_screen
   xdotool key --clearmodifiers alt+a
-  sleep 8
-}
-# Creates a filter on the active source through the quick launch.
-quick_launch() {
-  xdotool windowfocus --sync "$window"
-  xdotool key --clearmodifiers ctrl+space
-  sleep 2
-  xdotool type --delay 80 "$1"
-  sleep 2
-  xdotool key Return
-  sleep 3
+  if [ -n "${1:-}" ]; then
+    gui_until 120 grep -q "$1" "$work/state"
+  else
+    gui_wait_still 10
+  fi
 }
 gui_drive() {
   gui_wait_for "$GUI_TEST_MARKER"
   if gui_place_window; then
-    sleep 3
+    # The script's reader is not a modified proxy: Apply is disabled, and
+    # the screen may not change.
     apply
-    quick_launch "principal"
-    apply
-    quick_launch "curvature lines"
-    apply
-    for i in $(seq 1 60); do grep -q "^lines shown" "$work/state" 2>/dev/null && break; sleep 1; done
-    sleep 3
+    gui_quick_launch "principal"
+    apply "^curvatures shown$"
+    gui_quick_launch "curvature lines"
+    apply "^lines shown"
+    gui_wait_still
     gui_capture "$screenshot"
   fi
 }
@@ -50,9 +47,6 @@ gui_read_marker 'ready*' || exit 1
 state=$(cat "$work/state" 2>/dev/null)
 echo "after the last Apply:"
 sed "s/^/  /" <<< "$state"
-expect() {
-  if grep -qx "$1" <<< "$state"; then echo "as expected: $1"; else echo "FAILED: expected '$1'"; status=1; fi
-}
 expect "curvatures shown"
 expect "colored by CELLS Line_Kind"
 expect "line width 3"
@@ -68,11 +62,8 @@ fi
 # The render view (right of the panels) shows the ridge orange (1, 0.6, 0)
 # and the valley green (0, 0.7, 0.35) of the kinds' map, which the
 # curvatures' blue-white-red map has not.
-read -r oranges greens <<< "$(convert "$screenshot" -crop 1100x850+480+100 +repage txt:- |
-  awk -F"[(),: ]+" '/^[0-9]/ { r = $3; g = $4; b = $5
-    if (r > 220 && g > 120 && g < 185 && b < 50) o++
-    if (r < 50 && g > 150 && b > 60 && b < 120) n++ }
-    END { printf "%d %d", o, n }')"
+read -r oranges greens <<< "$(gui_count_pixels "$screenshot" "-crop 1100x850+480+100 +repage" \
+  "(r > 220) & (g > 120) & (g < 185) & (b < 50)" "(r < 50) & (g > 150) & (b > 60) & (b < 120)")"
 if [ "${oranges:-0}" -gt 100 ] && [ "${greens:-0}" -gt 100 ]; then
   echo "screen: $oranges ridge-orange and $greens valley-green pixels"
 else

@@ -16,14 +16,8 @@ export GUI_TEST_PLUGIN=$plugin GUI_TEST_CLOUD=$cloud
 gui_drive() {
   gui_wait_for "$GUI_TEST_MARKER"
   if gui_place_window; then
-    sleep 3
-    xdotool windowfocus --sync "$window"
-    xdotool key --clearmodifiers ctrl+space
-    sleep 2
-    xdotool type --delay 80 "principal"
-    sleep 2
-    xdotool key Return
-    sleep 4
+    gui_quick_launch "principal"
+    gui_wait_still
   fi
   gui_capture "$screenshot"
 }

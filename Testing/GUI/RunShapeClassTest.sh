@@ -14,9 +14,7 @@ gui_run "$paraview" --dr --script="$here/shape_class_script.py"
 
 gui_read_marker 'ok*' || exit 1
 status=0
-expect() {
-  if grep -qx "$1" <<< "$marker"; then echo "as expected: $1"; else echo "FAILED: expected '$1'"; status=1; fi
-}
+state=$marker
 expect "colored by Shape_Class"
 expect "own map 1"
 expect "categorical 1"
@@ -32,11 +30,8 @@ if [ ! -s "$screenshot" ]; then
 fi
 # The screen shows the dome red (0.84, 0.15, 0.16) and the saddle green
 # (0.20, 0.65, 0.25) of the categorical map, which no continuous map has.
-read -r reds greens <<< "$(convert "$screenshot" -sample 50% txt:- | awk -F"[(),: ]+" '/^[0-9]/ {
-    r = $3; g = $4; b = $5
-    if (r > 190 && g < 70 && b < 70) red++
-    if (g > 140 && r < 80 && b < 90) green++ }
-    END { printf "%d %d", red, green }')"
+read -r reds greens <<< "$(gui_count_pixels "$screenshot" "-sample 50%" \
+  "(r > 190) & (g < 70) & (b < 70)" "(g > 140) & (r < 80) & (b < 90)")"
 if [ "$reds" -gt 200 ] && [ "$greens" -gt 200 ]; then
   echo "screen: $reds dome-red and $greens saddle-green pixels"
 else
