@@ -88,6 +88,22 @@
 #                          that meet each CONDITION: a numpy expression of
 #                          the 0-255 arrays r, g, b ("(r > 200) & (g < 40)").
 #                          Prints the counts, one a condition.
+#   gui_require_screenshot FILE
+#                          fails, saying so, when FILE (the screenshot) is
+#                          missing or empty.
+#   gui_report_events      prints each line of $work/events (the steps'
+#                          findings, such as a dialog that did not show) as
+#                          a failure, and then sets status=1.
+#   gui_check_no_gdal_probe
+#                          sets status=1 when ParaView's log shows GDAL's
+#                          "not recognized as a supported file format"
+#                          (its raster reader probing a point cloud file).
+#   gui_read_words IMAGE OPTIONS PSM WORDS
+#                          the distinct words of WORDS (an alternation,
+#                          "Ridge|Valley") that tesseract (page segmentation
+#                          PSM) reads in IMAGE as ImageMagick's OPTIONS
+#                          (crop, enlarge) leave it, in gray: sorted, on one
+#                          line. Fails, saying so, when tesseract is missing.
 #   gui_read_marker PATTERN
 #                          reads $GUI_TEST_MARKER into $marker, prints it,
 #                          and fails unless it matches the glob PATTERN.
@@ -360,4 +376,35 @@ expect() {
     echo "FAILED: expected '$1'"
     status=1
   fi
+}
+
+gui_require_screenshot() {
+  [ -s "$1" ] && return 0
+  echo "FAILED: no screenshot"
+  return 1
+}
+
+gui_report_events() {
+  [ -s "$work/events" ] || return 0
+  sed "s/^/FAILED: /" "$work/events"
+  status=1
+}
+
+gui_check_no_gdal_probe() {
+  if grep -q "not recognized as a supported file format" "$work/paraview.log"; then
+    echo "FAILED: GDAL's probe message on the terminal: $(grep -m 1 "not recognized" "$work/paraview.log")"
+    status=1
+  else
+    echo "no GDAL probe message"
+  fi
+}
+
+gui_read_words() {
+  if ! command -v tesseract > /dev/null; then
+    echo "FAILED: tesseract is not installed (Scripts/setup.sh installs it)" >&2
+    return 1
+  fi
+  # shellcheck disable=SC2086 # the options are words on purpose
+  convert "$1" $2 -colorspace Gray png:- | tesseract - - --psm "$3" 2>/dev/null |
+    grep -o -w -E "$4" | sort -u | tr '\n' ' '
 }

@@ -44,20 +44,12 @@ gui_drive() {
 gui_run "$paraview" --dr "$work/scan.las"
 
 status=0
-if [ ! -s "$work/screen.png" ]; then
-  echo "FAILED: no screenshot"
-  exit 1
-fi
+gui_require_screenshot "$work/screen.png" || exit 1
 if tesseract "$work/browser.png" - 2>/dev/null | grep -q "scan.las"; then
   echo "scan.las opened from the command line"
 else
   echo "FAILED: scan.las not in the pipeline browser"
   status=1
 fi
-if grep -q "not recognized as a supported file format" "$work/paraview.log"; then
-  echo "FAILED: GDAL's probe message on the terminal: $(grep -m 1 "not recognized" "$work/paraview.log")"
-  status=1
-else
-  echo "no GDAL probe message"
-fi
+gui_check_no_gdal_probe
 exit $status

@@ -55,10 +55,7 @@ expect "annotations 0,Ridge,1,Valley,2,Max of k_max,3,Min of k_max,4,Max of k_mi
 expect "legend 1"
 grep -q "^lines shown [1-9]" <<< "$state" && echo "lines found and shown" ||
   { echo "FAILED: no lines shown"; status=1; }
-if [ ! -s "$screenshot" ]; then
-  echo "FAILED: no screenshot"
-  exit 1
-fi
+gui_require_screenshot "$screenshot" || exit 1
 # The render view (right of the panels) shows the ridge orange (1, 0.6, 0)
 # and the valley green (0, 0.7, 0.35) of the kinds' map, which the
 # curvatures' blue-white-red map has not.
@@ -70,17 +67,11 @@ else
   echo "FAILED: screen shows ${oranges:-0} ridge-orange and ${greens:-0} valley-green pixels"
   status=1
 fi
-if command -v tesseract > /dev/null; then
-  found=$(convert "$screenshot" -crop 1100x850+480+100 +repage -resize 200% -colorspace Gray png:- |
-    tesseract - - --psm 11 2>/dev/null | grep -o -w -E "Ridge|Valley" | sort -u | tr '\n' ' ')
-  if [ "$(wc -w <<< "$found")" -eq 2 ]; then
-    echo "legend read on screen: $found"
-  else
-    echo "FAILED: the legend's Ridge and Valley are not on screen (read: $found)"
-    status=1
-  fi
+found=$(gui_read_words "$screenshot" "-crop 1100x850+480+100 +repage -resize 200%" 11 "Ridge|Valley")
+if [ "$(wc -w <<< "$found")" -eq 2 ]; then
+  echo "legend read on screen: $found"
 else
-  echo "FAILED: tesseract is not installed (Scripts/setup.sh installs it)"
+  echo "FAILED: the legend's Ridge and Valley are not on screen (read: $found)"
   status=1
 fi
 echo "screenshot: $screenshot"

@@ -39,10 +39,7 @@ gui_run "$paraview" --dr --script="$here/lidar_tiles_script.py"
 
 status=0
 gui_read_marker 'ready*' || exit 1
-if [ -s "$work/events" ]; then
-  sed "s/^/FAILED: /" "$work/events"
-  status=1
-fi
+gui_report_events
 echo "after the first tile:"
 sed "s/^/  /" "$work/state_first" 2>/dev/null
 echo "after the second tile:"
@@ -60,10 +57,7 @@ for tile in tile_west.las tile_east.las; do
   case "$line" in *"colored_by RGB map_scalars 0 scalar_bar 0"*) echo "$tile in true colors (RGB, Map Scalars off), no scalar bar" ;;
     *) echo "FAILED: $tile not in true colors with no scalar bar: $line"; status=1 ;; esac
 done
-if [ ! -s "$screenshot" ]; then
-  echo "FAILED: no screenshot"
-  exit 1
-fi
+gui_require_screenshot "$screenshot" || exit 1
 # The render view (right of the panels): pure red and pure green points.
 read -r reds greens <<< "$(gui_count_pixels "$screenshot" "-crop 1000x700+500+150 +repage" \
   "(r > 200) & (g < 40) & (b < 40)" "(g > 200) & (r < 40) & (b < 40)")"

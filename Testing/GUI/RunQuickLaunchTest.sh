@@ -30,10 +30,7 @@ gui_read_marker 'ready*Normals*' || { status=1; echo "FAILED: no cloud with norm
 case "$marker" in *"bad files read by ASCIIPointCloudReader ASCIIPointCloudReader ASCIIPointCloudReader"*)
   echo "bad .xyz files: read by the plugin's reader, shown, no crash" ;;
   *) status=1; echo "FAILED: bad .xyz files not read by the plugin's reader (or the GUI died)" ;; esac
-if [ ! -s "$screenshot" ]; then
-  echo "FAILED: no screenshot"
-  exit 1
-fi
+gui_require_screenshot "$screenshot" || exit 1
 # The pipeline browser (top left), enlarged for OCR.
 convert "$screenshot" -crop 300x300+0+0 +repage -resize 300% -colorspace Gray "$work/browser.png"
 text=$(tesseract "$work/browser.png" - 2>/dev/null)

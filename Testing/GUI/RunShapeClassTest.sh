@@ -24,10 +24,7 @@ expect "distinct 7"
 expect "legend 1"
 grep -q "^classes .*2.*6" <<< "$marker" && echo "the torus has domes and saddles" ||
   { echo "FAILED: no domes and saddles on the torus"; status=1; }
-if [ ! -s "$screenshot" ]; then
-  echo "FAILED: no screenshot"
-  exit 1
-fi
+gui_require_screenshot "$screenshot" || exit 1
 # The screen shows the dome red (0.84, 0.15, 0.16) and the saddle green
 # (0.20, 0.65, 0.25) of the categorical map, which no continuous map has.
 read -r reds greens <<< "$(gui_count_pixels "$screenshot" "-sample 50%" \
@@ -40,18 +37,12 @@ else
 fi
 # The legend, at the bottom right of the view in the 1600x1000 window: its
 # seven class names read back (tesseract, on the legend enlarged).
-if command -v tesseract > /dev/null; then
-  found=$(convert "$screenshot" -crop 240x330+1380+670 +repage -resize 300% -colorspace Gray png:- |
-    tesseract - - --psm 6 2>/dev/null | grep -o -w -E "Undetermined|Flat|Dome|Cup|Ridge|Valley|Saddle" |
-    sort -u | tr '\n' ' ')
-  if [ "$(wc -w <<< "$found")" -eq 7 ]; then
-    echo "legend read on screen: $found"
-  else
-    echo "FAILED: the legend's seven class names are not on screen (read: $found)"
-    status=1
-  fi
+found=$(gui_read_words "$screenshot" "-crop 240x330+1380+670 +repage -resize 300%" 6 \
+  "Undetermined|Flat|Dome|Cup|Ridge|Valley|Saddle")
+if [ "$(wc -w <<< "$found")" -eq 7 ]; then
+  echo "legend read on screen: $found"
 else
-  echo "FAILED: tesseract is not installed (Scripts/setup.sh installs it)"
+  echo "FAILED: the legend's seven class names are not on screen (read: $found)"
   status=1
 fi
 echo "screenshot: $screenshot"
