@@ -15,15 +15,15 @@ gui_init "$screenshot"
 export GUI_TEST_PLUGIN=$plugin
 
 # Applies, then waits until the view has rendered with a line of the
-# state that matches PATTERN; with no PATTERN, until the screen is still.
+# state that matches PATTERN; with no PATTERN (nothing is sure to change),
+# until the screen is still.
 apply() {
   xdotool windowfocus --sync "$window"
-  [ -n "${1:-}" ] || gui_mark_screen
   xdotool key --clearmodifiers alt+a
   if [ -n "${1:-}" ]; then
     gui_until 120 grep -q "$1" "$work/state"
   else
-    gui_wait_still 10
+    gui_wait_still
   fi
 }
 gui_drive() {
