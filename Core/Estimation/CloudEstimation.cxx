@@ -400,8 +400,7 @@ bool EstimateEveryPoint(CloudPoints cloud,
     rule.Automatic.FourthOrder =
       NormalsFollowTheSurface(cloud, grid, rule, fit, boxes, run.Processes);
     summary.FourthOrderFits = rule.Automatic.FourthOrder;
-    rule.Automatic.EstimatedNormals = settings.EstimateNormals;
-    // Estimated normals add nothing to the positions (WideLevels).
+    rule.Automatic.EstimatedNormals = settings.EstimateNormals; // see WideLevels
     if (!rule.Automatic.FourthOrder || settings.EstimateNormals)
     {
       rule.Automatic.SetLevels(rule.Automatic.WideLevels);
