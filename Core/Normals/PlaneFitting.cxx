@@ -3,6 +3,7 @@
 #include "Common/ScaledCovariance.h"
 #include "Normals/OrderedCloud.h"
 #include "Normals/OrientationGraph.h"
+#include "Normals/PlaneQuadric.h"
 
 #include <Eigen/Dense>
 
@@ -25,109 +26,6 @@ namespace
 /// points, 12 times denser along the lines than across them, often are
 /// all one line's), and the PCA normal is a random turn about the line.
 constexpr double LinearShare = 0.05;
-
-/// The normal equations of a quadric h = a + b u + c v + d u^2 + e u v +
-/// f v^2 fitted to the neighbors' heights h over a plane (axes: its normal
-/// and two tangent axes; offsets in units of the radius, the point at
-/// their origin), and the sum of the squared heights. The matrix holds
-/// only the 15 moments of (u, v) up to the fourth order, so those are what
-/// the neighbors' loop sums.
-struct QuadricSystem
-{
-  using Vector6 = Eigen::Matrix<double, 6, 1>;
-  using Matrix6 = Eigen::Matrix<double, 6, 6>;
-  Matrix6 Normal;
-  Vector6 Right;
-  double Heights = 0.0;
-
-  QuadricSystem(const NeighborOffsets& offsets, double inverseRadius, const Eigen::Matrix3d& axes)
-  {
-    // Moments u^i v^j, in the order 1; u v; u^2 uv v^2; u^3 u^2v uv^2 v^3;
-    // u^4 u^3v u^2v^2 uv^3 v^4; and the heights' h, hu, hv, hu^2, huv, hv^2.
-    double m[15] = {}, r[6] = {};
-    double heights = 0.0;
-    const Eigen::Vector3d n = axes.col(0) * inverseRadius;
-    const Eigen::Vector3d a = axes.col(1) * inverseRadius;
-    const Eigen::Vector3d b = axes.col(2) * inverseRadius;
-    for (std::size_t i = 0; i < offsets.Count; ++i)
-    {
-      const double dx = offsets.Dx[i], dy = offsets.Dy[i], dz = offsets.Dz[i];
-      const double h = dx * n[0] + dy * n[1] + dz * n[2];
-      const double u = dx * a[0] + dy * a[1] + dz * a[2];
-      const double v = dx * b[0] + dy * b[1] + dz * b[2];
-      const double uu = u * u, uv = u * v, vv = v * v;
-      const double terms[15] = { 1.0,
-        u,
-        v,
-        uu,
-        uv,
-        vv,
-        uu * u,
-        uu * v,
-        u * vv,
-        vv * v,
-        uu * uu,
-        uu * uv,
-        uu * vv,
-        uv * vv,
-        vv * vv };
-      for (int k = 0; k < 15; ++k)
-      {
-        m[k] += terms[k];
-      }
-      for (int k = 0; k < 6; ++k)
-      {
-        r[k] += h * terms[k];
-      }
-      heights += h * h;
-    }
-    // Entry (i, j) of the matrix is the moment of the product of the
-    // basis functions i and j (1, u, v, u^2, uv, v^2).
-    constexpr int Moment[6][6] = { { 0, 1, 2, 3, 4, 5 },
-      { 1, 3, 4, 6, 7, 8 },
-      { 2, 4, 5, 7, 8, 9 },
-      { 3, 6, 7, 10, 11, 12 },
-      { 4, 7, 8, 11, 12, 13 },
-      { 5, 8, 9, 12, 13, 14 } };
-    for (int i = 0; i < 6; ++i)
-    {
-      for (int j = 0; j < 6; ++j)
-      {
-        this->Normal(i, j) = m[Moment[i][j]];
-      }
-      this->Right[i] = r[i];
-    }
-    this->Heights = heights;
-  }
-
-  /// The heights' variance about the quadric with coefficients `solution`.
-  double ResidualVariance(const Vector6& solution, std::size_t count) const
-  {
-    return std::max(0.0, this->Heights - solution.dot(this->Right)) /
-      static_cast<double>(count - 6);
-  }
-};
-
-/// How far, in radians, a PCA normal of `count` points is expected to be
-/// turned by their noise (first-order perturbation of the eigenvector: a
-/// turn towards tangent axis j has variance noise lj / (count (lj -
-/// l0)^2), l the covariance's eigenvalues per point, ascending, `noise`
-/// the heights' variance about the surface); infinite where the smallest
-/// eigenvalue is not separated from the others (the normal undetermined).
-double NormalStandardError(const Eigen::Vector3d& variances, double noise, std::size_t count)
-{
-  double variance = 0.0;
-  for (int j = 1; j < 3; ++j)
-  {
-    const double gap = variances[j] - std::max(0.0, variances[0]);
-    if (!(gap > 0.0) || !std::isfinite(noise))
-    {
-      return std::numeric_limits<double>::infinity();
-    }
-    variance += noise * variances[j] / (gap * gap);
-  }
-  return std::sqrt(variance / static_cast<double>(count));
-}
 
 /// The covariance's eigenvectors (columns, the normal first) and its
 /// eigenvalues per point, ascending.
@@ -464,6 +362,32 @@ bool FitScaledPlane(const NeighborOffsets& offsets, double inverseRadius, Scaled
   return true;
 }
 
+/// The kept candidates' offsets (KeepWithinRadius's) nearer than `radius`,
+/// in their order, into `out`: the same points and offsets a gather and
+/// KeepWithinRadius of that radius would give.
+void KeepNearer(const NearestSearch& search, double radius, NeighborOffsets& out)
+{
+  const Candidates& found = search.Found;
+  const NeighborOffsets& from = search.Offsets;
+  if (out.Dx.size() < found.Count)
+  {
+    for (std::vector<double>* axis : { &out.Dx, &out.Dy, &out.Dz })
+    {
+      axis->resize(found.Count);
+    }
+  }
+  const double radiusSquared = radius * radius;
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < found.Count; ++i)
+  {
+    out.Dx[kept] = from.Dx[i];
+    out.Dy[kept] = from.Dy[i];
+    out.Dz[kept] = from.Dz[i];
+    kept += found.Squared[i] < radiusSquared;
+  }
+  out.Count = kept;
+}
+
 /// The normal at the largest neighborhood that still agrees: the plane
 /// through twice, four and eight times the k nearest is taken while its
 /// normal lies within AgreementTolerance times the sum of the standard
@@ -473,7 +397,9 @@ bool FitScaledPlane(const NeighborOffsets& offsets, double inverseRadius, Scaled
 /// bend), they part and the growth stops. The PCA normals, the more
 /// precise, choose the scale; a grown neighborhood's normal at the point
 /// itself is the result (the PCA plane's where the quadric is
-/// undetermined). `first` is the k nearest's plane.
+/// undetermined). `first` is the k nearest's plane. The widest
+/// neighborhood is gathered once, and each smaller one is the part of it
+/// within its own k-th distance.
 void GrowWhileAgreeing(const OrderedCloud& ordered,
   const double x[3],
   double radius,
@@ -484,24 +410,41 @@ void GrowWhileAgreeing(const OrderedCloud& ordered,
 {
   constexpr int Doublings = 3;
   constexpr double AgreementTolerance = 2.0;
+  int levels = Doublings;
+  while (levels > 0 && static_cast<std::size_t>(ordered.Size()) <= (wanted << levels))
+  {
+    --levels;
+  }
+  const double guess = search.Guess; // the next point's: the k nearest's
+  search.Guess = radius * std::sqrt(static_cast<double>(1 << levels));
+  double gathered = 0.0;
+  double grown[Doublings + 1] = {};
+  if (levels > 0 && GatherAtLeast(ordered, x, wanted << levels, search, gathered))
+  {
+    for (int level = 1; level <= levels; ++level)
+    {
+      grown[level] =
+        std::nextafter(std::sqrt(KthSquared(search, gathered, wanted << level)), HUGE_VAL);
+    }
+    KeepWithinRadius(ordered, x, grown[levels], search);
+  }
+  else
+  {
+    levels = 0;
+  }
+  search.Guess = guess;
   ScaledPlane planes[Doublings + 1];
   planes[0] = first;
   int chosen = 0;
-  const double guess = search.Guess; // the next point's: the k nearest's
-  for (int level = 1; level <= Doublings; ++level)
+  for (int level = 1; level <= levels; ++level)
   {
-    const std::size_t count = wanted << level;
-    double gathered = 0.0;
-    search.Guess = radius * std::sqrt(static_cast<double>(1 << level));
-    if (static_cast<std::size_t>(ordered.Size()) <= count ||
-      !GatherAtLeast(ordered, x, count, search, gathered))
+    if (level < levels)
     {
-      break;
+      KeepNearer(search, grown[level], search.Level);
     }
-    const double grown = std::nextafter(std::sqrt(KthSquared(search, gathered, count)), HUGE_VAL);
-    KeepWithinRadius(ordered, x, grown, search);
+    const NeighborOffsets& offsets = level < levels ? search.Level : search.Offsets;
     ScaledPlane& candidate = planes[level];
-    if (search.Offsets.Count < 3 || !FitScaledPlane(search.Offsets, 1.0 / grown, candidate))
+    if (offsets.Count < 3 || !FitScaledPlane(offsets, 1.0 / grown[level], candidate))
     {
       break;
     }
@@ -518,7 +461,6 @@ void GrowWhileAgreeing(const OrderedCloud& ordered,
     }
     chosen = level;
   }
-  search.Guess = guess;
   // The k nearest keep their plane's normal: their centroid lies near the
   // point, and a quadric's slopes over so few points (a scan's few lines
   // among them) are less certain than the offset they would correct.

@@ -31,6 +31,7 @@ struct NearestSearch
   ShellPoints Shell;
   std::vector<double> Selected;
   NeighborOffsets Offsets;
+  NeighborOffsets Level; // a part of Offsets (the normals' scale)
   std::vector<std::pair<double, std::int64_t>> Ranked;
   double Guess = 0.0;
 };
