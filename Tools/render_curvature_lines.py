@@ -25,6 +25,7 @@ import estimate_curvatures  # noqa: E402  (reading clouds, loading the plugin)
 from curvature_lines_output import KIND_NAMES, LINE_KINDS, lines_filter, summarize_lines  # noqa: E402
 
 from paraview import servermanager, simple  # noqa: E402
+from render_view import color_symmetric, diagonal_of, make_view, save_picture  # noqa: E402
 
 # Line_Kind's colors, as Plugin/Gui/pqCloudColorMapBehavior.cxx gives them.
 KIND_COLORS = ((1.00, 0.60, 0.00), (0.00, 0.70, 0.35), (0.90, 0.35, 0.75),
@@ -49,23 +50,8 @@ def parse_arguments(argv):
     return arguments
 
 
-def make_view(size):
-    view = simple.CreateView("RenderView")
-    view.ViewSize = [int(v) for v in size.split(",")]
-    view.OrientationAxesVisibility = 0
-    view.Background = [1, 1, 1]
-    try:
-        view.UseColorPaletteForBackground = 0
-    except AttributeError:
-        pass
-    return view
-
-
 def show_points(curvatures, view, arguments):
     """The cloud's points, by --color on a symmetric clipped map, or gray."""
-    import numpy
-    from vtkmodules.util.numpy_support import vtk_to_numpy
-
     cloud = simple.Show(curvatures, view)
     cloud.Representation = "Points"
     cloud.PointSize = arguments.point_size
@@ -73,17 +59,7 @@ def show_points(curvatures, view, arguments):
         cloud.ColorArrayName = ["POINTS", ""]
         cloud.AmbientColor = cloud.DiffuseColor = [0.72, 0.72, 0.72]
         return
-    simple.ColorBy(cloud, ("POINTS", arguments.color))
-    lookup = simple.GetColorTransferFunction(arguments.color)
-    lookup.ApplyPreset("Cool to Warm", True)
-    values = vtk_to_numpy(servermanager.Fetch(curvatures).GetPointData().GetArray(arguments.color))
-    bound = max(numpy.abs(numpy.nanpercentile(values, [5, 95]))) if values.size else 1.0
-    lookup.RescaleTransferFunction(-bound, bound)
-    cloud.SetScalarBarVisibility(view, True)
-    bar = simple.GetScalarBar(lookup, view)
-    bar.Title = arguments.color.replace("_", " ")
-    bar.ComponentTitle = ""
-    bar.TitleColor = bar.LabelColor = [0, 0, 0]
+    color_symmetric(cloud, curvatures, view, arguments.color)
 
 
 def show_lines(lines, view, arguments, lift):
@@ -108,21 +84,6 @@ def show_lines(lines, view, arguments, lift):
     bar.WindowLocation = "Upper Right Corner"
 
 
-def diagonal_of(bounds):
-    return sum((bounds[2 * k + 1] - bounds[2 * k]) ** 2 for k in range(3)) ** 0.5
-
-
-def place_camera(view, bounds, arguments):
-    diagonal = diagonal_of(bounds)
-    direction = [float(v) for v in arguments.view.split(",")]
-    center = [(bounds[2 * k] + bounds[2 * k + 1]) / 2 for k in range(3)]
-    view.CameraFocalPoint = center
-    view.CameraPosition = [center[k] - direction[k] * 3 * diagonal for k in range(3)]
-    view.CameraViewUp = [float(v) for v in arguments.up.split(",")]
-    simple.ResetCamera(view)
-    simple.GetActiveCamera().Dolly(1.3)
-
-
 def main(argv):
     arguments = parse_arguments(argv)
     estimate_curvatures.load_plugin(arguments.plugin)
@@ -143,10 +104,7 @@ def main(argv):
     direction = [float(v) for v in arguments.view.split(",")]
     norm = sum(v * v for v in direction) ** 0.5
     show_lines(lines, view, arguments, [-0.004 * diagonal_of(bounds) * v / norm for v in direction])
-    place_camera(view, bounds, arguments)
-    simple.Render(view)
-    simple.SaveScreenshot(arguments.output, view, ImageResolution=view.ViewSize)
-    print("wrote %s" % arguments.output)
+    save_picture(view, bounds, arguments.view, arguments.up, arguments.output)
 
 
 if __name__ == "__main__":

@@ -21,6 +21,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import estimate_curvatures  # noqa: E402  (reading clouds, loading the plugin)
 
 from paraview import simple  # noqa: E402
+from render_view import color_symmetric, diagonal_of, make_view, save_picture  # noqa: E402
 
 
 def parse_arguments(argv):
@@ -50,38 +51,15 @@ def main(argv):
     if normals:  # else the filter estimates them (NormalsSource Automatic)
         curvatures.Normals = ["POINTS", normals]
     curvatures.UpdatePipeline()
-    spacing = curvatures.GetDataInformation().DataInformation.GetBounds()
-    diagonal = sum((spacing[2 * k + 1] - spacing[2 * k]) ** 2 for k in range(3)) ** 0.5
+    bounds = curvatures.GetDataInformation().DataInformation.GetBounds()
+    diagonal = diagonal_of(bounds)
 
-    view = simple.CreateView("RenderView")
-    view.ViewSize = [int(v) for v in arguments.size.split(",")]
-    view.OrientationAxesVisibility = 0
-    view.Background = [1, 1, 1]
-    try:
-        view.UseColorPaletteForBackground = 0
-    except AttributeError:
-        pass
+    view = make_view(arguments.size)
 
     cloud = simple.Show(curvatures, view)
     cloud.Representation = "Points"
     cloud.PointSize = 4
-    simple.ColorBy(cloud, ("POINTS", arguments.color))
-    lookup = simple.GetColorTransferFunction(arguments.color)
-    lookup.ApplyPreset("Cool to Warm", True)
-    # Robust color range: curvature has long tails at sharp features.
-    values = curvatures.PointData[arguments.color].GetRange()
-    import numpy
-    from paraview import servermanager
-    from vtkmodules.util.numpy_support import vtk_to_numpy
-    data = vtk_to_numpy(servermanager.Fetch(curvatures).GetPointData().GetArray(arguments.color))
-    low, high = numpy.nanpercentile(data, [5, 95]) if data.size else values
-    bound = max(abs(low), abs(high))
-    lookup.RescaleTransferFunction(-bound, bound)
-    cloud.SetScalarBarVisibility(view, True)
-    bar = simple.GetScalarBar(lookup, view)
-    bar.Title = arguments.color.replace("_", " ")
-    bar.ComponentTitle = ""
-    bar.TitleColor = bar.LabelColor = [0, 0, 0]
+    color_symmetric(cloud, curvatures, view, arguments.color)
 
     # Short line glyphs along the maximum principal direction (defined up to
     # sign: a line, not an arrow).
@@ -97,17 +75,7 @@ def main(argv):
     lines.AmbientColor = lines.DiffuseColor = [0.1, 0.1, 0.1]
     lines.LineWidth = 1.5
 
-    direction = [float(v) for v in arguments.view.split(",")]
-    center = [(spacing[2 * k] + spacing[2 * k + 1]) / 2 for k in range(3)]
-    view.CameraFocalPoint = center
-    view.CameraPosition = [center[k] - direction[k] * 3 * diagonal for k in range(3)]
-    view.CameraViewUp = [float(v) for v in arguments.up.split(",")]
-    simple.ResetCamera(view)
-    camera = simple.GetActiveCamera()
-    camera.Dolly(1.3)
-    simple.Render(view)
-    simple.SaveScreenshot(arguments.output, view, ImageResolution=view.ViewSize)
-    print("wrote %s" % arguments.output)
+    save_picture(view, bounds, arguments.view, arguments.up, arguments.output)
 
 
 if __name__ == "__main__":

@@ -39,10 +39,18 @@ void ZoomOntoCentralPoints(const CloudPoints& cloud,
   const std::int64_t lastRank = total - 1 - total / 100;
   constexpr int Bins = 1024;
   constexpr int EnoughBins = 64; // the central points span 64 of 1024 bins: no zoom
+  // A level that zooms narrows the range at least 16-fold (64 of 1024
+  // bins), so even a range from the largest double down to a subnormal
+  // step takes fewer levels than this; it only guards against a range that
+  // stops shrinking. A smaller cap would leave the box of a cloud with one
+  // far point (a 1e110 "missing value" sentinel) about as wide as that
+  // point's distance: the grid over it then puts every real point in one
+  // cell, and each neighbor query reads them all.
+  constexpr int MaximumLevels = 1100;
   for (int axis = 0; axis < 3; ++axis)
   {
     std::int64_t below = 0; // points below lower[axis]
-    for (int level = 0; level < 8 && upper[axis] > lower[axis]; ++level)
+    for (int level = 0; level < MaximumLevels && upper[axis] > lower[axis]; ++level)
     {
       const double low = lower[axis];
       const double width = (upper[axis] - low) / Bins;

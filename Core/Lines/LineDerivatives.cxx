@@ -297,28 +297,14 @@ private:
   std::vector<double> Scratch;
 };
 
-double TypicalFitRadius(const LineInput& input,
-  const LineSettings& settings,
-  const std::vector<PointRole>& roles)
+/// 0 without a typical radius: then no anchors, every point fits its own.
+/// A stand-in measured here (such as a median of the points' radii) would
+/// be this process's alone, and distributed runs would place different
+/// anchors than a serial one.
+double TypicalFitRadius(const LineInput& input, const LineSettings& settings)
 {
-  if (input.TypicalRadius > 0.0 && std::isfinite(input.TypicalRadius))
-  {
-    return input.TypicalRadius * settings.FitRadius;
-  }
-  std::vector<double> radii;
-  for (const PointRole& role : roles)
-  {
-    if (role.Fittable)
-    {
-      radii.push_back(role.FitRadius);
-    }
-  }
-  if (radii.empty())
-  {
-    return 0.0;
-  }
-  std::nth_element(radii.begin(), radii.begin() + radii.size() / 2, radii.end());
-  return radii[radii.size() / 2];
+  const double radius = input.TypicalRadius * settings.FitRadius;
+  return radius > 0.0 && std::isfinite(radius) ? radius : 0.0;
 }
 
 /// Anchors among the dense points (one per cell of a lattice of
@@ -331,7 +317,7 @@ void FitAnchors(const LineInput& input,
   WorkRunner* runner,
   SharedCurvatureFits& shared)
 {
-  const double cell = settings.AnchorSpacing * TypicalFitRadius(input, settings, roles);
+  const double cell = settings.AnchorSpacing * TypicalFitRadius(input, settings);
   if (!(cell > 0.0) || !std::isfinite(cell))
   {
     return;

@@ -70,8 +70,8 @@ struct LineInput
   /// Optional: nonzero where the curvatures are valid.
   const unsigned char* Valid = nullptr;
   /// Optional: the typical neighborhood radius, which sets the spacing of
-  /// the shared fits' anchors; 0: the median of the points' radii. A
-  /// distributed caller passes the same value on every process.
+  /// the shared fits' anchors; 0: no shared fits, every point fits its
+  /// own. A distributed caller passes the same value on every process.
   double TypicalRadius = 0.0;
   /// Optional (a distributed run): nonzero at this process's own points.
   /// The others, its halo, lend their curvatures to the fits and their

@@ -7,6 +7,9 @@
 #include "LineScoring.h"
 
 #include "Lines/CurvatureLines.h"
+#include "Lines/LineDerivatives.h"
+
+#include <limits>
 
 namespace
 {
@@ -453,6 +456,38 @@ void TestInputAndThreads(Checks& checks)
   checks.True("lines on 3 threads: the serial lines", same);
 }
 
+/// Without a typical radius there are no shared fits: every point fits its
+/// own, exactly as when no neighborhood is dense enough to share. With one,
+/// the same cloud shares fits (the comparison is not empty).
+void TestNoTypicalRadius(Checks& checks)
+{
+  const std::size_t n = 20000;
+  const LineArrays arrays =
+    ExactArrays(testing::Sample(testing::Ellipsoid(A, B, C), n, 77), 8.0 * EllipsoidSpacing(n));
+  LineInput input = arrays.Input();
+  const double lower[3] = { -A, -B, -C }, upper[3] = { A, B, C };
+  PointGrid grid;
+  grid.Build(input.Points, input.Count, GridLattice::Make(lower, upper, input.Count, 0.2));
+  LineSettings unshared;
+  unshared.SharedFitPoints = std::numeric_limits<int>::max();
+  auto same = [&](const PointDerivatives& a, const PointDerivatives& b)
+  {
+    bool equal = a.Fitted == b.Fitted;
+    for (std::size_t i = 0; equal && i < n; ++i)
+    {
+      equal = a.Maximum[i].Slope == b.Maximum[i].Slope && a.Maximum[i].Bend == b.Maximum[i].Bend &&
+        a.Minimum[i].Slope == b.Minimum[i].Slope && a.Minimum[i].Bend == b.Minimum[i].Bend;
+    }
+    return equal;
+  };
+  const PointDerivatives own = FitDerivatives(input, unshared, grid, nullptr);
+  checks.True("no typical radius: every point fits its own",
+    same(FitDerivatives(input, LineSettings{}, grid, nullptr), own));
+  input.TypicalRadius = arrays.Radius[0];
+  checks.True("a typical radius: dense points share fits",
+    !same(FitDerivatives(input, LineSettings{}, grid, nullptr), own));
+}
+
 } // namespace
 
 int main(int argc, char* argv[])
@@ -467,5 +502,6 @@ int main(int argc, char* argv[])
       { "NoLines", TestNoLines },
       { "RoundedBox", TestRoundedBox },
       { "InputAndThreads", TestInputAndThreads },
+      { "NoTypicalRadius", TestNoTypicalRadius },
     });
 }

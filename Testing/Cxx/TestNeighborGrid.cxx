@@ -174,6 +174,45 @@ void TestDenseCells(Checks& checks)
     wrongShells == 0);
 }
 
+/// One point far from a unit square of points (a "missing value" sentinel
+/// at 1e110, and points nearer): the box the grid spans stays within a few
+/// times the square, not the far point's distance, so the square's points
+/// spread over many cells (cells of at most a fifth of it) instead of
+/// sharing one. The far point still lies in
+/// the bounds, and the lattice clamps it to an outermost cell.
+void TestFarPointBox(Checks& checks)
+{
+  for (const double far : { 1e7, 1e30, 1e110, -1e110, 1e300 })
+  {
+    CloudPoints cloud;
+    const int side = 60;
+    cloud.Reset(side * side + 1);
+    const double normal[3] = { 0.0, 0.0, 1.0 };
+    for (int i = 0; i < side * side; ++i)
+    {
+      const double x[3] = { (i % side + 0.5) / side, (i / side + 0.5) / side, 0.0 };
+      cloud.AddInputPoint(i, x, normal);
+    }
+    const double outlier[3] = { far, far, far };
+    cloud.AddInputPoint(side * side, outlier, normal);
+    const CloudBoxes boxes = MeasureBoxes(cloud, Collectives{});
+    double widest = 0.0;
+    for (int k = 0; k < 2; ++k)
+    {
+      widest = std::max(widest, boxes.GridUpper[k] - boxes.GridLower[k]);
+    }
+    const GridLattice lattice = GlobalLattice(boxes, 0.1);
+    char label[160];
+    std::snprintf(label,
+      sizeof(label),
+      "a point at %g: the grid spans about the unit square (width %g), cells of %g",
+      far,
+      widest,
+      lattice.CellSize);
+    checks.True(label, widest < 20.0 && lattice.CellSize < 0.2);
+  }
+}
+
 } // namespace
 
 int main(int argc, char* argv[])
@@ -182,5 +221,6 @@ int main(int argc, char* argv[])
     argv,
     {
       { "DenseCells", TestDenseCells },
+      { "FarPointBox", TestFarPointBox },
     });
 }

@@ -15,7 +15,6 @@
 #   export GUI_TEST_PLUGIN=$plugin      # whatever the test's script reads
 #   gui_drive() {                       # optional: the default is below
 #     gui_wait_for "$GUI_TEST_MARKER" && gui_place_window
-#     sleep 5
 #     gui_capture "$screenshot"
 #   }
 #   gui_run "$paraview" --dr --script="$here/x_script.py"
@@ -47,22 +46,72 @@
 #                          ParaView has exited. The limit (GUI_TEST_WAIT,
 #                          180 s unless given) is only there for hangs: no
 #                          test asserts how long anything took.
+#   gui_until SECONDS COMMAND...
+#                          runs COMMAND every 0.2 s until it succeeds; fails
+#                          when it still fails after SECONDS (a limit for
+#                          hangs only) or once ParaView has exited. Steps
+#                          wait for what they need (a file the GUI script
+#                          writes, a dialog having the focus), never for a
+#                          fixed time: a loaded machine only makes them later.
+#   gui_mark_screen        captures the screen before a step that changes it.
+#   gui_wait_still [SECONDS]
+#                          waits until the screen has stopped changing (the
+#                          GUI has drawn what it was asked to): three
+#                          captures in a row that differ in at most a text
+#                          cursor's pixels. After gui_mark_screen, first
+#                          waits for the screen to differ from the mark: a
+#                          GUI busy computing or laying out leaves the
+#                          screen still too, before it draws.
+#   gui_focused WINDOW     true when WINDOW has the keyboard focus.
+#   gui_visible NAME       true when a window named NAME is showing.
+#   expect LINE            passes when the variable $state holds LINE as a
+#                          whole line, else prints FAILED and sets status=1.
 #   gui_place_window [NAME]
 #                          finds the visible window NAME ("ParaView") into
-#                          $window and puts it at 0,0 in 1600x1000.
+#                          $window, puts it at 0,0 in 1600x1000, and waits
+#                          until it has been drawn there (gui_wait_still).
 #   gui_capture FILE       the whole screen as a picture.
 #   gui_type_in_dialog NAME KEYS TEXT
 #                          focuses $window, presses KEYS (ctrl+o), waits for
-#                          the dialog NAME, types TEXT and Enter; fails
-#                          when no dialog showed.
+#                          the dialog NAME to show and take the focus, types
+#                          TEXT and Enter; fails when no dialog showed. The
+#                          screen is marked before Enter (gui_wait_still).
+#   gui_quick_launch LABEL creates a filter on the active source by the quick
+#                          launch: Ctrl+Space, LABEL typed into its dialog,
+#                          Enter; returns once the dialog has closed. The
+#                          screen is marked before Enter (gui_wait_still).
 #   gui_wait_exit SECONDS  waits for ParaView to exit by itself; fails when
 #                          it is still running.
+#   gui_count_pixels IMAGE OPTIONS CONDITION...
+#                          counts the pixels of IMAGE, as ImageMagick's
+#                          OPTIONS (-crop 100x100+0+0 +repage) leave it,
+#                          that meet each CONDITION: a numpy expression of
+#                          the 0-255 arrays r, g, b ("(r > 200) & (g < 40)").
+#                          Prints the counts, one a condition.
+#   gui_require_screenshot FILE
+#                          fails, saying so, when FILE (the screenshot) is
+#                          missing or empty.
+#   gui_report_events      prints each line of $work/events (the steps'
+#                          findings, such as a dialog that did not show) as
+#                          a failure, and then sets status=1.
+#   gui_check_no_gdal_probe
+#                          sets status=1 when ParaView's log shows GDAL's
+#                          "not recognized as a supported file format"
+#                          (its raster reader probing a point cloud file).
+#   gui_read_words IMAGE OPTIONS PSM WORDS
+#                          the distinct words of WORDS (an alternation,
+#                          "Ridge|Valley") that tesseract (page segmentation
+#                          PSM) reads in IMAGE as ImageMagick's OPTIONS
+#                          (crop, enlarge) leave it, in gray: sorted, on one
+#                          line. Fails, saying so, when tesseract is missing.
 #   gui_read_marker PATTERN
 #                          reads $GUI_TEST_MARKER into $marker, prints it,
 #                          and fails unless it matches the glob PATTERN.
 # On a failed exit, the last lines of ParaView's and Xvfb's logs are printed;
 # ParaView's log is kept next to the screenshot (NAME.paraview.log).
 # GUI_SCREEN sets the screen (1600x1000x24).
+# Every test has its own HOME (in $work): ParaView's user settings and the
+# state it saves on exit are the test's own, so tests can run side by side.
 
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 gui_pid="" gui_xvfb_pid="" gui_screenshot="" window=""
@@ -71,6 +120,11 @@ gui_init() {
   gui_screenshot=${1:-}
   work=$(mktemp -d)
   export GUI_TEST_WORK=$work GUI_TEST_MARKER=$work/marker
+  # Caches (Mesa's compiled shaders, fonts) stay shared: they are built for
+  # concurrent readers, and only save time.
+  export XDG_CACHE_HOME=${XDG_CACHE_HOME:-${HOME:-/tmp}/.cache}
+  export HOME=$work/home XDG_CONFIG_HOME=$work/home/.config
+  mkdir -p "$XDG_CONFIG_HOME"
   if [ -n "$gui_screenshot" ]; then
     mkdir -p "$(dirname "$gui_screenshot")"
     rm -f "$gui_screenshot" "${gui_screenshot%.*}.paraview.log"
@@ -158,10 +212,9 @@ gui_display_refused_line() {
 }
 
 # The default steps: wait for the script's marker, place the window, let it
-# draw, capture the screen.
+# draw (the window placed, the screen stops changing), capture the screen.
 gui_drive() {
   gui_wait_for "$GUI_TEST_MARKER" && gui_place_window
-  sleep 5
   [ -n "$gui_screenshot" ] && gui_capture "$gui_screenshot"
   return 0
 }
@@ -203,19 +256,49 @@ gui_run_foreground() {
 }
 
 gui_wait_for() {
-  local file=$1 limit=${2:-${GUI_TEST_WAIT:-180}} i
-  for i in $(seq 1 "$limit"); do
-    [ -s "$file" ] && return 0
-    [ -n "$gui_pid" ] && ! kill -0 "$gui_pid" 2>/dev/null && break
-    sleep 1
-  done
-  [ -s "$file" ]
+  gui_until "${2:-${GUI_TEST_WAIT:-180}}" test -s "$1"
 }
 
+gui_until() {
+  local limit=$1 start=$SECONDS
+  shift
+  until "$@"; do
+    if [ $((SECONDS - start)) -ge "$limit" ] || { [ -n "$gui_pid" ] && ! kill -0 "$gui_pid" 2>/dev/null; }; then
+      "$@"
+      return
+    fi
+    sleep 0.2
+  done
+}
+
+gui_focused() {
+  [ "$(xdotool getwindowfocus 2>/dev/null)" = "$1" ]
+}
+
+# Pixels that may differ between captures of a still screen: a blinking
+# text cursor's.
+gui_still_pixels=64
+
+gui_mark_screen() {
+  import -window root -depth 8 "rgb:$work/still_mark.rgb" 2>/dev/null
+}
+
+# shellcheck disable=SC2120 # callers pass a limit where they need one
+gui_wait_still() {
+  /usr/bin/python3 "$here/wait_still.py" "${1:-60}" "$gui_still_pixels" "$work/still_mark.rgb"
+  rm -f "$work/still_mark.rgb"
+}
+
+# shellcheck disable=SC2120,SC2034 # tests name other windows; eval sets all
 gui_place_window() {
+  local WINDOW X Y WIDTH HEIGHT SCREEN
   window=$(timeout 60 xdotool search --sync --onlyvisible --name "${1:-ParaView}" 2>/dev/null | head -n 1)
   [ -n "$window" ] || return 1
+  eval "$(xdotool getwindowgeometry --shell "$window")"
+  [ "$X $Y $WIDTH $HEIGHT" = "0 0 1600 1000" ] && return 0
+  gui_mark_screen
   xdotool windowmove "$window" 0 0 windowsize "$window" 1600 1000
+  gui_wait_still
 }
 
 gui_capture() {
@@ -223,13 +306,39 @@ gui_capture() {
 }
 
 gui_type_in_dialog() {
+  local dialog
   xdotool windowfocus --sync "$window"
   xdotool key --clearmodifiers "$2"
-  timeout 60 xdotool search --sync --onlyvisible --name "$1" > /dev/null 2>&1 || return 1
-  sleep 2
+  dialog=$(timeout 60 xdotool search --sync --onlyvisible --name "$1" 2>/dev/null | head -n 1)
+  [ -n "$dialog" ] || return 1
+  gui_until 30 gui_focused "$dialog"
   xdotool type --delay 40 "$3"
   sleep 1
+  gui_mark_screen
   xdotool key Return
+}
+
+gui_visible() {
+  xdotool search --onlyvisible --name "$1" > /dev/null 2>&1
+}
+
+gui_focused_elsewhere() {
+  local focus
+  focus=$(xdotool getwindowfocus 2>/dev/null) && [ "$focus" != "$1" ]
+}
+
+gui_quick_launch() {
+  local dialog
+  xdotool windowfocus --sync "$window"
+  xdotool key --clearmodifiers ctrl+space
+  gui_until 30 gui_focused_elsewhere "$window"
+  dialog=$(xdotool getwindowfocus 2>/dev/null)
+  xdotool type --delay 80 "$1"
+  # The list of matches drawn: Enter takes its first entry.
+  gui_wait_still
+  gui_mark_screen
+  xdotool key Return
+  gui_until 30 gui_focused_elsewhere "$dialog"
 }
 
 gui_wait_exit() {
@@ -241,10 +350,61 @@ gui_wait_exit() {
   ! kill -0 "$gui_pid" 2>/dev/null
 }
 
+gui_count_pixels() {
+  local image=$1 options=$2
+  shift 2
+  # shellcheck disable=SC2086 # the options are words on purpose
+  convert "$image" $options -depth 8 rgb:- | /usr/bin/python3 -c '
+import sys
+import numpy
+r, g, b = numpy.frombuffer(sys.stdin.buffer.read(), numpy.uint8).reshape(-1, 3).astype(int).T
+print(" ".join(str(numpy.count_nonzero(eval(condition))) for condition in sys.argv[1:]))' "$@"
+}
+
 gui_read_marker() {
   marker=$(cat "$GUI_TEST_MARKER" 2>/dev/null || echo "no marker: the GUI script did not run")
   echo "GUI script: $marker"
   # shellcheck disable=SC2254 # the pattern is a glob on purpose
   case "$marker" in $1) return 0 ;; esac
   return 1
+}
+
+expect() {
+  if grep -qx "$1" <<< "$state"; then
+    echo "as expected: $1"
+  else
+    echo "FAILED: expected '$1'"
+    status=1
+  fi
+}
+
+gui_require_screenshot() {
+  [ -s "$1" ] && return 0
+  echo "FAILED: no screenshot"
+  return 1
+}
+
+gui_report_events() {
+  [ -s "$work/events" ] || return 0
+  sed "s/^/FAILED: /" "$work/events"
+  status=1
+}
+
+gui_check_no_gdal_probe() {
+  if grep -q "not recognized as a supported file format" "$work/paraview.log"; then
+    echo "FAILED: GDAL's probe message on the terminal: $(grep -m 1 "not recognized" "$work/paraview.log")"
+    status=1
+  else
+    echo "no GDAL probe message"
+  fi
+}
+
+gui_read_words() {
+  if ! command -v tesseract > /dev/null; then
+    echo "FAILED: tesseract is not installed (Scripts/setup.sh installs it)" >&2
+    return 1
+  fi
+  # shellcheck disable=SC2086 # the options are words on purpose
+  convert "$1" $2 -colorspace Gray png:- | tesseract - - --psm "$3" 2>/dev/null |
+    grep -o -w -E "$4" | sort -u | tr '\n' ' '
 }

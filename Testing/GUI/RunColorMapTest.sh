@@ -27,10 +27,7 @@ while read -r _ name _ scale _ _ _ _ map _ low high _ data_low data_high; do
 done < <(grep "^cloud " <<< "$marker")
 maps=$(grep "^cloud " <<< "$marker" | awk '{ print $9 }' | sort -u | wc -l)
 [ "$maps" -eq 3 ] && echo "three clouds, three color maps" || { echo "FAILED: $maps color maps for three clouds"; status=1; }
-if [ ! -s "$screenshot" ]; then
-  echo "FAILED: no screenshot"
-  exit 1
-fi
+gui_require_screenshot "$screenshot" || exit 1
 # The three views as ParaView 5.11 lays them out in the 1600x1000 window:
 # the first top left, the second the whole right half, the third bottom
 # left; the middle of each, sampled at half size. A pixel is red when red

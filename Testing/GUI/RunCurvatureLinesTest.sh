@@ -14,32 +14,29 @@ source "$(dirname "$0")/GuiHarness.sh"
 gui_init "$screenshot"
 export GUI_TEST_PLUGIN=$plugin
 
+# Applies, then waits until the view has rendered with a line of the
+# state that matches PATTERN; with no PATTERN (nothing is sure to change),
+# until the screen is still.
 apply() {
   xdotool windowfocus --sync "$window"
   xdotool key --clearmodifiers alt+a
-  sleep 8
-}
-# Creates a filter on the active source through the quick launch.
-quick_launch() {
-  xdotool windowfocus --sync "$window"
-  xdotool key --clearmodifiers ctrl+space
-  sleep 2
-  xdotool type --delay 80 "$1"
-  sleep 2
-  xdotool key Return
-  sleep 3
+  if [ -n "${1:-}" ]; then
+    gui_until 120 grep -q "$1" "$work/state"
+  else
+    gui_wait_still
+  fi
 }
 gui_drive() {
   gui_wait_for "$GUI_TEST_MARKER"
   if gui_place_window; then
-    sleep 3
+    # The script's reader is not a modified proxy: Apply is disabled, and
+    # the screen may not change.
     apply
-    quick_launch "principal"
-    apply
-    quick_launch "curvature lines"
-    apply
-    for i in $(seq 1 60); do grep -q "^lines shown" "$work/state" 2>/dev/null && break; sleep 1; done
-    sleep 3
+    gui_quick_launch "principal"
+    apply "^curvatures shown$"
+    gui_quick_launch "curvature lines"
+    apply "^lines shown"
+    gui_wait_still
     gui_capture "$screenshot"
   fi
 }
@@ -50,9 +47,6 @@ gui_read_marker 'ready*' || exit 1
 state=$(cat "$work/state" 2>/dev/null)
 echo "after the last Apply:"
 sed "s/^/  /" <<< "$state"
-expect() {
-  if grep -qx "$1" <<< "$state"; then echo "as expected: $1"; else echo "FAILED: expected '$1'"; status=1; fi
-}
 expect "curvatures shown"
 expect "colored by CELLS Line_Kind"
 expect "line width 3"
@@ -61,35 +55,23 @@ expect "annotations 0,Ridge,1,Valley,2,Max of k_max,3,Min of k_max,4,Max of k_mi
 expect "legend 1"
 grep -q "^lines shown [1-9]" <<< "$state" && echo "lines found and shown" ||
   { echo "FAILED: no lines shown"; status=1; }
-if [ ! -s "$screenshot" ]; then
-  echo "FAILED: no screenshot"
-  exit 1
-fi
+gui_require_screenshot "$screenshot" || exit 1
 # The render view (right of the panels) shows the ridge orange (1, 0.6, 0)
 # and the valley green (0, 0.7, 0.35) of the kinds' map, which the
 # curvatures' blue-white-red map has not.
-read -r oranges greens <<< "$(convert "$screenshot" -crop 1100x850+480+100 +repage txt:- |
-  awk -F"[(),: ]+" '/^[0-9]/ { r = $3; g = $4; b = $5
-    if (r > 220 && g > 120 && g < 185 && b < 50) o++
-    if (r < 50 && g > 150 && b > 60 && b < 120) n++ }
-    END { printf "%d %d", o, n }')"
+read -r oranges greens <<< "$(gui_count_pixels "$screenshot" "-crop 1100x850+480+100 +repage" \
+  "(r > 220) & (g > 120) & (g < 185) & (b < 50)" "(r < 50) & (g > 150) & (b > 60) & (b < 120)")"
 if [ "${oranges:-0}" -gt 100 ] && [ "${greens:-0}" -gt 100 ]; then
   echo "screen: $oranges ridge-orange and $greens valley-green pixels"
 else
   echo "FAILED: screen shows ${oranges:-0} ridge-orange and ${greens:-0} valley-green pixels"
   status=1
 fi
-if command -v tesseract > /dev/null; then
-  found=$(convert "$screenshot" -crop 1100x850+480+100 +repage -resize 200% -colorspace Gray png:- |
-    tesseract - - --psm 11 2>/dev/null | grep -o -w -E "Ridge|Valley" | sort -u | tr '\n' ' ')
-  if [ "$(wc -w <<< "$found")" -eq 2 ]; then
-    echo "legend read on screen: $found"
-  else
-    echo "FAILED: the legend's Ridge and Valley are not on screen (read: $found)"
-    status=1
-  fi
+found=$(gui_read_words "$screenshot" "-crop 1100x850+480+100 +repage -resize 200%" 11 "Ridge|Valley")
+if [ "$(wc -w <<< "$found")" -eq 2 ]; then
+  echo "legend read on screen: $found"
 else
-  echo "FAILED: tesseract is not installed (Scripts/setup.sh installs it)"
+  echo "FAILED: the legend's Ridge and Valley are not on screen (read: $found)"
   status=1
 fi
 echo "screenshot: $screenshot"

@@ -30,10 +30,7 @@ else
   echo "FAILED: color range '$low' '$high' not symmetric about zero (mean curvature '$mean_low' '$mean_high')"
   status=1
 fi
-if [ ! -s "$screenshot" ]; then
-  echo "FAILED: no screenshot"
-  exit 1
-fi
+gui_require_screenshot "$screenshot" || exit 1
 # The left column (pipeline browser and Properties panel), enlarged: UI text
 # is too small for OCR at screen size.
 convert "$screenshot" -crop 300x1000+0+0 +repage -resize 300% -colorspace Gray "$work/panel.png"

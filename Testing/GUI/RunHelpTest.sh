@@ -16,7 +16,6 @@ export GUI_TEST_PLUGIN=$plugin
 gui_drive() {
   gui_wait_for "$GUI_TEST_MARKER"
   if gui_place_window; then
-    sleep 5
     gui_capture "$work/before.png"
     # The panel buttons Apply, Reset, Delete, ?: the word Delete by OCR
     # (tsv: left top width height of each word), at three times the size.
@@ -31,7 +30,6 @@ gui_drive() {
       echo "$dx $dy" > "$work/clicked"
       xdotool mousemove $((dx + 27)) "$dy" click 1
       if gui_place_window "Online Help"; then
-        sleep 5
         gui_capture "$screenshot"
         echo found > "$work/help_window"
       fi

@@ -16,19 +16,20 @@ source "$(dirname "$0")/GuiHarness.sh"
 gui_init "$screenshot"
 export GUI_TEST_PLUGIN=$plugin
 
-# Opens a file through File > Open, then applies it.
+# Opens a file through File > Open, then applies it, and waits until the
+# view has rendered it.
 open_and_apply() {
   gui_type_in_dialog "Open File" ctrl+o "$1" ||
     { echo "no Open File dialog for $1" >> "$work/events"; return; }
-  sleep 5
+  gui_wait_still
   xdotool windowfocus --sync "$window"
   xdotool key --clearmodifiers alt+a
-  sleep 6
+  gui_until 120 grep -q "^tile $(basename "$1") " "$work/state"
+  gui_wait_still
 }
 gui_drive() {
   gui_wait_for "$GUI_TEST_MARKER"
   gui_place_window || return
-  sleep 3
   open_and_apply "$work/tile_west.las"
   cp "$work/state" "$work/state_first" 2>/dev/null
   open_and_apply "$work/tile_east.las"
@@ -38,10 +39,7 @@ gui_run "$paraview" --dr --script="$here/lidar_tiles_script.py"
 
 status=0
 gui_read_marker 'ready*' || exit 1
-if [ -s "$work/events" ]; then
-  sed "s/^/FAILED: /" "$work/events"
-  status=1
-fi
+gui_report_events
 echo "after the first tile:"
 sed "s/^/  /" "$work/state_first" 2>/dev/null
 echo "after the second tile:"
@@ -59,14 +57,10 @@ for tile in tile_west.las tile_east.las; do
   case "$line" in *"colored_by RGB map_scalars 0 scalar_bar 0"*) echo "$tile in true colors (RGB, Map Scalars off), no scalar bar" ;;
     *) echo "FAILED: $tile not in true colors with no scalar bar: $line"; status=1 ;; esac
 done
-if [ ! -s "$screenshot" ]; then
-  echo "FAILED: no screenshot"
-  exit 1
-fi
+gui_require_screenshot "$screenshot" || exit 1
 # The render view (right of the panels): pure red and pure green points.
-read -r reds greens <<< "$(convert "$screenshot" -crop 1000x700+500+150 +repage txt:- |
-  awk -F"[(),: ]+" '/^[0-9]/ { if ($3 > 200 && $4 < 40 && $5 < 40) r++; if ($4 > 200 && $3 < 40 && $5 < 40) g++ }
-    END { printf "%d %d", r, g }')"
+read -r reds greens <<< "$(gui_count_pixels "$screenshot" "-crop 1000x700+500+150 +repage" \
+  "(r > 200) & (g < 40) & (b < 40)" "(g > 200) & (r < 40) & (b < 40)")"
 if [ "${reds:-0}" -gt 200 ] && [ "${greens:-0}" -gt 200 ]; then
   echo "view shows the tiles' own colors: $reds pure red and $greens pure green pixels"
 else

@@ -16,14 +16,8 @@ export GUI_TEST_PLUGIN=$plugin GUI_TEST_CLOUD=$cloud
 gui_drive() {
   gui_wait_for "$GUI_TEST_MARKER"
   if gui_place_window; then
-    sleep 3
-    xdotool windowfocus --sync "$window"
-    xdotool key --clearmodifiers ctrl+space
-    sleep 2
-    xdotool type --delay 80 "principal"
-    sleep 2
-    xdotool key Return
-    sleep 4
+    gui_quick_launch "principal"
+    gui_wait_still
   fi
   gui_capture "$screenshot"
 }
@@ -36,10 +30,7 @@ gui_read_marker 'ready*Normals*' || { status=1; echo "FAILED: no cloud with norm
 case "$marker" in *"bad files read by ASCIIPointCloudReader ASCIIPointCloudReader ASCIIPointCloudReader"*)
   echo "bad .xyz files: read by the plugin's reader, shown, no crash" ;;
   *) status=1; echo "FAILED: bad .xyz files not read by the plugin's reader (or the GUI died)" ;; esac
-if [ ! -s "$screenshot" ]; then
-  echo "FAILED: no screenshot"
-  exit 1
-fi
+gui_require_screenshot "$screenshot" || exit 1
 # The pipeline browser (top left), enlarged for OCR.
 convert "$screenshot" -crop 300x300+0+0 +repage -resize 300% -colorspace Gray "$work/browser.png"
 text=$(tesseract "$work/browser.png" - 2>/dev/null)

@@ -21,20 +21,25 @@ awk 'BEGIN { n = 3000; pi = atan2(0, -1)
   > "$work/sphere.xyz"
 export GUI_TEST_PLUGIN=$plugin GUI_TEST_CLOUD=$work/sphere.xyz
 
+saved_or_asked() {
+  [ -s "$1" ] || gui_visible "Configure Writer"
+}
 gui_drive() {
   gui_wait_for "$GUI_TEST_MARKER"
   gui_place_window
-  sleep 3
   for extension in ply csv; do
     if ! gui_type_in_dialog "Save File" ctrl+s "$work/saved.$extension"; then
       echo "no Save File dialog for .$extension" >> "$work/events"
       continue
     fi
-    sleep 3
+    # Saved, or the writer's settings asked for first.
+    gui_until 60 saved_or_asked "$work/saved.$extension"
+    gui_wait_still
     [ "$extension" = ply ] && gui_capture "$screenshot"
-    if xdotool search --onlyvisible --name "Configure Writer" > /dev/null; then
+    if gui_visible "Configure Writer"; then
       xdotool key Return
-      sleep 3
+      gui_until 60 test -s "$work/saved.$extension"
+      gui_wait_still
     fi
   done
 }

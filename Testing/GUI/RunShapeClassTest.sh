@@ -14,9 +14,7 @@ gui_run "$paraview" --dr --script="$here/shape_class_script.py"
 
 gui_read_marker 'ok*' || exit 1
 status=0
-expect() {
-  if grep -qx "$1" <<< "$marker"; then echo "as expected: $1"; else echo "FAILED: expected '$1'"; status=1; fi
-}
+state=$marker
 expect "colored by Shape_Class"
 expect "own map 1"
 expect "categorical 1"
@@ -26,17 +24,11 @@ expect "distinct 7"
 expect "legend 1"
 grep -q "^classes .*2.*6" <<< "$marker" && echo "the torus has domes and saddles" ||
   { echo "FAILED: no domes and saddles on the torus"; status=1; }
-if [ ! -s "$screenshot" ]; then
-  echo "FAILED: no screenshot"
-  exit 1
-fi
+gui_require_screenshot "$screenshot" || exit 1
 # The screen shows the dome red (0.84, 0.15, 0.16) and the saddle green
 # (0.20, 0.65, 0.25) of the categorical map, which no continuous map has.
-read -r reds greens <<< "$(convert "$screenshot" -sample 50% txt:- | awk -F"[(),: ]+" '/^[0-9]/ {
-    r = $3; g = $4; b = $5
-    if (r > 190 && g < 70 && b < 70) red++
-    if (g > 140 && r < 80 && b < 90) green++ }
-    END { printf "%d %d", red, green }')"
+read -r reds greens <<< "$(gui_count_pixels "$screenshot" "-sample 50%" \
+  "(r > 190) & (g < 70) & (b < 70)" "(g > 140) & (r < 80) & (b < 90)")"
 if [ "$reds" -gt 200 ] && [ "$greens" -gt 200 ]; then
   echo "screen: $reds dome-red and $greens saddle-green pixels"
 else
@@ -45,18 +37,12 @@ else
 fi
 # The legend, at the bottom right of the view in the 1600x1000 window: its
 # seven class names read back (tesseract, on the legend enlarged).
-if command -v tesseract > /dev/null; then
-  found=$(convert "$screenshot" -crop 240x330+1380+670 +repage -resize 300% -colorspace Gray png:- |
-    tesseract - - --psm 6 2>/dev/null | grep -o -w -E "Undetermined|Flat|Dome|Cup|Ridge|Valley|Saddle" |
-    sort -u | tr '\n' ' ')
-  if [ "$(wc -w <<< "$found")" -eq 7 ]; then
-    echo "legend read on screen: $found"
-  else
-    echo "FAILED: the legend's seven class names are not on screen (read: $found)"
-    status=1
-  fi
+found=$(gui_read_words "$screenshot" "-crop 240x330+1380+670 +repage -resize 300%" 6 \
+  "Undetermined|Flat|Dome|Cup|Ridge|Valley|Saddle")
+if [ "$(wc -w <<< "$found")" -eq 7 ]; then
+  echo "legend read on screen: $found"
 else
-  echo "FAILED: tesseract is not installed (Scripts/setup.sh installs it)"
+  echo "FAILED: the legend's seven class names are not on screen (read: $found)"
   status=1
 fi
 echo "screenshot: $screenshot"

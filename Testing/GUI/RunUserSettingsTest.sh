@@ -28,17 +28,19 @@ JSON
 
 gui_drive() {
   gui_wait_for "$GUI_TEST_MARKER"
-  sleep 3
-  # A first start with these settings shows the welcome dialog.
+  # The GUI drawn: the welcome dialog a first start with these settings
+  # shows is up.
+  gui_wait_still
   welcome=$(xdotool search --onlyvisible --name "Welcome to ParaView" | head -n 1)
   if [ -n "$welcome" ]; then
     xdotool windowfocus --sync "$welcome"
     xdotool key Escape
-    sleep 2
+    gui_until 30 eval '! gui_visible "Welcome to ParaView"'
   fi
   window=$(xdotool search --onlyvisible --name "ParaView 5" | head -n 1)
   if [ -n "$window" ]; then
-    gui_type_in_dialog "Open File" ctrl+o "$work/scan.xyz" && sleep 6
+    gui_type_in_dialog "Open File" ctrl+o "$work/scan.xyz" &&
+      gui_until 60 grep -q "/scan.xyz$" "$work/sources" && gui_wait_still
     xdotool windowfocus --sync "$window"
     xdotool key --clearmodifiers ctrl+q
   fi

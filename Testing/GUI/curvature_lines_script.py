@@ -3,9 +3,10 @@ RunCurvatureLinesTest.sh: loads the plugin, opens an extruded Gaussian bump
 (a ridge along x = 0, a valley on each side) with exact normals, leaves it
 for the driver to apply, and writes a marker file when the GUI is ready for
 keys. From then on, after every render of the view, it rewrites
-GUI_TEST_WORK/state: whether the curvatures are shown, and for the lines'
-display its coloring (array and association), line width, whether its map
-is categorical, its annotations, and whether its legend shows. The driver
+GUI_TEST_WORK/state: the sources shown, whether the curvatures are shown,
+and for the lines' display its coloring (array and association), line
+width, whether its map is categorical, its annotations, and whether its
+legend shows. The driver
 applies the cloud, creates Principal Curvatures and Curvature Lines by the
 quick launch, and applies each."""
 
@@ -44,6 +45,7 @@ def record_state(caller, event):
             display = shown(source, view)
             if display is None:
                 continue
+            lines.append("shown %s\n" % source.GetXMLName())
             if source.GetXMLName() == "PrincipalCurvatureEstimation":
                 lines.append("curvatures shown\n")
             if source.GetXMLName() != "CurvatureLines":

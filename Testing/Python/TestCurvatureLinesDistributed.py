@@ -22,7 +22,6 @@ the run ends: the ranks agree on the error before any collective step).
 """
 
 import os
-import sys
 
 import numpy
 from paraview import servermanager, simple
@@ -30,6 +29,8 @@ from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
 from vtkmodules.vtkCommonCore import vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
 from vtkmodules.vtkIOXML import vtkXMLPolyDataReader, vtkXMLPolyDataWriter, vtkXMLPPolyDataReader
+
+from test_checks import run_on_every_rank, summary
 
 PIECES = 4
 # VTK's type codes as VTK XML names them.
@@ -230,19 +231,8 @@ def main(plugin, cloud, action, prefix, kind="--clean"):
     print("%-40s %d lines" % ("%d ranks, one point not finite" % ranks, drawn))
     if drawn != 0:
         failures.append("%d ranks, one point not finite: %d lines drawn" % (ranks, drawn))
-    for failure in failures:
-        print("FAILED " + failure)
-    print("%d failed" % len(failures))
-    return 1 if failures else 0
+    return summary(failures)
 
 
 if __name__ == "__main__":
-    if len(sys.argv) not in (5, 6):
-        print(__doc__)
-        sys.exit(2)
-    status = main(*sys.argv[1:])
-    # Under pvbatch --mpi the script runs on rank 0 only: sys.exit there
-    # skips the final barrier and the other ranks are killed. The result is
-    # the "N failed" line (CTest matches it); exit only on failure.
-    if status:
-        sys.exit(status)
+    run_on_every_rank(main, __doc__, (4, 5))

@@ -24,12 +24,13 @@ normals, the outliers' verdicts and the surface points they are moved
 onto, from any rank's part.
 """
 
-import sys
 
 import numpy
 from paraview import servermanager, simple
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkIOXML import vtkXMLPolyDataReader, vtkXMLPolyDataWriter, vtkXMLPPolyDataReader
+
+from test_checks import run_on_every_rank, summary
 
 ARRAYS = ("Minimum_Curvature", "Maximum_Curvature", "Neighbor_Count")
 COUNTS = ("Neighbor_Count", "Target_Neighbor_Count", "Curvature_Trusted", "Shape_Class",
@@ -220,19 +221,8 @@ def main(plugin, cloud, action, prefix, kind="--noisy"):
                     failures.append("%s: fourth-order fits with tilted normals" % label)
                 if not largest > 3000:
                     failures.append("%s: no point past eight radii (%d neighbors)" % (label, largest))
-    for failure in failures:
-        print("FAILED " + failure)
-    print("%d failed" % len(failures))
-    return 1 if failures else 0
+    return summary(failures)
 
 
 if __name__ == "__main__":
-    if len(sys.argv) not in (5, 6):
-        print(__doc__)
-        sys.exit(2)
-    status = main(*sys.argv[1:])
-    # Under pvbatch --mpi the script runs on rank 0 only: sys.exit there
-    # skips the final barrier and the other ranks are killed. The result is
-    # the "N failed" line (CTest matches it); exit only on failure.
-    if status:
-        sys.exit(status)
+    run_on_every_rank(main, __doc__, (4, 5))
