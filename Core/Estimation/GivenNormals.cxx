@@ -26,8 +26,13 @@ constexpr int BaseCount = 16;
 constexpr int Levels = 7;
 /// Lepski's tolerance, in standard errors (as the scales' elsewhere).
 constexpr double AgreementTolerance = 2.0;
-/// A tilt beyond this many standard errors is the given normal's own.
-constexpr double TiltDeviations = 2.0;
+/// A tilt whose square exceeds this many times its error's is counted as
+/// the normal's own: ln 4, the median of that ratio for normals as precise
+/// as the positions' own tilt (the ratio then about exponential with mean
+/// 2), a quarter of the points being beyond it for exact normals (mean 1).
+/// Where most points are, the given normals are less precise than a
+/// normal of the positions, and estimated ones serve the fit better.
+const double TiltRatio = std::log(4.0);
 /// Fewer neighbors determine the cubic's ten unknowns poorly.
 constexpr std::size_t FewestNeighbors = 20;
 /// Fewer tested points decide nothing: the given normals are kept.
@@ -113,8 +118,8 @@ bool FitTilt(const ShellPoints& shell,
 }
 
 /// Whether the given normal of `point` is tilted against the positions
-/// beyond twice the tilt's standard error, at the widest radius whose tilt
-/// agrees with every smaller one's: 1 it is, 0 it is not, -1 no fit.
+/// beyond its error (TiltRatio), at the widest radius whose tilt agrees
+/// with every smaller one's: 1 it is, 0 it is not, -1 no fit.
 int TiltedBeyondNoise(const CloudPoints& cloud,
   const PointGrid& grid,
   std::int64_t point,
@@ -173,7 +178,8 @@ int TiltedBeyondNoise(const CloudPoints& cloud,
   const Tilt& tilt = tilts[chosen];
   const double bias =
     previous < 0 ? 0.0 : std::hypot(tilt.U - tilts[previous].U, tilt.V - tilts[previous].V);
-  return std::hypot(tilt.U, tilt.V) > TiltDeviations * std::hypot(tilt.Error, bias) ? 1 : 0;
+  const double squaredError = tilt.Error * tilt.Error + bias * bias;
+  return tilt.U * tilt.U + tilt.V * tilt.V > TiltRatio * squaredError ? 1 : 0;
 }
 } // namespace
 

@@ -22,15 +22,16 @@ class WorkRunner;
 /// the default fit only (OrientedCircles, the automatic scale, normals not
 /// estimated anyway; the paper's fits keep the normals they are given): at
 /// the points of the cloud's spacing sample (the same points for any split
-/// among processes), the tilt a quadric over the given normal's tangent
+/// among processes), the tilt a cubic over the given normal's tangent
 /// plane finds in it (its slopes at the point) is compared with that
-/// tilt's standard error, at the widest of the radii 1 to 8 typical first
-/// radii whose tilt agrees with every smaller one's (Lepski's rule, so
-/// that the surface's bending does not pass for a tilt). The normals
-/// disagree when most tested points have a tilt beyond twice its error:
-/// exact normals of a noisy cloud do at a few points only, normals noisier
-/// than a plane of the positions at most. `cloud` gets a halo for the test
-/// (distributed) and is returned without it.
+/// tilt's error, at the widest of the radii 1 to 8 typical first radii
+/// whose tilt agrees with every smaller one's (Lepski's rule, so that the
+/// surface's bending does not pass for a tilt). The normals disagree when
+/// at most tested points the tilt is beyond what a normal as precise as
+/// the positions' own would show at half of them: exact normals of a noisy
+/// cloud are beyond it at few points, normals noisier than a plane of the
+/// positions at most. `cloud` gets a halo for the test (distributed) and
+/// is returned without it.
 bool GivenNormalsDisagree(const EstimationSettings& settings,
   CloudPoints& cloud,
   const Collectives& processes,
