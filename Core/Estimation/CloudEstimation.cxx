@@ -2,6 +2,7 @@
 #include "Cloud/CloudStatistics.h"
 #include "Cloud/Halo.h"
 #include "Common/ScratchPool.h"
+#include "Estimation/GivenNormals.h"
 #include "Estimation/ItemEstimation.h"
 #include "Estimation/RemoteCopies.h"
 #include "Estimation/ResultStore.h"
@@ -157,10 +158,7 @@ void SummarizeThresholds(const NeighborhoodRule& rule,
     summary.UsedPlaneDistanceThreshold = unit.ToInputLength(rule.PlaneDistance);
   }
 }
-} // namespace
 
-namespace
-{
 /// Replaces the normals of the own points of `cloud` by estimated ones
 /// (writing them to out.Normals too). Distributed, every process estimates
 /// the whole cloud, gathered, and keeps its own part: the grid's order, not
@@ -218,6 +216,15 @@ NormalSummary ReplaceNormals(CloudPoints& cloud,
   return summary;
 }
 
+/// Between the serial steps of an estimation (each up to a second or so on
+/// a million points): false once the monitor asks to stop, on any process
+/// (all of them ask here, in the same order: what follows is collective).
+/// `reached` is the part already reported: the progress does not move.
+bool ContinueBetweenSteps(ProgressMonitor* monitor, double reached, const Collectives& processes)
+{
+  const bool local = !monitor || monitor->Continue(reached);
+  return processes.IsDistributed() ? processes.Min(local ? 1 : 0) == 1 : local;
+}
 } // namespace
 
 NormalSummary EstimateCloudNormals(CloudPoints cloud,
@@ -245,19 +252,6 @@ NormalSummary EstimateCloudNormals(CloudPoints cloud,
   }
   return summary;
 }
-
-namespace
-{
-/// Between the serial steps of an estimation (each up to a second or so on
-/// a million points): false once the monitor asks to stop, on any process
-/// (all of them ask here, in the same order: what follows is collective).
-/// `reached` is the part already reported: the progress does not move.
-bool ContinueBetweenSteps(ProgressMonitor* monitor, double reached, const Collectives& processes)
-{
-  const bool local = !monitor || monitor->Continue(reached);
-  return processes.IsDistributed() ? processes.Min(local ? 1 : 0) == 1 : local;
-}
-} // namespace
 
 const char* UnestimatedReasonName(UnestimatedReason reason)
 {
@@ -400,8 +394,8 @@ bool EstimateEveryPoint(CloudPoints cloud,
     rule.Automatic.FourthOrder =
       NormalsFollowTheSurface(cloud, grid, rule, fit, boxes, run.Processes);
     summary.FourthOrderFits = rule.Automatic.FourthOrder;
-    rule.Automatic.EstimatedNormals = settings.EstimateNormals; // see WideLevels
-    if (!rule.Automatic.FourthOrder || settings.EstimateNormals)
+    rule.Automatic.EstimatedNormals = settings.EstimateNormals || summary.GivenNormalsReplaced;
+    if (!rule.Automatic.FourthOrder || rule.Automatic.EstimatedNormals)
     {
       rule.Automatic.SetLevels(rule.Automatic.WideLevels);
     }
@@ -518,8 +512,13 @@ EstimationSummary EstimateCloud(CloudPoints cloud,
   remote.FindAnswers(cloud, processes);
   // The normals' plane fits cost about as much as the curvatures, their
   // orientation a little more; the shares of the progress bar follow.
-  const double normalsShare = settings.EstimateNormals ? 0.45 : 0.0;
-  if (settings.EstimateNormals)
+  // Given normals that the positions contradict: estimated, signed as given.
+  summary.GivenNormalsReplaced = GivenNormalsDisagree(settings, cloud, processes, runner);
+  const std::vector<double> given(
+    summary.GivenNormalsReplaced ? cloud.Normals : std::vector<double>{});
+  const bool estimate = settings.EstimateNormals || summary.GivenNormalsReplaced;
+  const double normalsShare = estimate ? 0.45 : 0.0;
+  if (estimate)
   {
     NormalSettings normals = settings.Normals;
     normals.ChooseScale = settings.Mode == FitMode::OrientedCircles;
@@ -534,6 +533,7 @@ EstimationSummary EstimateCloud(CloudPoints cloud,
       summary.Aborted = true;
       return summary;
     }
+    SignLikeGiven(cloud.Normals, given);
   }
   const CloudBoxes boxes = MeasureBoxes(cloud, processes);
   NeighborhoodRule rule =

@@ -125,6 +125,9 @@ struct EstimationSummary
   /// Whether the automatic scale also fitted the surface's fourth order at
   /// its wide radii (the normals follow the surface closely).
   bool FourthOrderFits = false;
+  /// The given normals disagreed with the positions beyond their noise
+  /// (GivenNormals.h): estimated ones, signed as given, were used instead.
+  bool GivenNormalsReplaced = false;
   /// The caller asked to stop: the buffers are incomplete.
   bool Aborted = false;
 };
