@@ -209,7 +209,8 @@ struct Estimate
   std::vector<double> Minimum, Maximum, MinimumDirection, MaximumDirection;
   std::vector<unsigned char> Valid, Outlier;
   std::vector<double> SurfaceDistance, StandardError;
-  bool FourthOrder = false; // whether the automatic scale fitted the fourth order
+  std::vector<int> NeighborCount;
+  bool NormalsFollow = false; // whether the normals followed the surface (the gate)
 };
 
 /// The core with the filter's defaults (estimating the normals when none
@@ -240,7 +241,8 @@ Estimate Run(const Shape& cloud, bool givenNormals, int threads, bool moveOutlie
   std::vector<double> mean(n), gauss(n), rms(n), surroundings(n), plane(n), fitted(3 * n),
     normals(3 * n);
   e.StandardError.resize(n);
-  std::vector<int> count(n), directions(n);
+  e.NeighborCount.resize(n);
+  std::vector<int> directions(n);
   std::vector<unsigned char> trusted(n);
   CurvatureBuffers out;
   out.Minimum = e.Minimum.data();
@@ -253,7 +255,7 @@ Estimate Run(const Shape& cloud, bool givenNormals, int threads, bool moveOutlie
   out.Surroundings = surroundings.data();
   out.PlaneDistance = plane.data();
   out.Valid = e.Valid.data();
-  out.NeighborCount = count.data();
+  out.NeighborCount = e.NeighborCount.data();
   out.ValidDirections = directions.data();
   out.StandardError = e.StandardError.data();
   out.Trusted = trusted.data();
@@ -262,8 +264,8 @@ Estimate Run(const Shape& cloud, bool givenNormals, int threads, bool moveOutlie
   out.Outlier = e.Outlier.data();
   out.SurfaceDistance = e.SurfaceDistance.data();
   testing::ThreadRunner runner(threads);
-  e.FourthOrder =
-    EstimateCloud(std::move(points), settings, Collectives{}, runner, nullptr, out).FourthOrderFits;
+  e.NormalsFollow = EstimateCloud(std::move(points), settings, Collectives{}, runner, nullptr, out)
+                      .NormalsFollowSurface;
   return e;
 }
 
@@ -391,14 +393,16 @@ Score ScoreOf(const Estimate& e, const Shape& truth, const Shape& noisy)
 void Dump(const std::string& path, const Estimate& e, const Shape& truth, const Shape& noisy)
 {
   std::ofstream file(path);
-  file << "x,y,z,moved,outlier,surface_distance,valid,k1,k2,true_k1,true_k2\n";
+  file << "x,y,z,moved,outlier,surface_distance,valid,k1,k2,true_k1,true_k2,neighbors,"
+          "standard_error\n";
   file.precision(9);
   for (std::size_t i = 0; i < truth.Size(); ++i)
   {
     file << noisy.Points[3 * i] << ',' << noisy.Points[3 * i + 1] << ',' << noisy.Points[3 * i + 2]
          << ',' << int(noisy.Moved[i]) << ',' << int(e.Outlier[i]) << ',' << e.SurfaceDistance[i]
          << ',' << int(e.Valid[i]) << ',' << e.Minimum[i] << ',' << e.Maximum[i] << ','
-         << truth.K1[i] << ',' << truth.K2[i] << '\n';
+         << truth.K1[i] << ',' << truth.K2[i] << ',' << e.NeighborCount[i] << ','
+         << e.StandardError[i] << '\n';
   }
 }
 
@@ -540,7 +544,7 @@ int main(int argc, char* argv[])
       {
         const Estimate e = Run(noisy, g == 0, threads, moveOutliers);
         both[g] = ScoreOf(e, clouds[name], noisy);
-        fourthOrder[g] = e.FourthOrder;
+        fourthOrder[g] = e.NormalsFollow;
         if (!dump.empty())
         {
           Dump(dump + "/" + condition + "_" + name + (g == 0 ? "_given" : "_estimated") + ".csv",
@@ -553,7 +557,7 @@ int main(int argc, char* argv[])
       {
         std::printf("  %-15s %-13s given k %.4f (worst 1 %% %.0f %%), estimated k %.4f; "
                     "k kept %.4f %.4f, moved %.4f %.4f; flagged kept %.2f %%, moved %.1f %%; "
-                    "within 2 SE %.1f %% %.1f %%; fourth order %d %d\n",
+                    "within 2 SE %.1f %% %.1f %%; normals follow %d %d\n",
           condition.c_str(),
           name.c_str(),
           both[0].K,
