@@ -311,14 +311,11 @@ bool ChooseAnchors(AnchorTable& anchors,
   return everyProcessGoesOn && ContinueBetweenSteps(run.Monitor, run.NormalsShare, run.Processes);
 }
 
-/// Whether the automatic scale should fit the surface's fourth order at its
-/// wide radii too: where the normals follow the surface as exact normals
-/// of a noisy cloud do (AutomaticScaleEstimator::NormalFollowsSurface) at
-/// most of the points of the cloud's spacing sample (the same points and
-/// counts for any split among processes). Normals of a few nearest
-/// neighbors' planes share their errors with their neighbors, and the
-/// fourth order's extra unknowns would take those up: they fail the test.
-/// Normals whose scale grew with the noise pass it under light noise.
+/// Whether the combined fit's covariance should judge the automatic scale's
+/// fits: where the normals follow the surface as exact normals of a noisy
+/// cloud do (AutomaticScaleEstimator::NormalFollowsSurface) at most points
+/// of the spacing sample (the same for any split among processes). PCA
+/// normals share their errors with their neighbors: they fail the test.
 bool NormalsFollowTheSurface(const CloudPoints& cloud,
   const PointGrid& grid,
   const NeighborhoodRule& rule,
@@ -391,11 +388,11 @@ bool EstimateEveryPoint(CloudPoints cloud,
   {
     // The lattice first: the gate's fits weigh the noise too.
     rule.Automatic.CoordinateStep = CoordinateSteps(cloud, grid, run.Processes);
-    rule.Automatic.FourthOrder =
+    rule.Automatic.NormalsFollowSurface =
       NormalsFollowTheSurface(cloud, grid, rule, fit, boxes, run.Processes);
-    summary.FourthOrderFits = rule.Automatic.FourthOrder;
+    summary.NormalsFollowSurface = rule.Automatic.NormalsFollowSurface;
     rule.Automatic.EstimatedNormals = settings.EstimateNormals || summary.GivenNormalsReplaced;
-    if (!rule.Automatic.FourthOrder || rule.Automatic.EstimatedNormals)
+    if (rule.Automatic.PositionsErrorsOnly())
     {
       rule.Automatic.SetLevels(rule.Automatic.WideLevels);
     }

@@ -84,8 +84,9 @@ public:
   /// has begun to show. A radius at which too many neighbors' normals
   /// oppose the point's stops the growth (the neighborhood would reach
   /// across the surface).
-  /// With FourthOrder, the radii from four first radii on fit the
-  /// surface's fourth-order terms too. Where the growth stopped within the
+  /// Every radius fits the surface's fourth-order terms too, and keeps
+  /// the third order where the fourth does not show (from four first
+  /// radii on where the normals were estimated). Where the growth stopped within the
   /// first radii (positions with little or no noise), a height jet of the
   /// nearest neighbors (HeightJet.h) replaces the estimate where its error
   /// is the smaller (PreferJet).
