@@ -10,14 +10,6 @@ namespace pcurv
 {
 namespace
 {
-/// NormalFollowsSurface's bound on the fitted tilt's square over the one
-/// the point's displacement along the surface explains: on the shared
-/// accuracy suite the median ratio is 0.2-1.1 with exact normals and 5-600
-/// with PCA normals (at noise 0.1 and 0.5 spacings), and this is about
-/// their geometric mean.
-constexpr double NormalTiltAllowance = 2.4;
-/// NormalFollowsSurface's radius, in first radii.
-constexpr double NormalTestRadius = 4.0;
 /// Simplest's tolerance: two standard errors of the two fits' difference,
 /// each the combined fit's covariance's inflated as the reported error's.
 constexpr double OrderTolerance = 2.0 * CombinedErrorFactor;
@@ -482,44 +474,6 @@ void AutomaticScaleEstimator::GatherLevel(const double* x,
   {
     this->Grid.GatherShell(x, inner, radius, scratch.Shell);
   }
-}
-
-int AutomaticScaleEstimator::NormalFollowsSurface(std::int64_t point,
-  AutomaticScaleScratch& scratch) const
-{
-  const double* x = &this->Cloud.Coordinates[3 * point];
-  const double* n = &this->Cloud.Normals[3 * point];
-  if (n[0] == 0.0 && n[1] == 0.0 && n[2] == 0.0)
-  {
-    return -1;
-  }
-  const double r = std::nextafter(
-    std::min(NormalTestRadius * this->FirstRadius(x, scratch), this->Rule.LargestRadius), HUGE_VAL);
-  if (!(r > 0.0) || !std::isfinite(r))
-  {
-    return -1;
-  }
-  const double inverseRadius = 1.0 / r;
-  const TangentFrame frame = MakeTangentFrame({ { n[0], n[1], n[2] } });
-  const double roundingVariance = RoundingVariance(this->Rule.CoordinateStep, frame.Normal);
-  OrientedCircleAccumulator& accumulator = scratch.Sums;
-  accumulator.Begin(frame);
-  this->Grid.GatherShell(x, 0.0, r, scratch.Shell);
-  this->AddShell(scratch.Shell, inverseRadius, accumulator);
-  OrientedCircleResult result;
-  if (!FitSums(accumulator, frame, inverseRadius, roundingVariance, this->Settings, result) ||
-    !result.Curvature.Valid)
-  {
-    return -1;
-  }
-  // In units of the radius: the tilt is a slope, the displacement's is
-  // the noise variance times the squared curvatures (FittedFrame).
-  const std::array<double, 15>& c = result.Surface.Coefficients;
-  const double tilt = c[3] * c[3] + c[4] * c[4];
-  const double amplitude = std::hypot(c[1], c[2]);
-  const double k1 = c[0] + amplitude, k2 = c[0] - amplitude;
-  const double displacement = result.Surface.NoiseVariance * (k1 * k1 + k2 * k2);
-  return tilt <= NormalTiltAllowance * displacement ? 1 : 0;
 }
 
 bool AutomaticScaleEstimator::AgreesWithSmaller(const OrientedCircleResult& candidate,

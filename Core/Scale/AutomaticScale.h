@@ -92,15 +92,6 @@ public:
   /// is the smaller (PreferJet).
   ScaleEstimate Estimate(std::int64_t point, AutomaticScaleScratch& scratch) const;
 
-  /// Whether the point's normal follows the surface as closely as exact
-  /// normals of a noisy cloud do: at four first radii (about 256
-  /// neighbors), the tilt the fit finds in it is within what the point's
-  /// own displacement along the surface explains (the square of the tilt
-  /// at most NormalTiltAllowance times its expected square). An estimated
-  /// normal is off by its own error, several times more. 1: it follows,
-  /// 0: it does not, -1: no fit there.
-  int NormalFollowsSurface(std::int64_t point, AutomaticScaleScratch& scratch) const;
-
 private:
   /// Replaces `estimate` by the height jet of the JetCount nearest
   /// neighbors where the jet's error (its standard error, inflated for

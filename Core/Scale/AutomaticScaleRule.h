@@ -45,17 +45,12 @@ struct AutomaticScaleRule
   double LargestRadius = 0; // no radius beyond this (a length)
   double TypicalRadius = 0; // the cloud's typical first radius (a length)
   bool ShareFits = false;   // points near an anchor take its fit (SharedFits.h)
-  /// The cloud's normals follow the surface as exact normals of a noisy
-  /// cloud do (AutomaticScaleEstimator::NormalFollowsSurface on a sample):
-  /// the combined fit's covariance then tells the third order from the
-  /// fourth and makes the reported error.
-  bool NormalsFollowSurface = false;
   /// The normals were estimated from the positions: the third and fourth
   /// orders are told apart by the positions' standard errors, since the
   /// neighbors' normals share their errors.
   bool EstimatedNormals = false;
   /// Levels where the normals were estimated or do not follow the surface
-  /// (NormalsFollowSurface false): one radius more, about 4000 neighbors. Normals
+  /// (PositionsErrorsOnly): one radius more, about 4000 neighbors. Normals
   /// estimated from the positions add nothing the positions do not hold,
   /// so the ladder's band is the estimate's own and shows the bias of a
   /// wider radius; where given normals follow the surface the combined
@@ -69,8 +64,11 @@ struct AutomaticScaleRule
   SharingRule Sharing;
 
   /// Whether the positions-only errors judge the fits
-  /// (OrientedCircleResult::PositionsErrorsOnly).
-  bool PositionsErrorsOnly() const { return this->EstimatedNormals || !this->NormalsFollowSurface; }
+  /// (OrientedCircleResult::PositionsErrorsOnly): where the normals were
+  /// estimated. Given normals that the positions do not contradict
+  /// (GivenNormals.h: those that do are replaced) follow the surface, and
+  /// the combined fit's covariance judges.
+  bool PositionsErrorsOnly() const { return this->EstimatedNormals; }
 
   /// The last radius of a ladder of `levels` radii from TypicalRadius.
   double LargestRadiusOf(int levels) const
