@@ -153,7 +153,7 @@ void AddRunFields(vtkPolyData* output,
   }
   if (automaticScale)
   {
-    AddField<vtkIntArray>(output, "Normals_Follow_Surface", summary.NormalsFollowSurface ? 1 : 0);
+    AddField<vtkIntArray>(output, "Fourth_Order_Fits", summary.FourthOrderFits ? 1 : 0);
     AddField<vtkIntArray>(output, "Given_Normals_Replaced", summary.GivenNormalsReplaced ? 1 : 0);
     AddField<vtkIdTypeArray>(output, "Jet_Fit_Points", summary.NumberOfJetPoints);
   }

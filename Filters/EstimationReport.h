@@ -29,7 +29,7 @@ void ReportUnestimated(vtkPrincipalCurvatureEstimation* self,
 /// What the run found, in the output's field data: Trusted_Curvature_Scale
 /// (with Curvature_Trusted), Shape_Class_Names (with the Shape_Class array:
 /// the name of code c at index c), Outlier_Points (with the Outlier array),
-/// Normals_Follow_Surface and Jet_Fit_Points (with the automatic scale) and
+/// Fourth_Order_Fits and Jet_Fit_Points (with the automatic scale) and
 /// Shared_Fit_Points (with it and `shareFits`).
 void AddRunFields(vtkPolyData* output,
   const pcurv::EstimationSummary& summary,

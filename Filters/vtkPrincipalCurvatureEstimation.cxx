@@ -238,7 +238,7 @@ int vtkPrincipalCurvatureEstimation::RequestData(vtkInformation*,
   this->NumberOfUnestimatedPoints = summary.NumberOfUnestimatedPoints;
   this->NumberOfSharedFitPoints = summary.NumberOfSharedPoints;
   this->NumberOfJetFitPoints = summary.NumberOfJetPoints;
-  this->NormalsFollowSurface = summary.NormalsFollowSurface;
+  this->FourthOrderFits = summary.FourthOrderFits;
   pcurv::CopyGeometry(input, output);
   arrays.AddTo(output->GetPointData(), this->DiagnosticArrays);
   pcurv::report::ReportUnestimated(this, summary, processes, output);

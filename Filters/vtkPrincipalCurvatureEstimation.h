@@ -272,7 +272,7 @@ public:
   /// points that took an anchor's fit, whether the wide radii fitted the
   /// surface's fourth order, and the points estimated by a height jet.
   vtkGetMacro(NumberOfSharedFitPoints, vtkIdType);
-  vtkGetMacro(NormalsFollowSurface, bool);
+  vtkGetMacro(FourthOrderFits, bool);
   vtkGetMacro(NumberOfJetFitPoints, vtkIdType);
 
 protected:
@@ -327,7 +327,7 @@ protected:
   vtkIdType NumberOfUnestimatedPoints = 0;
   vtkIdType NumberOfSharedFitPoints = 0;
   vtkIdType NumberOfJetFitPoints = 0;
-  bool NormalsFollowSurface = false;
+  bool FourthOrderFits = false;
 
 private:
   vtkPrincipalCurvatureEstimation(const vtkPrincipalCurvatureEstimation&) = delete;

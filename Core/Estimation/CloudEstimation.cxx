@@ -88,8 +88,8 @@ NeighborhoodRule ChooseThresholds(const EstimationSettings& settings,
     rule.Radius = base; // reported as the used s: the typical first radius
     rule.PlaneDistance = 0.0;
     rule.CellRadius = 2.0 * base;
-    // Which ladder a cloud gets is known only once its normals are (given
-    // ones may be replaced): the halo reaches the longer one's radius.
+    // Which ladder a cloud gets is known only once the halo is there
+    // (NormalsFollowTheSurface): the halo reaches the longer one's radius.
     rule.Reach =
       rule.Automatic.LargestRadiusOf(std::max(rule.Automatic.Levels, rule.Automatic.WideLevels));
     // Sharing pays where neighborhoods are wide (four times the first
@@ -311,6 +311,40 @@ bool ChooseAnchors(AnchorTable& anchors,
   return everyProcessGoesOn && ContinueBetweenSteps(run.Monitor, run.NormalsShare, run.Processes);
 }
 
+/// Whether the automatic scale should fit the surface's fourth order at its
+/// wide radii too: where the normals follow the surface as exact normals
+/// of a noisy cloud do (AutomaticScaleEstimator::NormalFollowsSurface) at
+/// most of the points of the cloud's spacing sample (the same points and
+/// counts for any split among processes). Normals of a few nearest
+/// neighbors' planes share their errors with their neighbors, and the
+/// fourth order's extra unknowns would take those up: they fail the test.
+/// Normals whose scale grew with the noise pass it under light noise.
+bool NormalsFollowTheSurface(const CloudPoints& cloud,
+  const PointGrid& grid,
+  const NeighborhoodRule& rule,
+  const FitSettings& fit,
+  const CloudBoxes& boxes,
+  const Collectives& processes)
+{
+  const AutomaticScaleEstimator estimator(cloud, grid, rule.Automatic, fit);
+  AutomaticScaleScratch scratch;
+  const std::int64_t stride = std::max<std::int64_t>(1, boxes.GlobalCount / 512);
+  std::vector<std::int64_t> counts = { 0, 0 }; // following, tested
+  for (std::int64_t i = 0; i < cloud.NumberOfOwnPoints; ++i)
+  {
+    if (InSpacingSample(
+          &cloud.Coordinates[3 * i], boxes.SampleLower.data(), boxes.SampleUpper.data(), stride))
+    {
+      const int follows = estimator.NormalFollowsSurface(i, scratch);
+      counts[0] += follows > 0 ? 1 : 0;
+      counts[1] += follows >= 0 ? 1 : 0;
+    }
+  }
+  processes.Sum(counts);
+  constexpr std::int64_t FewestTested = 16;
+  return counts[1] >= FewestTested && 2 * counts[0] > counts[1];
+}
+
 /// The estimation proper, on the working copy `cloud` (consumed: it, its
 /// grid and the anchors are freed on return, before the passes over the
 /// results, which on large clouds would otherwise add to the peak memory).
@@ -355,10 +389,13 @@ bool EstimateEveryPoint(CloudPoints cloud,
   fit.MaximumOpposingFraction = settings.MaximumOpposingFraction;
   if (rule.AutomaticScale)
   {
+    // The lattice first: the gate's fits weigh the noise too.
     rule.Automatic.CoordinateStep = CoordinateSteps(cloud, grid, run.Processes);
+    rule.Automatic.FourthOrder =
+      NormalsFollowTheSurface(cloud, grid, rule, fit, boxes, run.Processes);
+    summary.FourthOrderFits = rule.Automatic.FourthOrder;
     rule.Automatic.EstimatedNormals = settings.EstimateNormals || summary.GivenNormalsReplaced;
-    summary.NormalsFollowSurface = !rule.Automatic.EstimatedNormals;
-    if (rule.Automatic.PositionsErrorsOnly())
+    if (!rule.Automatic.FourthOrder || rule.Automatic.EstimatedNormals)
     {
       rule.Automatic.SetLevels(rule.Automatic.WideLevels);
     }

@@ -122,11 +122,9 @@ struct EstimationSummary
   std::int64_t NumberOfJetPoints = 0;
   /// Points flagged and moved onto the surface (CurvatureBuffers::Outlier).
   std::int64_t NumberOfOutliers = 0;
-  /// Whether the cloud's normals follow the surface closely (given ones,
-  /// like exact normals of a noisy cloud): the automatic scale's fits of
-  /// the third and fourth orders were then told apart, and their error
-  /// reported, by the combined fit's covariance.
-  bool NormalsFollowSurface = false;
+  /// Whether the automatic scale also fitted the surface's fourth order at
+  /// its wide radii (the normals follow the surface closely).
+  bool FourthOrderFits = false;
   /// The given normals disagreed with the positions beyond their noise
   /// (GivenNormals.h): estimated ones, signed as given, were used instead.
   bool GivenNormalsReplaced = false;

@@ -61,7 +61,8 @@ struct Tilt
 /// cubic ones are unknowns, so they do not pass for a tilt. The error holds
 /// the slopes' standard error (from the heights' residual variance) and
 /// the tilt that the point's own displacement along the surface gives an
-/// exact normal (the noise variance times the squared curvatures). False where the neighbors do not
+/// exact normal (the noise variance times the squared curvatures), as the
+/// automatic scale's gate counts it. False where the neighbors do not
 /// determine the cubic.
 bool FitTilt(const ShellPoints& shell,
   const std::vector<double>& squared,

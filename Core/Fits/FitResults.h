@@ -147,12 +147,10 @@ struct OrientedCircleResult
   /// Whether CombinedStandardError is the combined fit's own (a fit with
   /// `combinedError`, made where the normals follow the surface).
   bool CombinedCovariance = false;
-  /// Whether the positions-only errors judge the fit even where the
-  /// combined covariance exists: the normals were estimated from the
-  /// positions (their errors are shared among neighbors), or they do not
-  /// follow the surface as exact normals do (the combined covariance
-  /// does not describe their errors).
-  bool PositionsErrorsOnly = false;
+  /// Whether the normals were estimated from the positions: their errors
+  /// are shared among neighbors, so the reported error is the
+  /// positions-only fit's even where the combined covariance exists.
+  bool EstimatedNormals = false;
   double PositionsDiscrepancy = 0.0;
   double TiltBias = 0.0;
   /// The fitted surface, for evaluating it elsewhere (SharedFits.h).

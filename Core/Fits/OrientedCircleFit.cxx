@@ -361,7 +361,7 @@ double ReportedStandardError(const OrientedCircleResult& chosen,
   // precise than the positions alone (of 15 unknowns, or of 10 at the wide
   // radii noise calls for).
   const bool combined =
-    !chosen.PositionsErrorsOnly && (chosen.Order == 4 || chosen.CombinedCovariance);
+    !chosen.EstimatedNormals && (chosen.Order == 4 || chosen.CombinedCovariance);
   const double parts[] = { combined ? CombinedErrorFactor * chosen.CombinedStandardError
                                     : chosen.StandardError,
     combined ? 0.0 : chosen.PositionsDiscrepancy,

@@ -10,6 +10,19 @@ namespace pcurv
 {
 namespace
 {
+/// NormalFollowsSurface's bound on the fitted tilt's square over the one
+/// the point's displacement along the surface explains: on the shared
+/// accuracy suite the median ratio is 0.2-1.1 with exact normals and 5-600
+/// with PCA normals (at noise 0.1 and 0.5 spacings), and this is about
+/// their geometric mean.
+constexpr double NormalTiltAllowance = 2.4;
+/// NormalFollowsSurface's radius, in first radii.
+constexpr double NormalTestRadius = 4.0;
+/// The first radius of the ladder fitted at the fourth order too: four
+/// first radii, about 256 neighbors (the test's radius). Fewer determine
+/// its 15 unknowns poorly where the sampling is uneven (scan lines), and
+/// only noisy clouds grow this far.
+constexpr int FourthOrderFirstLevel = 4;
 /// Simplest's tolerance: two standard errors of the two fits' difference,
 /// each the combined fit's covariance's inflated as the reported error's.
 constexpr double OrderTolerance = 2.0 * CombinedErrorFactor;
@@ -45,23 +58,13 @@ constexpr double LadderBiasAllowance = 3.0;
 /// beyond the largest radius (the first radius is then about the largest).
 constexpr double JetReach = 1.3;
 
-/// The first level of the ladder fitted at the fourth order too. Where the
-/// normals were given, the first: their rows determine the fourth order's
-/// 15 unknowns among a few neighbors, and at the smallest radii it removes
-/// the bias where the curvature is high or varies fast. Where they were
-/// estimated, four first radii (about 256 neighbors): the positions alone
-/// determine its unknowns poorly among fewer where the sampling is uneven
-/// (scan lines).
-int FirstFourthOrderLevel(bool estimatedNormals)
-{
-  return estimatedNormals ? 4 : 0;
-}
-
-/// A fit of the fourth order's sums (either order) whose neighborhood the surface turns through
-/// more than a radian across (radius times the largest |curvature|): a height over the tangent
-/// plane, even of the fourth order, no longer follows it there (an ellipsoid's tips, a thin torus's
-/// tube), and its covariance does not show it. The precise combined fit would show that bias
-/// against smaller radii, but the ladder compares radii by the positions-only error, within which
+/// A fit beside the fourth order's (either order, where the normals follow
+/// the surface) whose neighborhood the surface turns through more than a
+/// radian across (radius times the largest |curvature|): a height over the
+/// tangent plane, even of the fourth order, no longer follows it there (an
+/// ellipsoid's tips, a thin torus's tube), and its covariance does not show
+/// it. The precise combined fit would show that bias against smaller radii,
+/// but the ladder compares radii by the positions-only error, within which
 /// it hides.
 bool TurnsTooFar(const OrientedCircleResult& fit, double radius)
 {
@@ -115,7 +118,7 @@ bool FitSums(OrientedCircleAccumulatorOf<Order>& accumulator,
 /// circles', its error is about twice the third's at the same radius.
 const OrientedCircleResult& Simplest(const OrientedCircleResult& third,
   const OrientedCircleResult& fourth,
-  bool positionsErrorsOnly)
+  bool estimatedNormals)
 {
   if (!fourth.Curvature.Valid)
   {
@@ -125,17 +128,14 @@ const OrientedCircleResult& Simplest(const OrientedCircleResult& third,
   {
     return fourth;
   }
-  // Estimated normals share their errors with their neighbors, and normals
-  // that do not follow the surface err beyond the combined fit's model, so
-  // its covariance overstates their precision; the positions' rows are
-  // independent, and their errors judge the difference.
-  const double thirdError = positionsErrorsOnly ? third.StandardError : third.CombinedStandardError;
-  const double fourthError =
-    positionsErrorsOnly ? fourth.StandardError : fourth.CombinedStandardError;
+  // Estimated normals share their errors with their neighbors, so the
+  // combined fit's covariance overstates its precision; the positions'
+  // rows are independent, and their errors judge the difference.
+  const double thirdError = estimatedNormals ? third.StandardError : third.CombinedStandardError;
+  const double fourthError = estimatedNormals ? fourth.StandardError : fourth.CombinedStandardError;
   const double difference =
     std::sqrt(std::max(0.0, fourthError * fourthError - thirdError * thirdError));
-  const double allowed =
-    (positionsErrorsOnly ? EstimatedOrderTolerance : OrderTolerance) * difference;
+  const double allowed = (estimatedNormals ? EstimatedOrderTolerance : OrderTolerance) * difference;
   const bool agree =
     std::fabs(third.Curvature.MinimumCurvature - fourth.Curvature.MinimumCurvature) <= allowed &&
     std::fabs(third.Curvature.MaximumCurvature - fourth.Curvature.MaximumCurvature) <= allowed;
@@ -144,15 +144,13 @@ const OrientedCircleResult& Simplest(const OrientedCircleResult& third,
 
 /// The fit of the fourth order's sums so far, or of their third order's
 /// part where that agrees (Simplest); false (no fit) where the
-/// neighborhood reaches across the surface. `positionsErrorsOnly`: the
-/// positions-only errors tell the orders apart
-/// (AutomaticScaleRule::PositionsErrorsOnly).
+/// neighborhood reaches across the surface.
 bool FitEitherOrder(QuarticCircleAccumulator& accumulator,
   const TangentFrame& frame,
   double inverseUnit,
   double roundingVariance,
   const FitSettings& settings,
-  bool positionsErrorsOnly,
+  bool estimatedNormals,
   OrientedCircleResult& result)
 {
   const QuarticCircleSums& sums = accumulator.Sums();
@@ -174,7 +172,7 @@ bool FitEitherOrder(QuarticCircleAccumulator& accumulator,
     settings.MinimumPointsPerDirection,
     settings.MaximumOpposingFraction,
     true);
-  result = Simplest(third, fourth, positionsErrorsOnly);
+  result = Simplest(third, fourth, estimatedNormals);
   return true;
 }
 /// The nearest points whose squared distance is below `limit`, in their
@@ -216,26 +214,24 @@ ScaleEstimate AutomaticScaleEstimator::Estimate(std::int64_t point,
   const double inverseUnit = 1.0 / unit;
   const TangentFrame frame = MakeTangentFrame({ { n[0], n[1], n[2] } });
   const double roundingVariance = RoundingVariance(rule.CoordinateStep, frame.Normal);
-  const bool positionsErrorsOnly = rule.PositionsErrorsOnly();
   OrientedCircleAccumulator& accumulator = scratch.Sums;
   accumulator.Begin(frame);
-  // The fourth order's sums, from the first radius that fits it on
-  // (instead of the third's).
-  QuarticCircleAccumulator& quartic = scratch.QuarticSums;
-  const int quarticLevel = FirstFourthOrderLevel(rule.EstimatedNormals);
-  bool fourthOrder = false;
   OrientedCircleResult chosen;
   double chosenRadius = std::numeric_limits<double>::quiet_NaN();
   std::vector<OrientedCircleResult>& accepted = scratch.Scales;
   accepted.clear();
   UnestimatedReason reason = UnestimatedReason::TooFewNeighbors;
   double inner = 0.0;
+  // The fourth order's sums, from FourthOrderFirstLevel on (instead of
+  // the third's).
+  QuarticCircleAccumulator& quartic = scratch.QuarticSums;
+  bool fourthOrder = false;
   // Whether the growth ended by the precision stop.
   bool precise = false;
   for (int level = 0; level < rule.Levels; ++level)
   {
     const double r = std::min(unit * std::pow(2.0, 0.5 * level), rule.LargestRadius);
-    if (level >= quarticLevel && !fourthOrder)
+    if (rule.FourthOrder && level >= FourthOrderFirstLevel && !fourthOrder)
     {
       // The inner radii's neighbors again, into the fourth order's sums.
       fourthOrder = true;
@@ -261,7 +257,7 @@ ScaleEstimate AutomaticScaleEstimator::Estimate(std::int64_t point,
           inverseUnit,
           roundingVariance,
           this->Settings,
-          positionsErrorsOnly,
+          rule.EstimatedNormals,
           result)
       : FitSums(accumulator, frame, inverseUnit, roundingVariance, this->Settings, result);
     if (!fitted)
@@ -269,17 +265,14 @@ ScaleEstimate AutomaticScaleEstimator::Estimate(std::int64_t point,
       reason = UnestimatedReason::ReachesAcross;
       break;
     }
-    result.PositionsErrorsOnly = positionsErrorsOnly;
+    result.EstimatedNormals = rule.EstimatedNormals;
     const int neighbors = result.Curvature.NeighborCount;
     reason = result.Curvature.Valid
       ? UnestimatedReason::TooFewNeighbors
       : UnestimatedReasonOf(result.Curvature, this->Settings.MinimumPointsPerDirection);
     if (result.Curvature.Valid && neighbors >= rule.MinimumCount)
     {
-      // Where even the first radius turns too far, its fit is the best
-      // the sampling allows.
-      if (!AgreesWithSmaller(result, accepted, rule.Tolerance) ||
-        (TurnsTooFar(result, r) && !accepted.empty()))
+      if (!AgreesWithSmaller(result, accepted, rule.Tolerance) || TurnsTooFar(result, r))
       {
         break;
       }
@@ -474,6 +467,44 @@ void AutomaticScaleEstimator::GatherLevel(const double* x,
   {
     this->Grid.GatherShell(x, inner, radius, scratch.Shell);
   }
+}
+
+int AutomaticScaleEstimator::NormalFollowsSurface(std::int64_t point,
+  AutomaticScaleScratch& scratch) const
+{
+  const double* x = &this->Cloud.Coordinates[3 * point];
+  const double* n = &this->Cloud.Normals[3 * point];
+  if (n[0] == 0.0 && n[1] == 0.0 && n[2] == 0.0)
+  {
+    return -1;
+  }
+  const double r = std::nextafter(
+    std::min(NormalTestRadius * this->FirstRadius(x, scratch), this->Rule.LargestRadius), HUGE_VAL);
+  if (!(r > 0.0) || !std::isfinite(r))
+  {
+    return -1;
+  }
+  const double inverseRadius = 1.0 / r;
+  const TangentFrame frame = MakeTangentFrame({ { n[0], n[1], n[2] } });
+  const double roundingVariance = RoundingVariance(this->Rule.CoordinateStep, frame.Normal);
+  OrientedCircleAccumulator& accumulator = scratch.Sums;
+  accumulator.Begin(frame);
+  this->Grid.GatherShell(x, 0.0, r, scratch.Shell);
+  this->AddShell(scratch.Shell, inverseRadius, accumulator);
+  OrientedCircleResult result;
+  if (!FitSums(accumulator, frame, inverseRadius, roundingVariance, this->Settings, result) ||
+    !result.Curvature.Valid)
+  {
+    return -1;
+  }
+  // In units of the radius: the tilt is a slope, the displacement's is
+  // the noise variance times the squared curvatures (FittedFrame).
+  const std::array<double, 15>& c = result.Surface.Coefficients;
+  const double tilt = c[3] * c[3] + c[4] * c[4];
+  const double amplitude = std::hypot(c[1], c[2]);
+  const double k1 = c[0] + amplitude, k2 = c[0] - amplitude;
+  const double displacement = result.Surface.NoiseVariance * (k1 * k1 + k2 * k2);
+  return tilt <= NormalTiltAllowance * displacement ? 1 : 0;
 }
 
 bool AutomaticScaleEstimator::AgreesWithSmaller(const OrientedCircleResult& candidate,

@@ -84,13 +84,21 @@ public:
   /// has begun to show. A radius at which too many neighbors' normals
   /// oppose the point's stops the growth (the neighborhood would reach
   /// across the surface).
-  /// Every radius fits the surface's fourth-order terms too, and keeps
-  /// the third order where the fourth does not show (from four first
-  /// radii on where the normals were estimated). Where the growth stopped within the
+  /// With FourthOrder, the radii from four first radii on fit the
+  /// surface's fourth-order terms too. Where the growth stopped within the
   /// first radii (positions with little or no noise), a height jet of the
   /// nearest neighbors (HeightJet.h) replaces the estimate where its error
   /// is the smaller (PreferJet).
   ScaleEstimate Estimate(std::int64_t point, AutomaticScaleScratch& scratch) const;
+
+  /// Whether the point's normal follows the surface as closely as exact
+  /// normals of a noisy cloud do: at four first radii (about 256
+  /// neighbors), the tilt the fit finds in it is within what the point's
+  /// own displacement along the surface explains (the square of the tilt
+  /// at most NormalTiltAllowance times its expected square). An estimated
+  /// normal is off by its own error, several times more. 1: it follows,
+  /// 0: it does not, -1: no fit there.
+  int NormalFollowsSurface(std::int64_t point, AutomaticScaleScratch& scratch) const;
 
 private:
   /// Replaces `estimate` by the height jet of the JetCount nearest

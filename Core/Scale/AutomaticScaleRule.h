@@ -45,12 +45,13 @@ struct AutomaticScaleRule
   double LargestRadius = 0; // no radius beyond this (a length)
   double TypicalRadius = 0; // the cloud's typical first radius (a length)
   bool ShareFits = false;   // points near an anchor take its fit (SharedFits.h)
+  bool FourthOrder = false; // wide radii fit the surface's fourth order too
   /// The normals were estimated from the positions: the third and fourth
   /// orders are told apart by the positions' standard errors, since the
   /// neighbors' normals share their errors.
   bool EstimatedNormals = false;
   /// Levels where the normals were estimated or do not follow the surface
-  /// (PositionsErrorsOnly): one radius more, about 4000 neighbors. Normals
+  /// (FourthOrder false): one radius more, about 4000 neighbors. Normals
   /// estimated from the positions add nothing the positions do not hold,
   /// so the ladder's band is the estimate's own and shows the bias of a
   /// wider radius; where given normals follow the surface the combined
@@ -62,13 +63,6 @@ struct AutomaticScaleRule
   /// a few neighbors round to one plane), so it floors their variance.
   std::array<double, 3> CoordinateStep{};
   SharingRule Sharing;
-
-  /// Whether the positions-only errors judge the fits
-  /// (OrientedCircleResult::PositionsErrorsOnly): where the normals were
-  /// estimated. Given normals that the positions do not contradict
-  /// (GivenNormals.h: those that do are replaced) follow the surface, and
-  /// the combined fit's covariance judges.
-  bool PositionsErrorsOnly() const { return this->EstimatedNormals; }
 
   /// The last radius of a ladder of `levels` radii from TypicalRadius.
   double LargestRadiusOf(int levels) const

@@ -108,18 +108,18 @@ void TestWideLadder(Checks& checks)
   std::printf("wide ladder: noisy sphere (0.5 h), estimated normals: fourth order %d, largest "
               "count %d, mean |k - exact| R %.5f, within 2 SE %.3f, off by > 20 %% %d (beyond 2 "
               "SE %d, trusted %d); exact normals: fourth order %d, largest count %d\n",
-    run.Summary.NormalsFollowSurface ? 1 : 0,
+    run.Summary.FourthOrderFits ? 1 : 0,
     LargestNeighborCount(run.Out),
     error,
     cover.Share(),
     cover.Far,
     farUncovered,
     farTrusted,
-    given.Summary.NormalsFollowSurface ? 1 : 0,
+    given.Summary.FourthOrderFits ? 1 : 0,
     LargestNeighborCount(given.Serial));
   checks.True("wide ladder: estimated normals, beyond eight radii's 2048 neighbours",
     LargestNeighborCount(run.Out) > 3000);
-  checks.True("wide ladder: exact normals follow the surface", given.Summary.NormalsFollowSurface);
+  checks.True("wide ladder: exact normals, the fourth order on", given.Summary.FourthOrderFits);
   checks.True("wide ladder: exact normals, within eight radii's 2048 neighbours",
     LargestNeighborCount(given.Serial) < 3000);
   // Eight radii gave 0.0102; telling the fourth order from the third by
@@ -259,7 +259,7 @@ void TestSharedFits(Checks& checks)
   checks.True("shared fits: off, no point shared", unshared.NumberOfSharedPoints == 0);
   // Exact normals of a noisy cloud: the checks below cover the anchors'
   // fits of the fourth order too.
-  checks.True("shared fits: the normals follow the surface", summary.NormalsFollowSurface);
+  checks.True("shared fits: the fourth order's fits on", summary.FourthOrderFits);
   checks.True("shared fits: most points of a noisy cloud shared",
     summary.NumberOfSharedPoints > static_cast<std::int64_t>(torus.size() / 2));
   checks.True("shared fits: every point estimated", summary.NumberOfUnestimatedPoints == 0);

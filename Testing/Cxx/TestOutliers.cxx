@@ -156,11 +156,8 @@ void TestStraysWithNormals(Checks& checks)
     s.FarMedian < 0.01);
   checks.True("strays: kept in place, their median error is ten times larger",
     s.KeptFarMedian > 10.0 * s.FarMedian);
-  // Fits of the fourth order at the smallest radii resist strays kept in
-  // place too, so the far points' rms is also bounded on its own.
-  checks.True("strays: the far points' rms error below 0.3", s.FarRms < 0.3);
   checks.True(
-    "strays: kept in place, their rms error is 1.5 times as large", s.KeptFarRms > 1.5 * s.FarRms);
+    "strays: kept in place, their rms error is twice as large", s.KeptFarRms > 2.0 * s.FarRms);
   checks.True("strays: kept in place, no flags",
     std::count(kept.Outlier.begin(), kept.Outlier.end(), 1) == 0);
   // The distance of a far point to the surface, as reported.

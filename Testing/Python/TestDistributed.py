@@ -206,7 +206,7 @@ def main(plugin, cloud, action, prefix, kind="--noisy"):
                     failures.append("%s: only %d points shared fits" % (label, shared))
                 # Exact normals of a noisy cloud: the fourth order's fits too,
                 # decided on a sample drawn from every rank's part.
-                if read_field_value(output, "Normals_Follow_Surface") != 1:
+                if read_field_value(output, "Fourth_Order_Fits") != 1:
                     failures.append("%s: no fourth-order fits with exact normals" % label)
             elif variant in ("fixed", "estimated") and kind == "--outliers":
                 # Outliers moved onto points of the surface that may lie in
