@@ -210,7 +210,7 @@ struct Estimate
   std::vector<unsigned char> Valid, Outlier;
   std::vector<double> SurfaceDistance, StandardError;
   std::vector<int> NeighborCount;
-  bool NormalsFollow = false; // whether the normals followed the surface (the gate)
+  bool FourthOrder = false; // whether the automatic scale fitted the fourth order
 };
 
 /// The core with the filter's defaults (estimating the normals when none
@@ -264,8 +264,8 @@ Estimate Run(const Shape& cloud, bool givenNormals, int threads, bool moveOutlie
   out.Outlier = e.Outlier.data();
   out.SurfaceDistance = e.SurfaceDistance.data();
   testing::ThreadRunner runner(threads);
-  e.NormalsFollow = EstimateCloud(std::move(points), settings, Collectives{}, runner, nullptr, out)
-                      .NormalsFollowSurface;
+  e.FourthOrder =
+    EstimateCloud(std::move(points), settings, Collectives{}, runner, nullptr, out).FourthOrderFits;
   return e;
 }
 
@@ -544,7 +544,7 @@ int main(int argc, char* argv[])
       {
         const Estimate e = Run(noisy, g == 0, threads, moveOutliers);
         both[g] = ScoreOf(e, clouds[name], noisy);
-        fourthOrder[g] = e.NormalsFollow;
+        fourthOrder[g] = e.FourthOrder;
         if (!dump.empty())
         {
           Dump(dump + "/" + condition + "_" + name + (g == 0 ? "_given" : "_estimated") + ".csv",
@@ -557,7 +557,7 @@ int main(int argc, char* argv[])
       {
         std::printf("  %-15s %-13s given k %.4f (worst 1 %% %.0f %%), estimated k %.4f; "
                     "k kept %.4f %.4f, moved %.4f %.4f; flagged kept %.2f %%, moved %.1f %%; "
-                    "within 2 SE %.1f %% %.1f %%; normals follow %d %d\n",
+                    "within 2 SE %.1f %% %.1f %%; fourth order %d %d\n",
           condition.c_str(),
           name.c_str(),
           both[0].K,
