@@ -73,6 +73,18 @@ bool TurnsTooFar(const OrientedCircleResult& fit, double radius)
     radius * std::max(std::fabs(k.MinimumCurvature), std::fabs(k.MaximumCurvature)) > 1.0;
 }
 
+/// `fit`'s standard error at a noise variance of `smallerNoise` where its
+/// own residual's is larger: a residual that grows with the radius beyond
+/// the noise a smaller radius measured is the surface leaving the fit's
+/// model (a crease, a fold), and must not widen the band by which that
+/// radius is judged against the smaller (both variances are in units of the
+/// same first radius).
+double NoiseOnlyError(const OrientedCircleResult& fit, double smallerNoise)
+{
+  const double own = fit.Surface.NoiseVariance;
+  return own > smallerNoise ? fit.StandardError * std::sqrt(smallerNoise / own) : fit.StandardError;
+}
+
 /// The variance (length squared) along `normal` that rounding the
 /// coordinates to their lattice adds: uniform over a step per axis.
 double RoundingVariance(const std::array<double, 3>& step, const Vector3& normal)
@@ -513,7 +525,8 @@ bool AutomaticScaleEstimator::AgreesWithSmaller(const OrientedCircleResult& cand
 {
   for (const OrientedCircleResult& other : smaller)
   {
-    const double allowed = tolerance * (candidate.StandardError + other.StandardError);
+    const double allowed =
+      tolerance * (other.StandardError + NoiseOnlyError(candidate, other.Surface.NoiseVariance));
     if (std::fabs(candidate.Curvature.MinimumCurvature - other.Curvature.MinimumCurvature) >
         allowed ||
       std::fabs(candidate.Curvature.MaximumCurvature - other.Curvature.MaximumCurvature) > allowed)

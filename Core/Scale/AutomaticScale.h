@@ -149,7 +149,8 @@ private:
   }
 
   /// Lepski's test: the principal curvatures agree with each smaller
-  /// radius's within `tolerance` times the sum of their standard errors.
+  /// radius's within `tolerance` times the sum of their standard errors,
+  /// the wider radius's at no more noise than the smaller measured.
   static bool AgreesWithSmaller(const OrientedCircleResult& candidate,
     const std::vector<OrientedCircleResult>& smaller,
     double tolerance);

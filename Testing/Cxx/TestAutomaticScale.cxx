@@ -483,6 +483,99 @@ void TestHeightJetsLittleNoise(Checks& checks)
   }
 }
 
+/// The six faces of a unit box, `perFace` points each, their positions
+/// moved by Gaussian noise of `noise` (a length); exact normals and
+/// curvatures (zero), and each point's distance to the nearest crease as
+/// its boundary distance.
+std::vector<testing::SurfaceSample> NoisyBox(int perFace, double noise, std::uint64_t seed)
+{
+  std::vector<testing::SurfaceSample> box;
+  for (int face = 0; face < 6; ++face)
+  {
+    const int axis = face / 2;
+    const double side = face % 2 == 0 ? -0.5 : 0.5;
+    for (testing::SurfaceSample s : testing::Sample(testing::Plane(0.5), perFace, seed + face))
+    {
+      testing::Vec point{}, normal{}, along{};
+      point[axis] = side;
+      point[(axis + 1) % 3] = s.Point[0];
+      point[(axis + 2) % 3] = s.Point[1];
+      normal[axis] = side > 0.0 ? 1.0 : -1.0;
+      along[(axis + 1) % 3] = 1.0;
+      s.Point = point;
+      s.Normal = normal;
+      s.MaximumDirection = along;
+      box.push_back(s);
+    }
+  }
+  testing::AddPositionNoise(box, noise, seed + 6);
+  return box;
+}
+
+/// A box's flat faces near its creases, with noisy positions: where a
+/// radius of the ladder reaches across a crease, its fit's residual grows
+/// beyond the noise the smaller radii measured. Judged by its own error,
+/// which that residual inflates, the wider radius agrees with the smaller
+/// ones and brings the crease's bend into the face; judged at the smaller
+/// radii's noise, it does not. Given (exact) and estimated normals.
+void TestBoxCreases(Checks& checks)
+{
+  SerialRunner serial;
+  constexpr int PerFace = 4000;
+  const double spacing = 1.0 / std::sqrt(static_cast<double>(PerFace));
+  const auto box = NoisyBox(PerFace, 0.05 * spacing, 301);
+  struct Case
+  {
+    bool Estimate;
+    double NearBound, FarBound;
+  };
+  // rms |k| bounds (in 1/length) near the creases, which the fits judged
+  // by their own errors exceed (1.06 and 3.15), and away from them.
+  for (const Case& c : { Case{ false, 0.9, 0.012 }, Case{ true, 2.9, 0.065 } })
+  {
+    EstimationSettings settings;
+    settings.EstimateNormals = c.Estimate;
+    Results r(box.size(), false);
+    Estimate(box, settings, r, serial);
+    // Points 3 to 8 spacings from a crease, and farther.
+    double squares[2] = { 0.0, 0.0 };
+    int counts[2] = { 0, 0 }, valid[2] = { 0, 0 };
+    for (std::size_t i = 0; i < box.size(); ++i)
+    {
+      const double distance = box[i].BoundaryDistance / spacing;
+      if (distance < 3.0)
+      {
+        continue;
+      }
+      const int band = distance < 8.0 ? 0 : 1;
+      ++counts[band];
+      if (r.Valid[i])
+      {
+        const double k = PointError(r, box, i);
+        squares[band] += k * k;
+        ++valid[band];
+      }
+    }
+    const double near = std::sqrt(squares[0] / std::max(1, valid[0]));
+    const double far = std::sqrt(squares[1] / std::max(1, valid[1]));
+    const std::string what =
+      std::string("box creases, ") + (c.Estimate ? "estimated" : "given") + " normals: ";
+    std::printf("%srms |k| 3-8 spacings from a crease %.4f (%d of %d valid), farther %.4f (%d of "
+                "%d valid)\n",
+      what.c_str(),
+      near,
+      valid[0],
+      counts[0],
+      far,
+      valid[1],
+      counts[1]);
+    checks.True((what + "rms near the creases below its bound").c_str(), near < c.NearBound);
+    checks.True((what + "rms away from them below its bound").c_str(), far < c.FarBound);
+    checks.True((what + "at least 99 % estimated").c_str(),
+      valid[0] >= 0.99 * counts[0] && valid[1] >= 0.99 * counts[1]);
+  }
+}
+
 } // namespace
 
 int main(int argc, char* argv[])
@@ -499,5 +592,6 @@ int main(int argc, char* argv[])
       { "HeightJets", TestHeightJets },
       { "NeighborhoodPlane", TestNeighborhoodPlane },
       { "HeightJetsLittleNoise", TestHeightJetsLittleNoise },
+      { "BoxCreases", TestBoxCreases },
     });
 }
