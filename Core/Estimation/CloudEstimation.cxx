@@ -88,8 +88,8 @@ NeighborhoodRule ChooseThresholds(const EstimationSettings& settings,
     rule.Radius = base; // reported as the used s: the typical first radius
     rule.PlaneDistance = 0.0;
     rule.CellRadius = 2.0 * base;
-    // Which ladder a cloud gets is known only once the halo is there
-    // (NormalsFollowTheSurface): the halo reaches the longer one's radius.
+    // Which ladder a cloud gets is known only once its normals are (given
+    // ones may be replaced): the halo reaches the longer one's radius.
     rule.Reach =
       rule.Automatic.LargestRadiusOf(std::max(rule.Automatic.Levels, rule.Automatic.WideLevels));
     // Sharing pays where neighborhoods are wide (four times the first
@@ -311,14 +311,14 @@ bool ChooseAnchors(AnchorTable& anchors,
   return everyProcessGoesOn && ContinueBetweenSteps(run.Monitor, run.NormalsShare, run.Processes);
 }
 
-/// Whether the automatic scale should fit the surface's fourth order at its
-/// wide radii too: where the normals follow the surface as exact normals
-/// of a noisy cloud do (AutomaticScaleEstimator::NormalFollowsSurface) at
-/// most of the points of the cloud's spacing sample (the same points and
-/// counts for any split among processes). Normals of a few nearest
-/// neighbors' planes share their errors with their neighbors, and the
-/// fourth order's extra unknowns would take those up: they fail the test.
-/// Normals whose scale grew with the noise pass it under light noise.
+/// Whether estimated normals follow the surface as exact normals of a noisy
+/// cloud do (AutomaticScaleEstimator::NormalFollowsSurface), so that the
+/// wide radii fit the fourth order too: at most of the points of the
+/// cloud's spacing sample (the same points and counts for any split among
+/// processes). Normals of a few nearest neighbors' planes share their
+/// errors with their neighbors, and the fourth order's extra unknowns would
+/// take those up: they fail. Normals whose scale grew with the noise pass
+/// under light noise.
 bool NormalsFollowTheSurface(const CloudPoints& cloud,
   const PointGrid& grid,
   const NeighborhoodRule& rule,
@@ -391,11 +391,11 @@ bool EstimateEveryPoint(CloudPoints cloud,
   {
     // The lattice first: the gate's fits weigh the noise too.
     rule.Automatic.CoordinateStep = CoordinateSteps(cloud, grid, run.Processes);
-    rule.Automatic.FourthOrder =
-      NormalsFollowTheSurface(cloud, grid, rule, fit, boxes, run.Processes);
-    summary.FourthOrderFits = rule.Automatic.FourthOrder;
     rule.Automatic.EstimatedNormals = settings.EstimateNormals || summary.GivenNormalsReplaced;
-    if (!rule.Automatic.FourthOrder || rule.Automatic.EstimatedNormals)
+    rule.Automatic.FourthOrder = rule.Automatic.EstimatedNormals &&
+      NormalsFollowTheSurface(cloud, grid, rule, fit, boxes, run.Processes);
+    summary.FourthOrderFits = !rule.Automatic.EstimatedNormals || rule.Automatic.FourthOrder;
+    if (rule.Automatic.EstimatedNormals)
     {
       rule.Automatic.SetLevels(rule.Automatic.WideLevels);
     }

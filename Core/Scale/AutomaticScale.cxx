@@ -18,11 +18,6 @@ namespace
 constexpr double NormalTiltAllowance = 2.4;
 /// NormalFollowsSurface's radius, in first radii.
 constexpr double NormalTestRadius = 4.0;
-/// The first radius of the ladder fitted at the fourth order too: four
-/// first radii, about 256 neighbors (the test's radius). Fewer determine
-/// its 15 unknowns poorly where the sampling is uneven (scan lines), and
-/// only noisy clouds grow this far.
-constexpr int FourthOrderFirstLevel = 4;
 /// Simplest's tolerance: two standard errors of the two fits' difference,
 /// each the combined fit's covariance's inflated as the reported error's.
 constexpr double OrderTolerance = 2.0 * CombinedErrorFactor;
@@ -58,19 +53,39 @@ constexpr double LadderBiasAllowance = 3.0;
 /// beyond the largest radius (the first radius is then about the largest).
 constexpr double JetReach = 1.3;
 
-/// A fit beside the fourth order's (either order, where the normals follow
-/// the surface) whose neighborhood the surface turns through more than a
-/// radian across (radius times the largest |curvature|): a height over the
-/// tangent plane, even of the fourth order, no longer follows it there (an
-/// ellipsoid's tips, a thin torus's tube), and its covariance does not show
-/// it. The precise combined fit would show that bias against smaller radii,
-/// but the ladder compares radii by the positions-only error, within which
-/// it hides.
-bool TurnsTooFar(const OrientedCircleResult& fit, double radius)
+/// The first level of the ladder fitted at the fourth order too. Where the
+/// normals were given, the first: their rows determine the fourth order's
+/// 15 unknowns among a few neighbors, and at the smallest radii it removes
+/// the bias where the curvature is high or varies fast. Where they were
+/// estimated, four first radii (about 256 neighbors), and only where they
+/// follow the surface (AutomaticScaleRule::FourthOrder): the positions
+/// alone determine its unknowns poorly among fewer where the sampling is
+/// uneven (scan lines), and the extra unknowns take up the errors that
+/// estimated normals share with their neighbors.
+int FirstFourthOrderLevel(const AutomaticScaleRule& rule)
+{
+  if (!rule.EstimatedNormals)
+  {
+    return 0;
+  }
+  return rule.FourthOrder ? 4 : rule.Levels;
+}
+
+/// A fit of the fourth order's sums (either order) whose neighborhood the
+/// surface turns through more than a radian across (radius times the
+/// largest |curvature|, less `tolerance` of its standard errors, so that a
+/// curvature noise makes large among a few neighbors does not end the
+/// growth): a height over the tangent plane, even of the fourth order, no
+/// longer follows it there (an ellipsoid's tips, a thin torus's tube), and
+/// its covariance does not show it. The precise combined fit would show
+/// that bias against smaller radii, but the ladder compares radii by the
+/// positions-only error, within which it hides.
+bool TurnsTooFar(const OrientedCircleResult& fit, double radius, double tolerance)
 {
   const PointCurvature& k = fit.Curvature;
+  const double largest = std::max(std::fabs(k.MinimumCurvature), std::fabs(k.MaximumCurvature));
   return (fit.Order == 4 || fit.CombinedCovariance) &&
-    radius * std::max(std::fabs(k.MinimumCurvature), std::fabs(k.MaximumCurvature)) > 1.0;
+    radius * (largest - tolerance * fit.StandardError) > 1.0;
 }
 
 /// `fit`'s standard error at a noise variance of `smallerNoise` where its
@@ -228,22 +243,23 @@ ScaleEstimate AutomaticScaleEstimator::Estimate(std::int64_t point,
   const double roundingVariance = RoundingVariance(rule.CoordinateStep, frame.Normal);
   OrientedCircleAccumulator& accumulator = scratch.Sums;
   accumulator.Begin(frame);
+  // The fourth order's sums, from the first radius that fits it on
+  // (instead of the third's).
+  QuarticCircleAccumulator& quartic = scratch.QuarticSums;
+  const int quarticLevel = FirstFourthOrderLevel(rule);
+  bool fourthOrder = false;
   OrientedCircleResult chosen;
   double chosenRadius = std::numeric_limits<double>::quiet_NaN();
   std::vector<OrientedCircleResult>& accepted = scratch.Scales;
   accepted.clear();
   UnestimatedReason reason = UnestimatedReason::TooFewNeighbors;
   double inner = 0.0;
-  // The fourth order's sums, from FourthOrderFirstLevel on (instead of
-  // the third's).
-  QuarticCircleAccumulator& quartic = scratch.QuarticSums;
-  bool fourthOrder = false;
   // Whether the growth ended by the precision stop.
   bool precise = false;
   for (int level = 0; level < rule.Levels; ++level)
   {
     const double r = std::min(unit * std::pow(2.0, 0.5 * level), rule.LargestRadius);
-    if (rule.FourthOrder && level >= FourthOrderFirstLevel && !fourthOrder)
+    if (level >= quarticLevel && !fourthOrder)
     {
       // The inner radii's neighbors again, into the fourth order's sums.
       fourthOrder = true;
@@ -284,7 +300,10 @@ ScaleEstimate AutomaticScaleEstimator::Estimate(std::int64_t point,
       : UnestimatedReasonOf(result.Curvature, this->Settings.MinimumPointsPerDirection);
     if (result.Curvature.Valid && neighbors >= rule.MinimumCount)
     {
-      if (!AgreesWithSmaller(result, accepted, rule.Tolerance) || TurnsTooFar(result, r))
+      // Where even the first radius turns too far, its fit is the best
+      // the sampling allows.
+      if (!AgreesWithSmaller(result, accepted, rule.Tolerance) ||
+        (TurnsTooFar(result, r, rule.Tolerance) && !accepted.empty()))
       {
         break;
       }

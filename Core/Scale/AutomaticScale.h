@@ -84,11 +84,13 @@ public:
   /// has begun to show. A radius at which too many neighbors' normals
   /// oppose the point's stops the growth (the neighborhood would reach
   /// across the surface).
-  /// With FourthOrder, the radii from four first radii on fit the
-  /// surface's fourth-order terms too. Where the growth stopped within the
-  /// first radii (positions with little or no noise), a height jet of the
-  /// nearest neighbors (HeightJet.h) replaces the estimate where its error
-  /// is the smaller (PreferJet).
+  /// Every radius fits the surface's fourth-order terms too, and keeps
+  /// the third order where the fourth does not show (where the normals
+  /// were estimated, from four first radii on and with FourthOrder only).
+  /// Where the growth stopped within the first radii (positions with
+  /// little or no noise), a height jet of the nearest neighbors
+  /// (HeightJet.h) replaces the estimate where its error is the smaller
+  /// (PreferJet).
   ScaleEstimate Estimate(std::int64_t point, AutomaticScaleScratch& scratch) const;
 
   /// Whether the point's normal follows the surface as closely as exact

@@ -45,18 +45,21 @@ struct AutomaticScaleRule
   double LargestRadius = 0; // no radius beyond this (a length)
   double TypicalRadius = 0; // the cloud's typical first radius (a length)
   bool ShareFits = false;   // points near an anchor take its fit (SharedFits.h)
-  bool FourthOrder = false; // wide radii fit the surface's fourth order too
   /// The normals were estimated from the positions: the third and fourth
   /// orders are told apart by the positions' standard errors, since the
   /// neighbors' normals share their errors.
   bool EstimatedNormals = false;
-  /// Levels where the normals were estimated or do not follow the surface
-  /// (FourthOrder false): one radius more, about 4000 neighbors. Normals
-  /// estimated from the positions add nothing the positions do not hold,
-  /// so the ladder's band is the estimate's own and shows the bias of a
-  /// wider radius; where given normals follow the surface the combined
-  /// fit is far more precise than that band, which hides the bias a wider
-  /// radius adds.
+  /// Where the normals were estimated: whether they follow the surface
+  /// closely enough for the wide radii to fit the fourth order too
+  /// (AutomaticScaleEstimator::NormalFollowsSurface). Given normals fit it
+  /// from the first radius.
+  bool FourthOrder = false;
+  /// Levels where the normals were estimated: one radius more, about 4000
+  /// neighbors. Normals estimated from the positions add nothing the
+  /// positions do not hold, so the ladder's band is the estimate's own and
+  /// shows the bias of a wider radius; where given normals follow the
+  /// surface the combined fit is far more precise than that band, which
+  /// hides the bias a wider radius adds.
   int WideLevels = 9;
   /// The coordinates' lattice step per axis (CoordinateSteps; 0: none):
   /// rounding to it is noise the positions' residual need not show (where
