@@ -256,6 +256,13 @@ ScaleEstimate AutomaticScaleEstimator::Estimate(std::int64_t point,
   double inner = 0.0;
   // Whether the growth ended by the precision stop.
   bool precise = false;
+  // Where the precision stop came at the first radius kept, the fit of the
+  // radius after it: no smaller radius shows the bias of the first one's
+  // truncation, and that bias grows with the radius (with its square at
+  // the third order), so the next radius's difference is about the first
+  // one's own.
+  bool probing = false;
+  OrientedCircleResult beyond;
   for (int level = 0; level < rule.Levels; ++level)
   {
     const double r = std::min(unit * std::pow(2.0, 0.5 * level), rule.LargestRadius);
@@ -294,6 +301,11 @@ ScaleEstimate AutomaticScaleEstimator::Estimate(std::int64_t point,
       break;
     }
     result.EstimatedNormals = rule.EstimatedNormals;
+    if (probing)
+    {
+      beyond = result;
+      break;
+    }
     const int neighbors = result.Curvature.NeighborCount;
     reason = result.Curvature.Valid
       ? UnestimatedReason::TooFewNeighbors
@@ -317,7 +329,12 @@ ScaleEstimate AutomaticScaleEstimator::Estimate(std::int64_t point,
       if (result.StandardError < rule.Precision * magnitude)
       {
         precise = true;
-        break;
+        probing = accepted.size() == 1 && r < rule.LargestRadius;
+        if (!probing)
+        {
+          break;
+        }
+        continue;
       }
     }
     if (r >= rule.LargestRadius)
@@ -330,9 +347,11 @@ ScaleEstimate AutomaticScaleEstimator::Estimate(std::int64_t point,
     chosen.Curvature.Reason = reason;
   }
   // The radius before the chosen one tells how much the growth moved
-  // the estimate: the bias it may have added.
-  const OrientedCircleResult* previous =
-    accepted.size() >= 2 ? &accepted[accepted.size() - 2] : nullptr;
+  // the estimate: the bias it may have added; at the first radius, the one
+  // after it.
+  const OrientedCircleResult* previous = accepted.size() >= 2 ? &accepted[accepted.size() - 2]
+    : beyond.Curvature.Valid                                  ? &beyond
+                                                              : nullptr;
   ScaleEstimate estimate{
     chosen, chosenRadius, ReportedStandardError(chosen, previous, rule.Precision)
   };
