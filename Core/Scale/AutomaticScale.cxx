@@ -260,7 +260,10 @@ ScaleEstimate AutomaticScaleEstimator::Estimate(std::int64_t point,
   // radius after it: no smaller radius shows the bias of the first one's
   // truncation, and that bias grows with the radius (with its square at
   // the third order), so the next radius's difference is about the first
-  // one's own.
+  // one's own. Only where the normals were estimated: given ones fit the
+  // fourth order at the first radius already, whose combined error covers
+  // its smaller bias, and there the extra fit of the fourth order's sums
+  // would cost clean clouds most of their time again.
   bool probing = false;
   OrientedCircleResult beyond;
   for (int level = 0; level < rule.Levels; ++level)
@@ -329,7 +332,7 @@ ScaleEstimate AutomaticScaleEstimator::Estimate(std::int64_t point,
       if (result.StandardError < rule.Precision * magnitude)
       {
         precise = true;
-        probing = accepted.size() == 1 && r < rule.LargestRadius;
+        probing = rule.EstimatedNormals && accepted.size() == 1 && r < rule.LargestRadius;
         if (!probing)
         {
           break;
