@@ -262,8 +262,8 @@ ScaleEstimate AutomaticScaleEstimator::Estimate(std::int64_t point,
   // the third order), so the next radius's difference is about the first
   // one's own. Only where the normals were estimated: given ones fit the
   // fourth order at the first radius already, whose combined error covers
-  // its smaller bias, and there the extra fit of the fourth order's sums
-  // would cost clean clouds most of their time again.
+  // its smaller bias, and there the extra fit would add a fit of the fourth
+  // order's sums at every point of a clean cloud.
   bool probing = false;
   OrientedCircleResult beyond;
   for (int level = 0; level < rule.Levels; ++level)
