@@ -327,10 +327,12 @@ OrientedCircleResult FitOrientedCircles(const OrientedCircleSumsOf<Order>& sums,
   // The surface's coefficients: up to the cubic's, the height, the quartic's
   // (the fit's unknowns have the height last).
   std::array<double, 15>& surface = result.Surface.Coefficients;
-  std::copy_n(combined.X.data(), oriented::FirstQuarticColumn, surface.begin());
+  // (A fit of the second order leaves the cubic's zero.)
+  constexpr int Leading = std::min(oriented::FirstQuarticColumn, PositionUnknowns - 1);
+  std::copy_n(combined.X.data(), Leading, surface.begin());
   surface[oriented::FirstQuarticColumn] = combined.X[PositionUnknowns - 1];
-  std::copy_n(combined.X.data() + oriented::FirstQuarticColumn,
-    PositionUnknowns - 1 - oriented::FirstQuarticColumn,
+  std::copy_n(combined.X.data() + Leading,
+    PositionUnknowns - 1 - Leading,
     surface.begin() + FittedSurface::FirstQuarticCoefficient);
   result.Surface.InverseScale = inverseScale;
   result.Surface.NoiseVariance = positionVariance / 4.0;
@@ -391,30 +393,31 @@ void OrientedCircleEstimator::AddNeighbor(const double offset[3], const double n
   this->Sums.Add(d, normal);
 }
 
-OrientedCircleSums ThirdOrderPart(const QuarticCircleSums& sums)
+template<int Lower, int Higher>
+OrientedCircleSumsOf<Lower> LowerOrderPart(const OrientedCircleSumsOf<Higher>& sums)
 {
-  constexpr int Third = OrientedCircleSums::PositionUnknowns;
-  constexpr int Fourth = QuarticCircleSums::PositionUnknowns;
-  // Up to the cubic's unknowns the same, then the height (last of both).
-  auto positionOf = [](int i) { return i < Third - 1 ? i : Fourth - 1; };
+  constexpr int Low = OrientedCircleSumsOf<Lower>::PositionUnknowns;
+  constexpr int High = OrientedCircleSumsOf<Higher>::PositionUnknowns;
+  // The leading unknowns the same, then the height (last of both).
+  auto positionOf = [](int i) { return i < Low - 1 ? i : High - 1; };
   auto upperIndex = [](int a, int b, int n) { return a * n - a * (a - 1) / 2 + (b - a); };
-  OrientedCircleSums part;
-  for (int a = 0, k = 0; a < Third; ++a)
+  OrientedCircleSumsOf<Lower> part;
+  for (int a = 0, k = 0; a < Low; ++a)
   {
     part.PositionRight[a] = sums.PositionRight[positionOf(a)];
-    for (int b = a; b < Third; ++b)
+    for (int b = a; b < Low; ++b)
     {
       part.PositionMatrix[k++] =
-        sums.PositionMatrix[upperIndex(positionOf(a), positionOf(b), Fourth)];
+        sums.PositionMatrix[upperIndex(positionOf(a), positionOf(b), High)];
     }
   }
-  constexpr int Normals = OrientedCircleSums::NormalUnknowns;
+  constexpr int Normals = OrientedCircleSumsOf<Lower>::NormalUnknowns;
   for (int a = 0, k = 0; a < Normals; ++a)
   {
     part.NormalRight[a] = sums.NormalRight[a];
     for (int b = a; b < Normals; ++b)
     {
-      part.NormalMatrix[k++] = sums.NormalMatrix[upperIndex(a, b, Fourth - 1)];
+      part.NormalMatrix[k++] = sums.NormalMatrix[upperIndex(a, b, High - 1)];
     }
   }
   static_cast<OrientedCircleTallies&>(part) = sums;
@@ -423,6 +426,16 @@ OrientedCircleSums ThirdOrderPart(const QuarticCircleSums& sums)
 
 template class OrientedCircleAccumulatorOf<3>;
 template class OrientedCircleAccumulatorOf<4>;
+template OrientedCircleSumsOf<2> LowerOrderPart<2, 3>(const OrientedCircleSumsOf<3>&);
+template OrientedCircleSumsOf<2> LowerOrderPart<2, 4>(const OrientedCircleSumsOf<4>&);
+template OrientedCircleSumsOf<3> LowerOrderPart<3, 4>(const OrientedCircleSumsOf<4>&);
+template OrientedCircleResult FitOrientedCircles<2>(const QuadraticCircleSums&,
+  const TangentFrame&,
+  double,
+  double,
+  int,
+  double,
+  bool);
 template OrientedCircleResult FitOrientedCircles<3>(const OrientedCircleSums&,
   const TangentFrame&,
   double,

@@ -76,7 +76,7 @@ constexpr double ReportedErrorFactor = 1.5;
 constexpr double CombinedErrorFactor = 4.0;
 
 /// What the sums of a neighborhood hold besides the normal equations'
-/// matrices and right-hand sides: the same for a fit of either order.
+/// matrices and right-hand sides: the same for a fit of any order.
 struct OrientedCircleTallies
 {
   /// The sums of the positions' and the normals' squared targets.
@@ -118,6 +118,7 @@ struct OrientedCircleSumsOf : OrientedCircleTallies
   std::array<double, NormalUnknowns*(NormalUnknowns + 1) / 2> NormalMatrix{};
   std::array<double, NormalUnknowns> NormalRight{};
 };
+using QuadraticCircleSums = OrientedCircleSumsOf<2>;
 using OrientedCircleSums = OrientedCircleSumsOf<3>;
 using QuarticCircleSums = OrientedCircleSumsOf<4>;
 
@@ -194,9 +195,16 @@ OrientedCircleResult FitOrientedCircles(const OrientedCircleSumsOf<Order>& sums,
   double maximumOpposing,
   bool combinedError = false);
 
-/// The sums of the third order's fit within those of the fourth (its
-/// unknowns are a subset of the fourth's).
-OrientedCircleSums ThirdOrderPart(const QuarticCircleSums& sums);
+/// The sums of a lower order's fit within those of a higher (its unknowns
+/// are a subset of the higher's: the leading ones and the height).
+template<int Lower, int Higher>
+OrientedCircleSumsOf<Lower> LowerOrderPart(const OrientedCircleSumsOf<Higher>& sums);
+
+/// The sums of the third order's fit within those of the fourth.
+inline OrientedCircleSums ThirdOrderPart(const QuarticCircleSums& sums)
+{
+  return LowerOrderPart<3>(sums);
+}
 
 /// One query at one scale: Begin, AddNeighbor per neighbor, Estimate.
 class OrientedCircleEstimator

@@ -289,7 +289,8 @@ struct Frame
 };
 
 /// Where each running sum of a fit is, for a fit of the surface's terms up
-/// to order 3 or 4. The unknowns of the positions' rows: C, A, B, the two
+/// to order 3 or 4 (order 2: the part of either without the cubic and
+/// quartic terms, never summed itself). The unknowns of the positions' rows: C, A, B, the two
 /// tilts, the four cubic coefficients (of u^3, u^2 v, u v^2, v^3), at order
 /// 4 the five quartic ones (u^4, u^3 v, u^2 v^2, u v^3, v^4), and last the
 /// query point's height; those of the normals' rows: the same without the
@@ -301,8 +302,8 @@ struct Frame
 template<int Order>
 struct Layout
 {
-  static_assert(Order == 3 || Order == 4, "fits of the third or the fourth order");
-  static constexpr int PositionUnknowns = Order == 3 ? 10 : 15;
+  static_assert(Order >= 2 && Order <= 4, "fits of the second to the fourth order");
+  static constexpr int PositionUnknowns = Order == 2 ? 6 : Order == 3 ? 10 : 15;
   static constexpr int NormalUnknowns = PositionUnknowns - 1;
   static constexpr int PositionMatrixSize = PositionUnknowns * (PositionUnknowns + 1) / 2;
   static constexpr int NormalMatrixSize = NormalUnknowns * (NormalUnknowns + 1) / 2;

@@ -527,7 +527,8 @@ OrientedCircleSumsOf<Order> ReferenceOrientedSums(const TangentFrame& frame,
     const double quartic[5] = {
       u * u * u * u, u * u * u * v, u * u * v * v, u * v * v * v, v * v * v * v
     };
-    double positions[P] = { squared,
+    // Every order's leading columns are the fourth's, the height last.
+    double full[14] = { squared,
       squared * c,
       squared * s,
       2 * u,
@@ -536,10 +537,12 @@ OrientedCircleSumsOf<Order> ReferenceOrientedSums(const TangentFrame& frame,
       2 * u * u * v,
       2 * u * v * v,
       2 * v * v * v };
-    for (int k = 9; k < P - 1; ++k)
+    for (int k = 9; k < 14; ++k)
     {
-      positions[k] = 2 * quartic[k - 9];
+      full[k] = 2 * quartic[k - 9];
     }
+    double positions[P];
+    std::copy_n(full, P - 1, positions);
     positions[P - 1] = 1.0;
     add(positions, P, 2.0 * h, 1.0, sums.PositionMatrix.data(), sums.PositionRight.data());
     sums.PositionTargets += 4.0 * h * h;
@@ -560,7 +563,7 @@ OrientedCircleSumsOf<Order> ReferenceOrientedSums(const TangentFrame& frame,
     {
       t -= (side * normal[k] - frame.Normal[k]) * q[k];
     }
-    double normals[P - 1] = { squared,
+    double normals[14] = { squared,
       squared * c,
       squared * s,
       u,
@@ -569,7 +572,7 @@ OrientedCircleSumsOf<Order> ReferenceOrientedSums(const TangentFrame& frame,
       3 * u * u * v,
       3 * u * v * v,
       3 * v * v * v };
-    for (int k = 9; k < P - 1; ++k)
+    for (int k = 9; k < 14; ++k)
     {
       normals[k] = 4 * quartic[k - 9];
     }
@@ -633,7 +636,8 @@ bool SameSums(const OrientedCircleSums& a, const OrientedCircleSums& b)
 /// bit the same on every instruction set: neighbors with and without
 /// normals, opposing ones, some at the query point or on the normal line,
 /// in batches of every length. The third order's part of the fourth's sums
-/// is the third order's sums, bit for bit.
+/// is the third order's sums, bit for bit, and the second order's part of
+/// either is the second order's rows' sums.
 void TestOrientedSumKernelsAgree(Checks& checks)
 {
   Random random(41);
@@ -717,6 +721,10 @@ void TestOrientedSumKernelsAgree(Checks& checks)
     CompareWithReference(
       fourth.Sums(), ReferenceOrientedSums<4>(frame, neighbors), largestRelative, countsWrong);
     partsDiffer += SameSums(ThirdOrderPart(fourth.Sums()), third.Sums()) ? 0 : 1;
+    // The second order's part, of either: the rows of the second order.
+    const QuadraticCircleSums second = ReferenceOrientedSums<2>(frame, neighbors);
+    CompareWithReference(LowerOrderPart<2>(third.Sums()), second, largestRelative, countsWrong);
+    CompareWithReference(LowerOrderPart<2>(fourth.Sums()), second, largestRelative, countsWrong);
   }
   checks.Equal("oriented sums where a kernel differs from the generic one", differences, 0L);
   checks.Equal("oriented sums differing when added eight at a time", groupingDiffers, 0L);
