@@ -1,6 +1,7 @@
 #include "Scale/AutomaticScale.h"
 
 #include "Fits/HeightJet.h"
+#include "Scale/SimplestOrder.h"
 
 #include <algorithm>
 #include <array>
@@ -18,13 +19,6 @@ namespace
 constexpr double NormalTiltAllowance = 2.4;
 /// NormalFollowsSurface's radius, in first radii.
 constexpr double NormalTestRadius = 4.0;
-/// Simplest's tolerance: two standard errors of the two fits' difference,
-/// each the combined fit's covariance's inflated as the reported error's.
-constexpr double OrderTolerance = 2.0 * CombinedErrorFactor;
-/// Simplest's tolerance where the normals were estimated: two of the
-/// positions-only fits' standard errors of the difference, which need no
-/// inflation.
-constexpr double EstimatedOrderTolerance = 2.0;
 /// Jets are tried where the ladder reached its precision within its first
 /// three radii (up to twice the first, about 64 neighbors): where noise
 /// grows it further, or where its growth stopped for want of agreement
@@ -71,7 +65,7 @@ int FirstFourthOrderLevel(const AutomaticScaleRule& rule)
   return rule.FourthOrder ? 4 : rule.Levels;
 }
 
-/// A fit of the fourth order's sums (either order) whose neighborhood the
+/// A fit of the fourth order's sums (of any order) whose neighborhood the
 /// surface turns through more than a radian across (radius times the
 /// largest |curvature|, less `tolerance` of its standard errors, so that a
 /// curvature noise makes large among a few neighbors does not end the
@@ -136,72 +130,6 @@ bool FitSums(OrientedCircleAccumulatorOf<Order>& accumulator,
   return true;
 }
 
-/// Of two fits of the same neighbors, the third order's where it agrees
-/// with the fourth's within what the fourth's extra unknowns add to the
-/// error (the standard error of their difference: of nested least squares,
-/// the root of the difference of their variances), the fourth's where the
-/// surface's fourth order shows. The fourth order's extra unknowns cost
-/// precision: on a sphere, which has no fourth-order terms beyond its
-/// circles', its error is about twice the third's at the same radius.
-const OrientedCircleResult& Simplest(const OrientedCircleResult& third,
-  const OrientedCircleResult& fourth,
-  bool estimatedNormals)
-{
-  if (!fourth.Curvature.Valid)
-  {
-    return third;
-  }
-  if (!third.Curvature.Valid)
-  {
-    return fourth;
-  }
-  // Estimated normals share their errors with their neighbors, so the
-  // combined fit's covariance overstates its precision; the positions'
-  // rows are independent, and their errors judge the difference.
-  const double thirdError = estimatedNormals ? third.StandardError : third.CombinedStandardError;
-  const double fourthError = estimatedNormals ? fourth.StandardError : fourth.CombinedStandardError;
-  const double difference =
-    std::sqrt(std::max(0.0, fourthError * fourthError - thirdError * thirdError));
-  const double allowed = (estimatedNormals ? EstimatedOrderTolerance : OrderTolerance) * difference;
-  const bool agree =
-    std::fabs(third.Curvature.MinimumCurvature - fourth.Curvature.MinimumCurvature) <= allowed &&
-    std::fabs(third.Curvature.MaximumCurvature - fourth.Curvature.MaximumCurvature) <= allowed;
-  return agree ? third : fourth;
-}
-
-/// The fit of the fourth order's sums so far, or of their third order's
-/// part where that agrees (Simplest); false (no fit) where the
-/// neighborhood reaches across the surface.
-bool FitEitherOrder(QuarticCircleAccumulator& accumulator,
-  const TangentFrame& frame,
-  double inverseUnit,
-  double roundingVariance,
-  const FitSettings& settings,
-  bool estimatedNormals,
-  OrientedCircleResult& result)
-{
-  const QuarticCircleSums& sums = accumulator.Sums();
-  if (sums.ReachesAcross(settings.MaximumOpposingFraction))
-  {
-    return false;
-  }
-  const OrientedCircleResult fourth = FitOrientedCircles(sums,
-    frame,
-    inverseUnit,
-    roundingVariance,
-    settings.MinimumPointsPerDirection,
-    settings.MaximumOpposingFraction,
-    true);
-  const OrientedCircleResult third = FitOrientedCircles(ThirdOrderPart(sums),
-    frame,
-    inverseUnit,
-    roundingVariance,
-    settings.MinimumPointsPerDirection,
-    settings.MaximumOpposingFraction,
-    true);
-  result = Simplest(third, fourth, estimatedNormals);
-  return true;
-}
 /// The nearest points whose squared distance is below `limit`, in their
 /// order (a shell's), into `out`; returns their count. Branch-free: which
 /// side of the limit a point falls on is not predictable.
@@ -289,15 +217,12 @@ ScaleEstimate AutomaticScaleEstimator::Estimate(std::int64_t point,
     }
     inner = r;
     OrientedCircleResult result;
-    const bool fitted = fourthOrder
-      ? FitEitherOrder(quartic,
-          frame,
-          inverseUnit,
-          roundingVariance,
-          this->Settings,
-          rule.EstimatedNormals,
-          result)
-      : FitSums(accumulator, frame, inverseUnit, roundingVariance, this->Settings, result);
+    auto fitSimplest = [&](auto& sums)
+    {
+      return FitSimplestOrder(
+        sums, frame, inverseUnit, roundingVariance, this->Settings, rule.EstimatedNormals, result);
+    };
+    const bool fitted = fourthOrder ? fitSimplest(quartic) : fitSimplest(accumulator);
     if (!fitted)
     {
       reason = UnestimatedReason::ReachesAcross;

@@ -84,9 +84,10 @@ public:
   /// has begun to show. A radius at which too many neighbors' normals
   /// oppose the point's stops the growth (the neighborhood would reach
   /// across the surface).
-  /// Every radius fits the surface's fourth-order terms too, and keeps
-  /// the third order where the fourth does not show (where the normals
-  /// were estimated, from four first radii on and with FourthOrder only).
+  /// Every radius fits the surface's fourth-order terms too (where the
+  /// normals were estimated, from four first radii on and with FourthOrder
+  /// only), and keeps the simplest order whose curvatures the richer
+  /// orders' agree with, the second order included (SimplestOrder.h).
   /// Where the growth stopped within the first radii (positions with
   /// little or no noise), a height jet of the nearest neighbors
   /// (HeightJet.h) replaces the estimate where its error is the smaller

@@ -576,6 +576,64 @@ void TestBoxCreases(Checks& checks)
   }
 }
 
+/// An open cylinder's ends, with noisy positions: there the neighborhood is
+/// one-sided, the cubic's columns are nearly those of the curvatures and
+/// the tilt, and a fit of the third order extrapolates its noise to the
+/// point; the cylinder has no cubic, and the second order's fit, which
+/// agrees with the third's, is many times more precise. Given (exact) and
+/// estimated normals.
+void TestOpenEnds(Checks& checks)
+{
+  SerialRunner serial;
+  constexpr int Count = 20000;
+  const double length = 4.0;
+  const double spacing = std::sqrt(2.0 * testing::Pi * length / Count);
+  std::vector<testing::SurfaceSample> cylinder =
+    testing::Sample(testing::Cylinder(1.0, length), Count, 307);
+  testing::AddPositionNoise(cylinder, 0.3 * spacing, 311);
+  struct Case
+  {
+    bool Estimate;
+    double EndBound;
+  };
+  // rms error bounds (1/length) within 5 spacings of an end, which fits of
+  // the third order there exceed (0.0144 given, 0.0704 estimated).
+  for (const Case& c : { Case{ false, 0.0135 }, Case{ true, 0.04 } })
+  {
+    EstimationSettings settings;
+    settings.EstimateNormals = c.Estimate;
+    Results r(cylinder.size(), false);
+    Estimate(cylinder, settings, r, serial);
+    double squares[2] = { 0.0, 0.0 };
+    int counts[2] = { 0, 0 }, valid[2] = { 0, 0 };
+    for (std::size_t i = 0; i < cylinder.size(); ++i)
+    {
+      const int band = cylinder[i].BoundaryDistance < 5.0 * spacing ? 0 : 1;
+      ++counts[band];
+      if (r.Valid[i])
+      {
+        const double k = PointError(r, cylinder, i);
+        squares[band] += k * k;
+        ++valid[band];
+      }
+    }
+    const double ends = std::sqrt(squares[0] / std::max(1, valid[0]));
+    const double middle = std::sqrt(squares[1] / std::max(1, valid[1]));
+    const std::string what =
+      std::string("open ends, ") + (c.Estimate ? "estimated" : "given") + " normals: ";
+    std::printf("%srms error within 5 spacings of an end %.4f (%d of %d valid), farther %.4f\n",
+      what.c_str(),
+      ends,
+      valid[0],
+      counts[0],
+      middle);
+    checks.True((what + "rms near the ends below its bound").c_str(), ends < c.EndBound);
+    checks.True(
+      (what + "rms near the ends below three times the middle's").c_str(), ends < 3.0 * middle);
+    checks.True((what + "at least 99 % estimated").c_str(), valid[0] >= 0.99 * counts[0]);
+  }
+}
+
 } // namespace
 
 int main(int argc, char* argv[])
@@ -593,5 +651,6 @@ int main(int argc, char* argv[])
       { "NeighborhoodPlane", TestNeighborhoodPlane },
       { "HeightJetsLittleNoise", TestHeightJetsLittleNoise },
       { "BoxCreases", TestBoxCreases },
+      { "OpenEnds", TestOpenEnds },
     });
 }
