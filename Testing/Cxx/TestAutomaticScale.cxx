@@ -483,6 +483,44 @@ void TestHeightJetsLittleNoise(Checks& checks)
   }
 }
 
+/// The rms error of the valid points of two bands, and how many points
+/// each holds and how many of them are valid; `bandOf(i)` is the band of
+/// point i, 0 or 1, or -1 for a point left out.
+struct BandErrors
+{
+  double Rms[2] = { 0.0, 0.0 };
+  int Counts[2] = { 0, 0 }, Valid[2] = { 0, 0 };
+};
+
+template<class BandOf>
+BandErrors ErrorsByBand(const Results& r,
+  const std::vector<testing::SurfaceSample>& samples,
+  BandOf bandOf)
+{
+  BandErrors bands;
+  double squares[2] = { 0.0, 0.0 };
+  for (std::size_t i = 0; i < samples.size(); ++i)
+  {
+    const int band = bandOf(i);
+    if (band < 0)
+    {
+      continue;
+    }
+    ++bands.Counts[band];
+    if (r.Valid[i])
+    {
+      const double k = PointError(r, samples, i);
+      squares[band] += k * k;
+      ++bands.Valid[band];
+    }
+  }
+  for (int band = 0; band < 2; ++band)
+  {
+    bands.Rms[band] = std::sqrt(squares[band] / std::max(1, bands.Valid[band]));
+  }
+  return bands;
+}
+
 /// The six faces of a unit box, `perFace` points each, their positions
 /// moved by Gaussian noise of `noise` (a length); exact normals and
 /// curvatures (zero), and each point's distance to the nearest crease as
@@ -538,26 +576,16 @@ void TestBoxCreases(Checks& checks)
     Results r(box.size(), false);
     Estimate(box, settings, r, serial);
     // Points 3 to 8 spacings from a crease, and farther.
-    double squares[2] = { 0.0, 0.0 };
-    int counts[2] = { 0, 0 }, valid[2] = { 0, 0 };
-    for (std::size_t i = 0; i < box.size(); ++i)
-    {
-      const double distance = box[i].BoundaryDistance / spacing;
-      if (distance < 3.0)
+    const BandErrors bands = ErrorsByBand(r,
+      box,
+      [&](std::size_t i)
       {
-        continue;
-      }
-      const int band = distance < 8.0 ? 0 : 1;
-      ++counts[band];
-      if (r.Valid[i])
-      {
-        const double k = PointError(r, box, i);
-        squares[band] += k * k;
-        ++valid[band];
-      }
-    }
-    const double near = std::sqrt(squares[0] / std::max(1, valid[0]));
-    const double far = std::sqrt(squares[1] / std::max(1, valid[1]));
+        const double distance = box[i].BoundaryDistance / spacing;
+        return distance < 3.0 ? -1 : distance < 8.0 ? 0 : 1;
+      });
+    const double near = bands.Rms[0], far = bands.Rms[1];
+    const int* valid = bands.Valid;
+    const int* counts = bands.Counts;
     const std::string what =
       std::string("box creases, ") + (c.Estimate ? "estimated" : "given") + " normals: ";
     std::printf("%srms |k| 3-8 spacings from a crease %.4f (%d of %d valid), farther %.4f (%d of "
@@ -604,21 +632,12 @@ void TestOpenEnds(Checks& checks)
     settings.EstimateNormals = c.Estimate;
     Results r(cylinder.size(), false);
     Estimate(cylinder, settings, r, serial);
-    double squares[2] = { 0.0, 0.0 };
-    int counts[2] = { 0, 0 }, valid[2] = { 0, 0 };
-    for (std::size_t i = 0; i < cylinder.size(); ++i)
-    {
-      const int band = cylinder[i].BoundaryDistance < 5.0 * spacing ? 0 : 1;
-      ++counts[band];
-      if (r.Valid[i])
-      {
-        const double k = PointError(r, cylinder, i);
-        squares[band] += k * k;
-        ++valid[band];
-      }
-    }
-    const double ends = std::sqrt(squares[0] / std::max(1, valid[0]));
-    const double middle = std::sqrt(squares[1] / std::max(1, valid[1]));
+    const BandErrors bands = ErrorsByBand(r,
+      cylinder,
+      [&](std::size_t i) { return cylinder[i].BoundaryDistance < 5.0 * spacing ? 0 : 1; });
+    const double ends = bands.Rms[0], middle = bands.Rms[1];
+    const int* valid = bands.Valid;
+    const int* counts = bands.Counts;
     const std::string what =
       std::string("open ends, ") + (c.Estimate ? "estimated" : "given") + " normals: ";
     std::printf("%srms error within 5 spacings of an end %.4f (%d of %d valid), farther %.4f\n",
