@@ -290,15 +290,15 @@ struct Frame
 
 /// Where each running sum of a fit is, for a fit of the surface's terms up
 /// to order 3 or 4 (order 2: the part of either without the cubic and
-/// quartic terms, never summed itself). The unknowns of the positions' rows: C, A, B, the two
-/// tilts, the four cubic coefficients (of u^3, u^2 v, u v^2, v^3), at order
-/// 4 the five quartic ones (u^4, u^3 v, u^2 v^2, u v^3, v^4), and last the
-/// query point's height; those of the normals' rows: the same without the
-/// height. Entries: upper triangles (row by row) and right-hand sides of
-/// both kinds of normal equations, the sums of their weighted squared
-/// targets, the neighbors' counts and the sums of their heights (h, h^2:
-/// those whose normal opposes the query's, and the others) and of their
-/// squared distances D.
+/// quartic terms, never summed itself). The unknowns of the positions'
+/// rows: C, A, B, the two tilts, the four cubic coefficients (of u^3,
+/// u^2 v, u v^2, v^3), at order 4 the five quartic ones (u^4, u^3 v,
+/// u^2 v^2, u v^3, v^4), and last the query point's height; those of the
+/// normals' rows: the same without the height. Entries: upper triangles
+/// (row by row) and right-hand sides of both kinds of normal equations, the
+/// sums of their weighted squared targets, the neighbors' counts and the
+/// sums of their heights (h, h^2: those whose normal opposes the query's,
+/// and the others) and of their squared distances D.
 template<int Order>
 struct Layout
 {
