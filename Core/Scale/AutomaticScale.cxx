@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 
 namespace pcurv
 {
@@ -47,6 +48,9 @@ constexpr double LadderBiasAllowance = 3.0;
 /// beyond the largest radius (the first radius is then about the largest).
 constexpr double JetReach = 1.3;
 
+/// FirstFourthOrderLevel where no level fits the fourth order.
+constexpr int NoFourthOrder = std::numeric_limits<int>::max();
+
 /// The first level of the ladder fitted at the fourth order too. Where the
 /// normals were given, the first: their rows determine the fourth order's
 /// 15 unknowns among a few neighbors, and at the smallest radii it removes
@@ -55,14 +59,15 @@ constexpr double JetReach = 1.3;
 /// follow the surface (AutomaticScaleRule::FourthOrder): the positions
 /// alone determine its unknowns poorly among fewer where the sampling is
 /// uneven (scan lines), and the extra unknowns take up the errors that
-/// estimated normals share with their neighbors.
+/// estimated normals share with their neighbors; none (NoFourthOrder)
+/// where estimated normals do not follow the surface.
 int FirstFourthOrderLevel(const AutomaticScaleRule& rule)
 {
   if (!rule.EstimatedNormals)
   {
     return 0;
   }
-  return rule.FourthOrder ? 4 : rule.Levels;
+  return rule.FourthOrder ? 4 : NoFourthOrder;
 }
 
 /// A fit of the fourth order's sums (of any order) whose neighborhood the
