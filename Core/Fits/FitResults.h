@@ -106,6 +106,34 @@ struct FitSettings
   double MaximumOpposingFraction = 0.05;
 };
 
+/// What the sums of a neighborhood hold besides the normal equations'
+/// matrices and right-hand sides: the same for every fit of the oriented
+/// circles and of the normal field (OrientedCircleFit.h, NormalFieldFit.h).
+struct OrientedCircleTallies
+{
+  /// The sums of the positions' and the normals' squared targets.
+  double PositionTargets = 0.0, NormalTargets = 0.0;
+  int Neighbors = 0;
+  int NeighborsWithNormal = 0;
+  /// Neighbors whose normal points against the query's, and the sums of
+  /// the heights of those and of the others, and of D (all neighbors).
+  int Opposing = 0;
+  double OpposingHeights = 0.0, AgreeingHeights = 0.0, SquaredDistances = 0.0;
+  double OpposingSquaredHeights = 0.0, AgreeingSquaredHeights = 0.0;
+  /// Occupied sixteenths of the turn (phi), and eighths of 2 phi.
+  std::uint32_t Sectors = 0;
+  std::uint32_t HalfTurnPositions = 0;
+
+  /// The neighborhood reaches across the surface (a thin part, two close
+  /// sheets): more than the fraction `maximumOpposing` of the neighbors
+  /// have a normal opposing the query's, and they lie on another level than
+  /// the others (their mean heights differ by more than three standard
+  /// errors of that difference, and by a twentieth of the RMS distance).
+  /// Opposing normals on the query's own sheet are only inconsistently
+  /// oriented normals.
+  bool ReachesAcross(double maximumOpposing) const;
+};
+
 /// The surface the combined fit describes, a height over the query
 /// normal's tangent frame (MakeTangentFrame of that normal, not stored) in
 /// units of the scale (u, v along V0, W0):
@@ -122,6 +150,10 @@ struct FittedSurface
   double InverseScale = 0.0;
   /// The positions' noise variance, in units of the scale squared.
   double NoiseVariance = 0.0;
+  /// The coefficients are the oriented circles' (whose second order is
+  /// that of circles through the query point, completed where the surface
+  /// is evaluated elsewhere), not a height polynomial's (NormalFieldFit.h).
+  bool Circles = true;
 };
 
 /// What the fit of some sums gives: the curvatures (output sign, in
@@ -153,6 +185,10 @@ struct OrientedCircleResult
   bool EstimatedNormals = false;
   double PositionsDiscrepancy = 0.0;
   double TiltBias = 0.0;
+  /// How far the curvatures move when the fit takes the surface's next
+  /// order too (1/length; 0 where no richer fit was made): the model's
+  /// bias, which no covariance shows (NormalFieldFit.h).
+  double OrderDiscrepancy = 0.0;
   /// The fitted surface, for evaluating it elsewhere (SharedFits.h).
   FittedSurface Surface;
 };

@@ -56,6 +56,8 @@ double ResidualVariance(const Solution<N>& s, const Vector<N>& right, double tar
   return std::max(0.0, targets - s.X.dot(right)) / std::max(1, rows - N);
 }
 
+} // namespace
+
 /// The largest circular gap between the occupied eighths of 2 phi is below
 /// a half-turn, and at least three are occupied (the sine fit's rule).
 bool AnglesDetermineSine(std::uint32_t positions)
@@ -124,6 +126,8 @@ TangentFrame FittedFrame(const TangentFrame& frame,
   return turned;
 }
 
+namespace
+{
 int PopCount(std::uint32_t bits)
 {
   int count = 0;
@@ -368,6 +372,7 @@ double ReportedStandardError(const OrientedCircleResult& chosen,
                                     : chosen.StandardError,
     combined ? 0.0 : chosen.PositionsDiscrepancy,
     chosen.TiltBias,
+    chosen.OrderDiscrepancy,
     grown,
     floor };
   double sum = 0.0;

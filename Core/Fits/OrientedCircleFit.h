@@ -75,32 +75,21 @@ constexpr double ReportedErrorFactor = 1.5;
 /// suite. The reported error of a fourth-order fit (ReportedStandardError).
 constexpr double CombinedErrorFactor = 4.0;
 
-/// What the sums of a neighborhood hold besides the normal equations'
-/// matrices and right-hand sides: the same for a fit of any order.
-struct OrientedCircleTallies
-{
-  /// The sums of the positions' and the normals' squared targets.
-  double PositionTargets = 0.0, NormalTargets = 0.0;
-  int Neighbors = 0;
-  int NeighborsWithNormal = 0;
-  /// Neighbors whose normal points against the query's, and the sums of
-  /// the heights of those and of the others, and of D (all neighbors).
-  int Opposing = 0;
-  double OpposingHeights = 0.0, AgreeingHeights = 0.0, SquaredDistances = 0.0;
-  double OpposingSquaredHeights = 0.0, AgreeingSquaredHeights = 0.0;
-  /// Occupied sixteenths of the turn (phi), and eighths of 2 phi.
-  std::uint32_t Sectors = 0;
-  std::uint32_t HalfTurnPositions = 0;
+/// Whether the occupied eighths of 2 phi (bits) determine a sine of
+/// period pi: at least three, the largest circular gap below a half-turn.
+bool AnglesDetermineSine(std::uint32_t positions);
 
-  /// The neighborhood reaches across the surface (a thin part, two close
-  /// sheets): more than the fraction `maximumOpposing` of the neighbors
-  /// have a normal opposing the query's, and they lie on another level than
-  /// the others (their mean heights differ by more than three standard
-  /// errors of that difference, and by a twentieth of the RMS distance).
-  /// Opposing normals on the query's own sheet are only inconsistently
-  /// oriented normals.
-  bool ReachesAcross(double maximumOpposing) const;
-};
+/// The frame of the fitted tangent plane, for the principal directions:
+/// the query's `frame` turned by the share of the fitted tilt (tiltU,
+/// tiltV) that the query point's displacement along the surface does not
+/// explain (TiltShare), in units of the scale; `noiseVariance` is the
+/// positions' along the normal, k1, k2 the principal curvatures.
+TangentFrame FittedFrame(const TangentFrame& frame,
+  double tiltU,
+  double tiltV,
+  double k1,
+  double k2,
+  double noiseVariance);
 
 /// The least-squares sums of the neighbors added so far, in the frame of
 /// the query point and in units of a fixed scale, for a fit of the

@@ -100,7 +100,7 @@ SurfaceJet JetAt(const FittedSurface& surface, double u, double v)
     jet.Fuv += 3.0 * q[1] * uu + 4.0 * q[2] * uv + 3.0 * q[3] * vv;
     jet.Fvv += 2.0 * q[2] * uu + 6.0 * q[3] * uv + 12.0 * q[4] * vv;
   }
-  if (u != 0.0 || v != 0.0)
+  if (surface.Circles && (u != 0.0 || v != 0.0))
   {
     CompleteCircles(x, u, v, jet);
   }
