@@ -81,6 +81,7 @@ pcurv::EstimationSettings CoreSettings(vtkPrincipalCurvatureEstimation* self)
   settings.MinimumPointsPerDirection = self->GetMinimumPointsPerDirection();
   settings.AutomaticScaleTolerance = self->GetAutomaticScaleTolerance();
   settings.ShareFits = self->GetShareFits();
+  settings.NormalFieldFit = self->GetNormalFieldFit();
   settings.DynamicAdjustment = self->GetDynamicAdjustment();
   settings.AutomaticLengthUnit = self->GetAutomaticLengthUnit();
   settings.LengthUnit = self->GetLengthUnit();
@@ -120,6 +121,7 @@ vtkPrincipalCurvatureEstimation::vtkPrincipalCurvatureEstimation()
   this->MinimumPointsPerDirection = defaults.MinimumPointsPerDirection;
   this->AutomaticScaleTolerance = defaults.AutomaticScaleTolerance;
   this->ShareFits = defaults.ShareFits;
+  this->NormalFieldFit = defaults.NormalFieldFit;
   this->DynamicAdjustment = defaults.DynamicAdjustment;
   this->AutomaticLengthUnit = defaults.AutomaticLengthUnit;
   this->LengthUnit = defaults.LengthUnit;
@@ -396,6 +398,7 @@ void vtkPrincipalCurvatureEstimation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MinimumPointsPerDirection: " << this->MinimumPointsPerDirection << "\n";
   os << indent << "AutomaticScaleTolerance: " << this->AutomaticScaleTolerance << "\n";
   os << indent << "ShareFits: " << (this->ShareFits ? "On" : "Off") << "\n";
+  os << indent << "NormalFieldFit: " << (this->NormalFieldFit ? "On" : "Off") << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
   os << indent << "SinglePrecisionOutput: " << (this->SinglePrecisionOutput ? "On" : "Off") << "\n";
   os << indent << "DiagnosticArrays: " << (this->DiagnosticArrays ? "On" : "Off") << "\n";

@@ -128,6 +128,14 @@ public:
   ///@}
 
   ///@{
+  /// AUTOMATIC_SCALE with normals given: where the positions are noisy, the
+  /// curvatures from a fit of the normal field. Off by default.
+  vtkSetMacro(NormalFieldFit, bool);
+  vtkGetMacro(NormalFieldFit, bool);
+  vtkBooleanMacro(NormalFieldFit, bool);
+  ///@}
+
+  ///@{
   /// Derive the thresholds s and p from the cloud (default on).
   vtkSetMacro(AutomaticThresholds, bool);
   vtkGetMacro(AutomaticThresholds, bool);
@@ -302,6 +310,7 @@ protected:
   int MinimumPointsPerDirection;
   double AutomaticScaleTolerance;
   bool ShareFits;
+  bool NormalFieldFit;
   int NumberOfThreads;
   bool SinglePrecisionOutput;
   bool DiagnosticArrays;

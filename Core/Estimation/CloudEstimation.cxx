@@ -395,6 +395,7 @@ bool EstimateEveryPoint(CloudPoints cloud,
     rule.Automatic.FourthOrder = rule.Automatic.EstimatedNormals &&
       NormalsFollowTheSurface(cloud, grid, rule, fit, boxes, run.Processes);
     summary.FourthOrderFits = !rule.Automatic.EstimatedNormals || rule.Automatic.FourthOrder;
+    rule.Automatic.NormalField = settings.NormalFieldFit && !rule.Automatic.EstimatedNormals;
     if (rule.Automatic.EstimatedNormals)
     {
       rule.Automatic.SetLevels(rule.Automatic.WideLevels);
@@ -510,8 +511,7 @@ EstimationSummary EstimateCloud(CloudPoints cloud,
   const std::vector<RepeatedPoint> movedOutliers =
     outliers.Count > 0 ? RemoveRepeatedPoints(cloud) : std::vector<RepeatedPoint>{};
   remote.FindAnswers(cloud, processes);
-  // The normals' plane fits cost about as much as the curvatures, their
-  // orientation a little more; the shares of the progress bar follow.
+  // Plane fits cost about as much as the curvatures, orientation a little more.
   // Given normals that the positions contradict: estimated, signed as given.
   summary.GivenNormalsReplaced = GivenNormalsDisagree(settings, cloud, processes, runner);
   const std::vector<double> given(

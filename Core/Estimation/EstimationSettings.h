@@ -52,6 +52,9 @@ struct EstimationSettings
   /// its own position, instead of gathering nearly the same neighbors
   /// again (SharedFits.h). Off: every point fits its own.
   bool ShareFits = PCURV_DEFAULT("ShareFits") != 0;
+  /// With the automatic scale and normals given: the normal field's fit
+  /// where the positions are noisy (AutomaticScaleRule::NormalField).
+  bool NormalFieldFit = PCURV_DEFAULT("NormalFieldFit") != 0;
   /// OrientedCircles: points far from the surface their neighbors sample
   /// are flagged and moved onto it first (SurfaceOutliers.h), so that they
   /// pull no neighbor's normal or fit and get the nearest surface's

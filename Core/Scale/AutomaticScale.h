@@ -9,6 +9,7 @@
 #define AutomaticScale_h
 
 #include "Cloud/CloudPoints.h"
+#include "Fits/NormalFieldFit.h"
 #include "Fits/OrientedCircleFit.h"
 #include "Neighbors/PointGrid.h"
 #include "Scale/AutomaticScaleRule.h"
@@ -57,6 +58,10 @@ struct AutomaticScaleScratch
   NearestPoints Nearest;
   std::vector<OrientedCircleResult> Scales;
   ShellPoints Jet;
+  NormalFieldAccumulator Field;
+  /// The offsets gathered so far (in units of the first radius), shell
+  /// after shell: the points within any radius of the ladder lead.
+  std::array<std::vector<double>, 3> Gathered;
 };
 
 /// Estimates points of a cloud with the automatic scale; one instance is
@@ -103,7 +108,25 @@ public:
   /// 0: it does not, -1: no fit there.
   int NormalFollowsSurface(std::int64_t point, AutomaticScaleScratch& scratch) const;
 
+  /// Lepski's test: the principal curvatures agree with each smaller
+  /// radius's within `tolerance` times the sum of their standard errors,
+  /// the wider radius's at no more noise than the smaller measured.
+  static bool AgreesWithSmaller(const OrientedCircleResult& candidate,
+    const std::vector<OrientedCircleResult>& smaller,
+    double tolerance);
+
 private:
+  /// Estimate's ladder with the fit of the normal field (NormalFieldFit.h)
+  /// instead of the oriented circles, where the normals were given
+  /// (AutomaticScaleRule::NormalField) and the positions are noisy: the
+  /// same growth and Lepski's rule, the radii with few neighbors left out
+  /// of the judging. False, with `estimate` untouched, where the positions'
+  /// noise at the first radius is small against it: the circles' ladder is
+  /// the better there.
+  bool EstimateNormalField(std::int64_t point,
+    AutomaticScaleScratch& scratch,
+    ScaleEstimate& estimate) const;
+
   /// Replaces `estimate` by the height jet of the JetCount nearest
   /// neighbors where the jet's error (its standard error, inflated for
   /// the bias its residual does not show) is below `ladderError` (the
@@ -132,10 +155,8 @@ private:
 
   /// Adds the points of `shell` (offsets divided by the radius unit) with
   /// their normals to `sums`.
-  template<int Order>
-  void AddShell(const ShellPoints& shell,
-    double inverseUnit,
-    OrientedCircleAccumulatorOf<Order>& sums) const
+  template<typename Accumulator>
+  void AddShell(const ShellPoints& shell, double inverseUnit, Accumulator& sums) const
   {
     constexpr std::size_t Ahead = 16; // the normals are scattered in memory
     for (std::size_t i = 0; i < shell.Count; ++i)
@@ -150,13 +171,6 @@ private:
       sums.Add(d, &this->Cloud.Normals[3 * shell.Ids[i]]);
     }
   }
-
-  /// Lepski's test: the principal curvatures agree with each smaller
-  /// radius's within `tolerance` times the sum of their standard errors,
-  /// the wider radius's at no more noise than the smaller measured.
-  static bool AgreesWithSmaller(const OrientedCircleResult& candidate,
-    const std::vector<OrientedCircleResult>& smaller,
-    double tolerance);
 
   const CloudPoints& Cloud;
   const PointGrid& Grid;

@@ -54,6 +54,9 @@ struct AutomaticScaleRule
   /// (AutomaticScaleEstimator::NormalFollowsSurface). Given normals fit it
   /// from the first radius.
   bool FourthOrder = false;
+  /// The normals were given: the ladder fits the normal field
+  /// (AutomaticScaleEstimator::EstimateNormalField).
+  bool NormalField = false;
   /// Levels where the normals were estimated: one radius more, about 4000
   /// neighbors. Normals estimated from the positions add nothing the
   /// positions do not hold, so the ladder's band is the estimate's own and

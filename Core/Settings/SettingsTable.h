@@ -59,6 +59,8 @@ constexpr SettingSpec Table[] = {
     "Automatic: standard errors two radii's estimates may differ by for the larger to be kept" },
   { "ShareFits", nullptr, "estimate", SettingType::Bool, { 1 }, 0, 1, "", "",
     "Automatic: points near an anchor point with a wide neighborhood take its fitted surface, evaluated at their own position, instead of fitting nearly the same neighbors again ([method.md](method.md) section 10, \"Shared fits\"); off: every point fits its own, several times slower on noisy clouds" },
+  { "NormalFieldFit", nullptr, "estimate", SettingType::Bool, { 0 }, 0, 1, "", "",
+    "Automatic, with normals given: where the positions are noisy, the curvatures from a fit of the normal field instead of the oriented circles ([method.md](method.md) section 10, \"The normal field\"); more accurate under position noise, less smooth from point to point (Curvature Lines find fewer lines); off by default" },
   { "AutomaticThresholds", nullptr, "estimate", SettingType::Bool, { 1 }, 0, 1, "", "",
     "derive `s` and `p` from the cloud (below)" },
   { "NumberOfNeighbors", nullptr, "estimate", SettingType::Int, { 375 }, 3, 1e6, "neighbors", "",
