@@ -238,10 +238,13 @@ bool AutomaticScaleEstimator::EstimateNormalField(std::int64_t point,
       chosen = result;
       chosenRadius = r;
       chosenCount = gathered[0].size();
-      // More neighbors would not change the estimate measurably: done.
+      // More neighbors would not change the estimate measurably: done. (Not
+      // against the inverse of this radius, as the circles' ladder: the
+      // normals' precise rows reach that early on a dense cloud, long
+      // before the noise is averaged; flat parts grow to the largest.)
       const double magnitude = std::max({ std::fabs(result.Curvature.MinimumCurvature),
         std::fabs(result.Curvature.MaximumCurvature),
-        1.0 / r });
+        1.0 / rule.LargestRadius });
       if (result.StandardError < rule.Precision * magnitude)
       {
         break;
