@@ -9,10 +9,13 @@
 //
 //   SurveyStudy SURVEY_FOLDER [--shapes a,b] [--conditions clean,pos0.01,...]
 //                             [--threads N] [--details] [--keep-outliers] [--dump FOLDER]
+//                             [--normal-field]
 //
 // --details: per shape, also the error of the points left in place and of
 // those made outliers, and the share of each flagged as outliers;
 // --keep-outliers: the estimation without its outlier step (to compare);
+// --normal-field: NormalFieldFit on (the normal field's fit where the given
+// normals' positions are noisy);
 // --dump: every point's position, truth, estimate and verdict as CSV, one
 // file per condition, shape and normals.
 //
@@ -213,6 +216,9 @@ struct Estimate
   bool FourthOrder = false; // whether the automatic scale fitted the fourth order
 };
 
+/// EstimationSettings::NormalFieldFit for every run (--normal-field).
+bool NormalFieldFit = false;
+
 /// The core with the filter's defaults (estimating the normals when none
 /// are given), on all cores.
 Estimate Run(const Shape& cloud, bool givenNormals, int threads, bool moveOutliers)
@@ -230,6 +236,7 @@ Estimate Run(const Shape& cloud, bool givenNormals, int threads, bool moveOutlie
   EstimationSettings settings;
   settings.EstimateNormals = !givenNormals;
   settings.MoveOutliers = moveOutliers;
+  settings.NormalFieldFit = NormalFieldFit;
   Estimate e;
   e.Minimum.resize(n);
   e.Maximum.resize(n);
@@ -472,7 +479,7 @@ int main(int argc, char* argv[])
   {
     std::fprintf(stderr,
       "usage: SurveyStudy SURVEY_FOLDER [--shapes a,b] [--conditions c,d] "
-      "[--threads N] [--details] [--keep-outliers] [--dump FOLDER]\n");
+      "[--threads N] [--details] [--keep-outliers] [--dump FOLDER] [--normal-field]\n");
     return EXIT_FAILURE;
   }
   const std::string folder = argv[1];
@@ -502,6 +509,10 @@ int main(int argc, char* argv[])
     else if (arg == "--keep-outliers")
     {
       moveOutliers = false;
+    }
+    else if (arg == "--normal-field")
+    {
+      NormalFieldFit = true;
     }
     else if (arg == "--dump" && a + 1 < argc)
     {
