@@ -132,6 +132,12 @@ struct OrientedCircleTallies
   /// Opposing normals on the query's own sheet are only inconsistently
   /// oriented normals.
   bool ReachesAcross(double maximumOpposing) const;
+
+  /// Why a fit of these sums is not made (None where it is): fewer than
+  /// `fewest` of `count` (the neighbors the fit's rows come from), a
+  /// neighborhood that reaches across the surface, or angles that do not
+  /// determine a sine of period pi (AnglesDetermineSine).
+  UnestimatedReason WhyUnfit(int count, int fewest, double maximumOpposing) const;
 };
 
 /// The surface the combined fit describes, a height over the query

@@ -164,19 +164,10 @@ OrientedCircleResult FitNormalField(const NormalFieldSums& sums,
   PointCurvature& out = result.Curvature;
   out.NeighborCount = sums.Neighbors;
   out.ValidDirections = __builtin_popcount(sums.Sectors);
-  if (sums.Rows < std::max(minimumNeighbors, (N + 1) / 2 + ResidualRows))
+  out.Reason = sums.WhyUnfit(
+    sums.Rows, std::max(minimumNeighbors, (N + 1) / 2 + ResidualRows), maximumOpposing);
+  if (out.Reason != UnestimatedReason::None)
   {
-    out.Reason = UnestimatedReason::TooFewNeighbors;
-    return result;
-  }
-  if (sums.ReachesAcross(maximumOpposing))
-  {
-    out.Reason = UnestimatedReason::ReachesAcross;
-    return result;
-  }
-  if (!AnglesDetermineSine(sums.HalfTurnPositions))
-  {
-    out.Reason = UnestimatedReason::TooFewDirections;
     return result;
   }
   const small::Matrix<N> alongU = Leading<N>(sums.MatrixU), alongV = Leading<N>(sums.MatrixV);

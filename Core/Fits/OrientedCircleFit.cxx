@@ -218,6 +218,25 @@ bool OrientedCircleTallies::ReachesAcross(double maximumOpposing) const
     difference > 0.05 * size;
 }
 
+UnestimatedReason OrientedCircleTallies::WhyUnfit(int count,
+  int fewest,
+  double maximumOpposing) const
+{
+  if (count < fewest)
+  {
+    return UnestimatedReason::TooFewNeighbors;
+  }
+  if (this->ReachesAcross(maximumOpposing))
+  {
+    return UnestimatedReason::ReachesAcross;
+  }
+  if (!AnglesDetermineSine(this->HalfTurnPositions))
+  {
+    return UnestimatedReason::TooFewDirections;
+  }
+  return UnestimatedReason::None;
+}
+
 template<int Order>
 OrientedCircleResult FitOrientedCircles(const OrientedCircleSumsOf<Order>& sums,
   const TangentFrame& frame,
@@ -239,19 +258,11 @@ OrientedCircleResult FitOrientedCircles(const OrientedCircleSumsOf<Order>& sums,
   result.StandardError = std::numeric_limits<double>::quiet_NaN();
   out.NeighborCount = sums.Neighbors;
   out.ValidDirections = PopCount(sums.Sectors);
-  if (sums.Neighbors < std::max(minimumNeighbors, PositionUnknowns + ResidualNeighbors))
+  out.Reason = sums.WhyUnfit(sums.Neighbors,
+    std::max(minimumNeighbors, PositionUnknowns + ResidualNeighbors),
+    maximumOpposing);
+  if (out.Reason != UnestimatedReason::None)
   {
-    out.Reason = UnestimatedReason::TooFewNeighbors;
-    return result;
-  }
-  if (sums.ReachesAcross(maximumOpposing))
-  {
-    out.Reason = UnestimatedReason::ReachesAcross;
-    return result;
-  }
-  if (!AnglesDetermineSine(sums.HalfTurnPositions))
-  {
-    out.Reason = UnestimatedReason::TooFewDirections;
     return result;
   }
   const PositionMatrix positionMatrix = Full<PositionUnknowns>(sums.PositionMatrix);
