@@ -14,12 +14,6 @@ namespace pcurv
 {
 namespace
 {
-/// A neighbor's normal this close to the query's tangent plane (its
-/// component along the query normal) gives no slope rows: the slope
-/// -m.v0 / m.n grows without bound there, and a normal turned that far is
-/// no longer on the query's sheet of a height.
-constexpr double SmallestNormalComponent = 0.0;
-
 /// Residual degrees of freedom a fit keeps beyond its unknowns.
 constexpr int ResidualRows = 2;
 
@@ -137,7 +131,7 @@ void NormalFieldAccumulator::Add(const double d[3], const double* normal)
     sums.AgreeingSquaredHeights += h * h;
   }
   const double side = opposing ? -1.0 : 1.0;
-  if (!withNormal || !(side * along >= SmallestNormalComponent))
+  if (!withNormal || !std::isfinite(along))
   {
     return;
   }

@@ -11,11 +11,13 @@
  * h(u, v) = e + tu u + tv v + ((C + A) u^2 + 2 B u v + (C - A) v^2) / 2
  *   + c30 u^3 + c21 u^2 v + c12 u v^2 + c03 v^3
  * (FittedSurface, paper sign). A neighbor at (u, v) with unit normal m
- * (turned to agree with n) tells the height's gradient there exactly:
- * h_u = -m.v0 / m.n, h_v = -m.w0 / m.n. Two rows per neighbor:
- *   h_u = tu + (C + A) u + B v + 3 c30 u^2 + 2 c21 u v + c12 v^2,
- *   h_v = tv + B u + (C - A) v + c21 u^2 + 2 c12 u v + 3 c03 v^2,
- * equally weighted. The fit never reads the heights: a query point off the
+ * (turned to agree with n) gives two rows, its normal's tangential parts,
+ * which are the height's slope to first order:
+ *   -m.v0 = tu + (C + A) u + B v + 3 c30 u^2 + 2 c21 u v + c12 v^2,
+ *   -m.w0 = tv + B u + (C - A) v + c21 u^2 + 2 c12 u v + 3 c03 v^2,
+ * equally weighted. On a sphere or a cylinder the tangential parts are
+ * exactly linear in the tangential offsets, at any radius (the slope
+ * -m.v0 / m.n is not). The fit never reads the heights: a query point off the
  * surface (every point of a noisy scan) moves no row, and its displacement
  * along the surface is taken up by the free slope (tu, tv); positions enter
  * only as the rows' abscissae, so their noise reaches the curvatures once,
@@ -71,8 +73,7 @@ public:
   /// Adds a neighbor: its offset (in units of the scale) and its unit
   /// normal, or null or zero (counted, no rows). At the query point:
   /// ignored. A normal opposing the query's is turned first (a normal's
-  /// line is what it tells); one within 60 degrees of the tangent plane
-  /// gives no rows (its slope is no longer a height's).
+  /// line is what it tells); a normal that is not finite gives no rows.
   void Add(const double d[3], const double* normal);
 
   const NormalFieldSums& Sums() const { return this->Totals; }

@@ -166,10 +166,13 @@ std::size_t KeepNearerThan(const NearestPoints& nearest, double limit, ShellPoin
 ScaleEstimate AutomaticScaleEstimator::Estimate(std::int64_t point,
   AutomaticScaleScratch& scratch) const
 {
-  ScaleEstimate field;
-  if (this->Rule.NormalField && this->EstimateNormalField(point, scratch, field))
+  if (this->Rule.NormalField)
   {
-    return field;
+    ScaleEstimate field;
+    if (this->EstimateNormalField(point, scratch, field))
+    {
+      return field;
+    }
   }
   const double* x = &this->Cloud.Coordinates[3 * point];
   const double* n = &this->Cloud.Normals[3 * point];

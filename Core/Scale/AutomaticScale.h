@@ -57,6 +57,8 @@ struct AutomaticScaleScratch
   std::vector<double> Distances;
   NearestPoints Nearest;
   std::vector<OrientedCircleResult> Scales;
+  /// The normal field's ladder: the radius waiting to judge wider ones.
+  std::vector<OrientedCircleResult> Waiting;
   ShellPoints Jet;
   NormalFieldAccumulator Field;
   /// The offsets gathered so far (in units of the first radius), shell

@@ -131,11 +131,16 @@ double PositionsNoise(const FittedSurface& surface,
 class LadderReferences
 {
 public:
-  LadderReferences(std::vector<OrientedCircleResult>& kept, double tolerance)
+  /// `kept` and `waiting`: a thread's reusable buffers, emptied here.
+  LadderReferences(std::vector<OrientedCircleResult>& kept,
+    std::vector<OrientedCircleResult>& waiting,
+    double tolerance)
     : Kept(kept)
+    , Waiting(waiting)
     , Tolerance(tolerance)
   {
     this->Kept.clear();
+    this->Waiting.clear();
   }
 
   /// Lepski's test of `candidate` against the references.
@@ -149,30 +154,23 @@ public:
   /// where `confirm`) if it has ReferenceNeighbors.
   void Add(const OrientedCircleResult& accepted, bool confirm)
   {
-    if (this->Waiting.Curvature.Valid &&
-      AutomaticScaleEstimator::AgreesWithSmaller(accepted, { this->Waiting }, this->Tolerance))
+    if (!this->Waiting.empty() &&
+      AutomaticScaleEstimator::AgreesWithSmaller(accepted, this->Waiting, this->Tolerance))
     {
-      this->Kept.push_back(this->Waiting);
+      this->Kept.push_back(this->Waiting.front());
     }
-    this->Waiting = OrientedCircleResult{};
-    if (accepted.Curvature.NeighborCount < ReferenceNeighbors)
+    this->Waiting.clear();
+    if (accepted.Curvature.NeighborCount >= ReferenceNeighbors)
     {
-      return;
-    }
-    if (confirm)
-    {
-      this->Waiting = accepted;
-    }
-    else
-    {
-      this->Kept.push_back(accepted);
+      (confirm ? this->Waiting : this->Kept).push_back(accepted);
     }
   }
 
 private:
   std::vector<OrientedCircleResult>& Kept;
+  /// At most one: the estimate waiting for the next radius's agreement.
+  std::vector<OrientedCircleResult>& Waiting;
   double Tolerance;
-  OrientedCircleResult Waiting;
 };
 } // namespace
 
@@ -194,7 +192,7 @@ bool AutomaticScaleEstimator::EstimateNormalField(std::int64_t point,
   {
     axis.clear();
   }
-  LadderReferences references(scratch.Scales, rule.Tolerance);
+  LadderReferences references(scratch.Scales, scratch.Waiting, rule.Tolerance);
   OrientedCircleResult chosen, before;
   double chosenRadius = std::numeric_limits<double>::quiet_NaN();
   std::size_t chosenCount = 0;
