@@ -26,8 +26,78 @@ double SquaredDistance(const double a[3], const double b[3])
   return squared;
 }
 
+/// Octave bins of signed values: 0 for zero, +-(1 + OctaveOffset + floor(16
+/// log2 |x|)) for others, so a bin spans 2^(1/16) of magnitude over the whole
+/// double range.
+constexpr int BinsPerOctave = 16;
+constexpr int OctaveOffset = 1075 * BinsPerOctave;
+constexpr int LargestOctaveBin = OctaveOffset + 1025 * BinsPerOctave;
+
+int OctaveBin(double magnitude)
+{
+  if (!(magnitude > 0.0))
+  {
+    return 0;
+  }
+  const int bin =
+    1 + OctaveOffset + static_cast<int>(std::floor(BinsPerOctave * std::log2(magnitude)));
+  return std::min(std::max(bin, 1), LargestOctaveBin);
+}
+
+/// The magnitude at the upper edge of octave bin `bin` (0 for bin 0).
+double OctaveEdge(int bin)
+{
+  return bin <= 0 ? 0.0
+                  : std::min(std::exp2(static_cast<double>(bin - OctaveOffset) / BinsPerOctave),
+                      std::numeric_limits<double>::max());
+}
+
+int SignedOctaveBin(double x)
+{
+  return x < 0.0 ? -OctaveBin(-x) : OctaveBin(x);
+}
+
+/// Narrows [lower, upper] along `axis` to signed octave bins that hold the
+/// points of ranks `firstRank` and `lastRank` (with a bin to spare on each
+/// side, against log2's rounding), in one pass: however far a stray lies,
+/// the linear zoom then starts within a few octaves of the central points.
+void BracketCentralPoints(const CloudPoints& cloud,
+  const Collectives& processes,
+  int axis,
+  std::int64_t firstRank,
+  std::int64_t lastRank,
+  double& lower,
+  double& upper)
+{
+  std::vector<std::int64_t> counts(2 * LargestOctaveBin + 1, 0);
+  for (std::int64_t i = 0; i < cloud.NumberOfOwnPoints; ++i)
+  {
+    const double x = cloud.Coordinates[3 * i + axis];
+    if (x >= lower && x <= upper)
+    {
+      ++counts[LargestOctaveBin + SignedOctaveBin(x)];
+    }
+  }
+  processes.Sum(counts);
+  int first = 0, last = 0;
+  std::int64_t cumulative = 0;
+  for (int key = -LargestOctaveBin; key <= LargestOctaveBin; ++key)
+  {
+    const std::int64_t next = cumulative + counts[LargestOctaveBin + key];
+    first = cumulative <= firstRank && firstRank < next ? key : first;
+    last = cumulative <= lastRank && lastRank < next ? key : last;
+    cumulative = next;
+  }
+  // A bin's lower edge is the next one's upper edge, towards minus infinity.
+  const int below = first - 1;
+  const int above = last + 1;
+  lower = std::max(lower, below > 0 ? OctaveEdge(below - 1) : -OctaveEdge(-below));
+  upper = std::min(upper, above >= 0 ? OctaveEdge(above) : -OctaveEdge(-above - 1));
+}
+
 /// Narrows [lower, upper] per axis to the range of the central 98 % of the
-/// own points of all processes (see CloudBoxes::SampleLower).
+/// own points of all processes, to within 1/64 of that range (or of a few
+/// subnormal steps): the body of the cloud, whatever its far points.
 void ZoomOntoCentralPoints(const CloudPoints& cloud,
   const Collectives& processes,
   double lower[3],
@@ -38,45 +108,42 @@ void ZoomOntoCentralPoints(const CloudPoints& cloud,
   const std::int64_t firstRank = total / 100;
   const std::int64_t lastRank = total - 1 - total / 100;
   constexpr int Bins = 1024;
-  constexpr int EnoughBins = 64; // the central points span 64 of 1024 bins: no zoom
-  // A level that zooms narrows the range at least 16-fold (64 of 1024
-  // bins), so even a range from the largest double down to a subnormal
-  // step takes fewer levels than this; it only guards against a range that
-  // stops shrinking. A smaller cap would leave the box of a cloud with one
-  // far point (a 1e110 "missing value" sentinel) about as wide as that
-  // point's distance: the grid over it then puts every real point in one
-  // cell, and each neighbor query reads them all.
+  constexpr int EnoughBins = 64; // the central points span 64 of 1024 bins: fine enough
+  // A level narrows the range at least 16-fold (64 of 1024 bins); this
+  // only guards against a range that stops shrinking.
   constexpr int MaximumLevels = 1100;
-  for (int axis = 0; axis < 3; ++axis)
+  for (int axis = 0; axis < 3 && total > 0; ++axis)
   {
-    std::int64_t below = 0; // points below lower[axis]
+    BracketCentralPoints(cloud, processes, axis, firstRank, lastRank, lower[axis], upper[axis]);
     for (int level = 0; level < MaximumLevels && upper[axis] > lower[axis]; ++level)
     {
       const double low = lower[axis];
-      const double width = (upper[axis] - low) / Bins;
-      if (!(width > 0.0))
+      // In halves: the range of coordinates of opposite signs can overflow.
+      const double halfWidth = (0.5 * upper[axis] - 0.5 * low) / Bins;
+      if (!(halfWidth > 0.0))
       {
         break; // a range of a few subnormal steps: nothing left to zoom into
       }
-      std::vector<std::int64_t> counts(Bins, 0);
+      // Bins, then the count of points below the range.
+      std::vector<std::int64_t> counts(Bins + 1, 0);
       for (std::int64_t i = 0; i < cloud.NumberOfOwnPoints; ++i)
       {
         const double x = cloud.Coordinates[3 * i + axis];
         if (x >= low && x <= upper[axis])
         {
-          const double bin = std::floor((x - low) / width);
+          const double bin = std::floor((0.5 * x - 0.5 * low) / halfWidth);
           ++counts[static_cast<int>(std::min(std::max(bin, 0.0), Bins - 1.0))];
         }
+        counts[Bins] += x < low ? 1 : 0;
       }
       processes.Sum(counts);
       int firstBin = -1, lastBin = -1;
-      std::int64_t cumulative = below;
+      std::int64_t cumulative = counts[Bins];
       for (int b = 0; b < Bins && lastBin < 0; ++b)
       {
         if (firstBin < 0 && cumulative + counts[b] > firstRank)
         {
           firstBin = b;
-          below = cumulative;
         }
         if (cumulative + counts[b] > lastRank)
         {
@@ -84,16 +151,121 @@ void ZoomOntoCentralPoints(const CloudPoints& cloud,
         }
         cumulative += counts[b];
       }
-      if (firstBin < 0 || lastBin < 0 || lastBin - firstBin >= EnoughBins)
+      if (firstBin < 0 || lastBin < 0)
       {
         break;
       }
-      const double newUpper = lastBin + 1 < Bins ? low + (lastBin + 1) * width : upper[axis];
-      lower[axis] = low + firstBin * width;
+      const double newUpper = lastBin + 1 < Bins
+        ? low + (lastBin + 1) * halfWidth + (lastBin + 1) * halfWidth
+        : upper[axis];
+      lower[axis] = low + firstBin * halfWidth + firstBin * halfWidth;
       upper[axis] = newUpper;
+      if (lastBin - firstBin >= EnoughBins)
+      {
+        break;
+      }
     }
   }
 }
+
+/// How far beyond the body of the cloud, in the body's largest extent, a
+/// point may lie and still count in the boxes: farther ones are strays (a
+/// "missing value" sentinel, a point of another scan) that must change
+/// nothing for the others. Far enough that a tower over a flat tile, or the
+/// sparse tails of a real cloud, are part of the body.
+constexpr double StrayDistance = 8.0;
+
+/// The bounds of the own points of all processes that lie within
+/// StrayDistance body extents of the body [bodyLower, bodyUpper] on every
+/// axis, and how many they are.
+std::int64_t BoundsWithoutStrays(const CloudPoints& cloud,
+  const Collectives& processes,
+  const double bodyLower[3],
+  const double bodyUpper[3],
+  double lower[3],
+  double upper[3])
+{
+  double extent = 0.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    // In halves: the extent of a body of huge coordinates stays finite.
+    extent = std::max(extent, 0.5 * bodyUpper[k] - 0.5 * bodyLower[k]);
+  }
+  const double reach = 2.0 * StrayDistance * extent;
+  double nearLower[3], nearUpper[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    nearLower[k] = bodyLower[k] - reach;
+    nearUpper[k] = bodyUpper[k] + reach;
+    lower[k] = HUGE_VAL;
+    upper[k] = -HUGE_VAL;
+  }
+  std::int64_t count = 0;
+  for (std::int64_t i = 0; i < cloud.NumberOfOwnPoints; ++i)
+  {
+    const double* x = &cloud.Coordinates[3 * i];
+    bool near = true;
+    for (int k = 0; k < 3; ++k)
+    {
+      near = near && x[k] >= nearLower[k] && x[k] <= nearUpper[k];
+    }
+    if (near)
+    {
+      ++count;
+      for (int k = 0; k < 3; ++k)
+      {
+        lower[k] = std::min(lower[k], x[k]);
+        upper[k] = std::max(upper[k], x[k]);
+      }
+    }
+  }
+  processes.Bounds(lower, upper);
+  return processes.Sum(count);
+}
+
+/// MagnitudeQuantile of the `count` values value(0) ... value(count - 1).
+template<typename Value>
+double QuantileOfMagnitudes(Value value,
+  std::int64_t count,
+  double quantile,
+  const Collectives& processes)
+{
+  constexpr int Bins = LargestOctaveBin + 1;
+  std::vector<std::int64_t> histogram(Bins, 0);
+  for (std::int64_t i = 0; i < count; ++i)
+  {
+    const double magnitude = std::fabs(value(i));
+    if (std::isfinite(magnitude))
+    {
+      ++histogram[OctaveBin(magnitude)];
+    }
+  }
+  if (processes.IsDistributed())
+  {
+    processes.Sum(histogram);
+  }
+  std::int64_t total = 0;
+  for (const std::int64_t n : histogram)
+  {
+    total += n;
+  }
+  if (total == 0)
+  {
+    return 0.0;
+  }
+  const double wanted = std::min(std::max(quantile, 0.0), 1.0) * static_cast<double>(total);
+  std::int64_t below = 0;
+  for (int bin = 0; bin < Bins; ++bin)
+  {
+    below += histogram[bin];
+    if (static_cast<double>(below) >= wanted && below > 0)
+    {
+      return OctaveEdge(bin);
+    }
+  }
+  return std::numeric_limits<double>::max();
+}
+
 } // namespace
 
 namespace
@@ -248,12 +420,13 @@ std::array<double, 3> CoordinateSteps(const CloudPoints& cloud,
 
 double WorkingLengthScale(const CloudPoints& cloud, const Collectives& processes)
 {
-  double largest = 0.0;
-  for (std::int64_t i = 0; i < 3 * cloud.NumberOfOwnPoints; ++i)
-  {
-    largest = std::max(largest, std::fabs(cloud.Coordinates[i]));
-  }
-  largest = processes.Max(largest);
+  // The 99th percentile of the coordinates' magnitudes rather than the
+  // largest: a few strays (a 1e300 sentinel) would otherwise shrink every
+  // other coordinate until their squared distances underflow. The strays
+  // themselves may then overflow a squared distance: they are flagged.
+  const double* coordinates = cloud.Coordinates.data();
+  const double largest = QuantileOfMagnitudes(
+    [&](std::int64_t i) { return coordinates[i]; }, 3 * cloud.NumberOfOwnPoints, 0.99, processes);
   if (!(largest > 0.0) || (largest >= std::ldexp(1.0, -400) && largest <= std::ldexp(1.0, 400)))
   {
     return 1.0;
@@ -287,20 +460,13 @@ bool InSpacingSample(const double x[3],
 
 CloudBoxes MeasureBoxes(const CloudPoints& cloud, const Collectives& processes)
 {
-  double fullLower[3], fullUpper[3];
-  cloud.OwnBounds(fullLower, fullUpper);
-  processes.Bounds(fullLower, fullUpper);
+  double bodyLower[3], bodyUpper[3];
+  cloud.OwnBounds(bodyLower, bodyUpper);
+  processes.Bounds(bodyLower, bodyUpper);
+  ZoomOntoCentralPoints(cloud, processes, bodyLower, bodyUpper);
   CloudBoxes boxes;
-  std::copy_n(fullLower, 3, boxes.SampleLower.begin());
-  std::copy_n(fullUpper, 3, boxes.SampleUpper.begin());
-  ZoomOntoCentralPoints(cloud, processes, boxes.SampleLower.data(), boxes.SampleUpper.data());
-  for (int k = 0; k < 3; ++k)
-  {
-    const double margin = 0.5 * boxes.SampleUpper[k] - 0.5 * boxes.SampleLower[k];
-    boxes.GridLower[k] = std::max(fullLower[k], boxes.SampleLower[k] - margin);
-    boxes.GridUpper[k] = std::min(fullUpper[k], boxes.SampleUpper[k] + margin);
-  }
-  boxes.GlobalCount = processes.Sum(cloud.NumberOfOwnPoints);
+  boxes.BodyCount = BoundsWithoutStrays(
+    cloud, processes, bodyLower, bodyUpper, boxes.Lower.data(), boxes.Upper.data());
   return boxes;
 }
 
@@ -309,14 +475,14 @@ GridLattice GlobalLattice(const CloudBoxes& boxes, double radius)
   double lower[3], upper[3];
   for (int k = 0; k < 3; ++k)
   {
-    lower[k] = boxes.GridLower[k];
-    upper[k] = boxes.GridUpper[k];
+    lower[k] = boxes.Lower[k];
+    upper[k] = boxes.Upper[k];
     if (!(lower[k] <= upper[k]))
     {
       lower[k] = upper[k] = 0.0; // no point anywhere
     }
   }
-  return GridLattice::Make(lower, upper, boxes.GlobalCount, 0.5 * radius);
+  return GridLattice::Make(lower, upper, boxes.BodyCount, 0.5 * radius);
 }
 
 double TypicalRadius(const CloudPoints& cloud,
@@ -325,26 +491,25 @@ double TypicalRadius(const CloudPoints& cloud,
   int k,
   WorkRunner* runner)
 {
-  const std::int64_t globalCount = boxes.GlobalCount;
-  if (globalCount < 2)
+  const std::int64_t count = boxes.BodyCount;
+  if (count < 2)
   {
     return 0.0;
   }
   // About 512 sample points whatever the size of the cloud.
-  const std::int64_t stride = std::max<std::int64_t>(1, globalCount / 512);
-  const double* sampleLower = boxes.SampleLower.data();
-  const double* sampleUpper = boxes.SampleUpper.data();
-  const double diagonal = std::sqrt(SquaredDistance(sampleLower, sampleUpper));
+  const std::int64_t stride = std::max<std::int64_t>(1, count / 512);
+  const double* lower = boxes.Lower.data();
+  const double* upper = boxes.Upper.data();
+  const double diagonal = std::sqrt(SquaredDistance(lower, upper));
   // Cells for a first guess: the points spread over a square as wide as
-  // the (sampling) box's diagonal.
-  const double guess = diagonal * std::sqrt(k / (Pi * globalCount));
-  const GridLattice lattice =
-    GridLattice::Make(boxes.GridLower.data(), boxes.GridUpper.data(), globalCount, 0.5 * guess);
+  // the box's diagonal.
+  const double guess = diagonal * std::sqrt(k / (Pi * count));
+  const GridLattice lattice = GridLattice::Make(lower, upper, count, 0.5 * guess);
 
   std::vector<std::int64_t> sample;
   for (std::int64_t i = 0; i < cloud.NumberOfOwnPoints; ++i)
   {
-    if (InSpacingSample(&cloud.Coordinates[3 * i], sampleLower, sampleUpper, stride))
+    if (InSpacingSample(&cloud.Coordinates[3 * i], lower, upper, stride))
     {
       sample.push_back(i);
     }
@@ -407,49 +572,8 @@ double MagnitudeQuantile(const RealBuffer& values,
   double quantile,
   const Collectives& processes)
 {
-  // Bin 0 holds zeros; bin b > 0 the magnitudes in [2^((b - 1 - Offset) / 16),
-  // 2^((b - Offset) / 16)), over the whole double range.
-  constexpr int BinsPerOctave = 16;
-  constexpr int Offset = 1075 * BinsPerOctave;
-  constexpr int Bins = Offset + 1025 * BinsPerOctave + 1;
-  std::vector<std::int64_t> histogram(Bins, 0);
-  for (std::int64_t i = 0; i < count; ++i)
-  {
-    const double magnitude = std::fabs(values.Get(i));
-    if (std::isfinite(magnitude))
-    {
-      const int bin = magnitude > 0.0
-        ? 1 + Offset + static_cast<int>(std::floor(BinsPerOctave * std::log2(magnitude)))
-        : 0;
-      ++histogram[std::min(std::max(bin, 0), Bins - 1)];
-    }
-  }
-  if (processes.IsDistributed())
-  {
-    processes.Sum(histogram);
-  }
-  std::int64_t total = 0;
-  for (const std::int64_t n : histogram)
-  {
-    total += n;
-  }
-  if (total == 0)
-  {
-    return 0.0;
-  }
-  const double wanted = std::min(std::max(quantile, 0.0), 1.0) * static_cast<double>(total);
-  std::int64_t below = 0;
-  for (int bin = 0; bin < Bins; ++bin)
-  {
-    below += histogram[bin];
-    if (static_cast<double>(below) >= wanted && below > 0)
-    {
-      return bin == 0 ? 0.0
-                      : std::min(std::exp2(static_cast<double>(bin - Offset) / BinsPerOctave),
-                          std::numeric_limits<double>::max());
-    }
-  }
-  return std::numeric_limits<double>::max();
+  return QuantileOfMagnitudes(
+    [&](std::int64_t i) { return values.Get(i); }, count, quantile, processes);
 }
 
 } // namespace pcurv

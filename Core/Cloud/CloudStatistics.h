@@ -1,7 +1,7 @@
 /**
  * @file CloudStatistics.h
  * @brief The cloud-level statistics every process must agree on (working
- * unit, sampling box, typical radius, grid lattice, coordinate steps). No
+ * unit, the box without strays, typical radius, grid lattice, coordinate steps). No
  * VTK: they are reduced over the processes through Collectives.h.
  *
  * Distributed runs give the same numbers as a serial run because every
@@ -47,29 +47,26 @@ std::array<double, 3> CoordinateSteps(const CloudPoints& cloud,
 /// the unit.
 double WorkingLengthScale(const CloudPoints& cloud, const Collectives& processes);
 
-/// The boxes the statistics are taken in, from the global bounds.
+/// The box the statistics are taken in, from the global bounds.
 struct CloudBoxes
 {
-  /// The box the grid's lattice spans: the sampling box widened by half its
-  /// extent on every side, within the cloud's bounds. For most clouds that
-  /// is the bounding box; a few far outliers end up in the outermost cells
-  /// instead of making every cell coarse.
-  std::array<double, 3> GridLower, GridUpper;
-  /// The box the spacing sample is drawn in: the bounding box, unless a few
-  /// far points would squeeze the rest into a handful of quantization steps;
-  /// then, per axis, the range of the central 98 % of the points, found by
-  /// zooming in with global histograms (integer counts: the same for any
-  /// split among processes).
-  std::array<double, 3> SampleLower, SampleUpper;
-  std::int64_t GlobalCount = 0;
+  /// The bounds of the cloud without its strays: points farther from the
+  /// range of its central 98 % (per axis) than eight times that range's
+  /// largest extent. The spacing sample is drawn in it and the grid's
+  /// lattice spans it, so a stray (a 1e110 "missing value" sentinel) changes
+  /// neither the sample nor the cells, nor any other point's result; it
+  /// shares the outermost cells. For most clouds it is the bounding box.
+  std::array<double, 3> Lower, Upper;
+  /// The points within the box, over all processes.
+  std::int64_t BodyCount = 0;
 };
 
-/// The boxes of the own points of `cloud`, reduced over all processes.
+/// The box of the own points of `cloud`, reduced over all processes.
 CloudBoxes MeasureBoxes(const CloudPoints& cloud, const Collectives& processes);
 
 /// True for the points of the sample that measures the cloud's spacing:
 /// chosen by a hash of the coordinates quantized to 2^20 steps of the
-/// sampling box, so that the sample is the same whatever the order of the
+/// box [lower, upper] (CloudBoxes), so that the sample is the same whatever the order of the
 /// points, how they are split among processes, or the cloud's unit and
 /// position (up to points within 1e-16 of a quantization step).
 bool InSpacingSample(const double x[3],

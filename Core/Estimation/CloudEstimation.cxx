@@ -328,12 +328,12 @@ bool NormalsFollowTheSurface(const CloudPoints& cloud,
 {
   const AutomaticScaleEstimator estimator(cloud, grid, rule.Automatic, fit);
   AutomaticScaleScratch scratch;
-  const std::int64_t stride = std::max<std::int64_t>(1, boxes.GlobalCount / 512);
+  const std::int64_t stride = std::max<std::int64_t>(1, boxes.BodyCount / 512);
   std::vector<std::int64_t> counts = { 0, 0 }; // following, tested
   for (std::int64_t i = 0; i < cloud.NumberOfOwnPoints; ++i)
   {
     if (InSpacingSample(
-          &cloud.Coordinates[3 * i], boxes.SampleLower.data(), boxes.SampleUpper.data(), stride))
+          &cloud.Coordinates[3 * i], boxes.Lower.data(), boxes.Upper.data(), stride))
     {
       const int follows = estimator.NormalFollowsSurface(i, scratch);
       counts[0] += follows > 0 ? 1 : 0;

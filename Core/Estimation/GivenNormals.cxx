@@ -213,13 +213,13 @@ bool GivenNormalsDisagree(const EstimationSettings& settings,
       cloud.GetNumberOfPoints(),
       GlobalLattice(boxes, 2.0 * base),
       &runner);
-    const std::int64_t stride = std::max<std::int64_t>(1, boxes.GlobalCount / SampleSize);
+    const std::int64_t stride = std::max<std::int64_t>(1, boxes.BodyCount / SampleSize);
     ShellPoints shell;
     std::vector<double> squared;
     for (std::int64_t i = 0; i < cloud.NumberOfOwnPoints; ++i)
     {
       if (InSpacingSample(
-            &cloud.Coordinates[3 * i], boxes.SampleLower.data(), boxes.SampleUpper.data(), stride))
+            &cloud.Coordinates[3 * i], boxes.Lower.data(), boxes.Upper.data(), stride))
       {
         const int tilted = TiltedBeyondNoise(cloud, grid, i, base, shell, squared);
         counts[0] += tilted > 0 ? 1 : 0;

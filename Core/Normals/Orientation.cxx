@@ -7,6 +7,7 @@
 #include "Normals/ViewFromAbove.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <mutex>
@@ -126,41 +127,74 @@ void FlipPart(const std::vector<std::int64_t>& part, std::vector<signed char>& s
   }
 }
 
-/// Turns a part's normals outward (see NormalOrientation::Outward), by
-/// their signs. A closed surface's normals sum to about zero (the integral
-/// of n over a closed surface vanishes), and outward is where they agree
-/// with x - c; an open part whose normals share a side (a height field, an
-/// aerial scan, a bowl) points up, unless its normals are about horizontal,
-/// where up says nothing and x - c decides again (a wall, an open cylinder).
-void TurnPartOutward(const std::vector<std::int64_t>& part,
-  const OrderedCloud& ordered,
-  const std::vector<double>& normals,
-  std::vector<signed char>& signs)
+/// The median of `values` (the upper one of an even count); reorders them.
+double Median(std::vector<double>& values)
 {
-  double centroid[3] = { 0.0, 0.0, 0.0 }, sum[3] = { 0.0, 0.0, 0.0 };
+  const auto middle = values.begin() + values.size() / 2;
+  std::nth_element(values.begin(), middle, values.end());
+  return *middle;
+}
+
+/// The coordinate-wise median of a part's points: its center, wherever a
+/// few strays connected to it lie.
+std::array<double, 3> PartCenter(const std::vector<std::int64_t>& part, const OrderedCloud& ordered)
+{
+  std::array<std::vector<double>, 3> coordinates;
   for (const std::int64_t p : part)
   {
     double x[3];
     ordered.Point(p, x);
     for (int k = 0; k < 3; ++k)
     {
-      centroid[k] += x[k];
+      coordinates[k].push_back(x[k]);
+    }
+  }
+  return { Median(coordinates[0]), Median(coordinates[1]), Median(coordinates[2]) };
+}
+
+/// Turns a part's normals outward (see NormalOrientation::Outward), by
+/// their signs. A closed surface's normals sum to about zero (the integral
+/// of n over a closed surface vanishes), and outward is where they agree
+/// with x - c (the integral of n . (x - c) is three times the volume,
+/// whatever c); an open part whose normals share a side (a height field, an
+/// aerial scan, a bowl) points up, unless its normals are about horizontal,
+/// where up says nothing and x - c decides again (a wall, an open cylinder).
+/// c is the part's median point and each point's |x - c| counts at most
+/// four times the median one, so that a stray connected to the part (a
+/// "missing value" sentinel's point, whose normal is arbitrary) cannot
+/// outvote the surface.
+void TurnPartOutward(const std::vector<std::int64_t>& part,
+  const OrderedCloud& ordered,
+  const std::vector<double>& normals,
+  std::vector<signed char>& signs)
+{
+  const std::array<double, 3> center = PartCenter(part, ordered);
+  double sum[3] = { 0.0, 0.0, 0.0 };
+  std::vector<double> distances;
+  distances.reserve(part.size());
+  for (const std::int64_t p : part)
+  {
+    double x[3];
+    ordered.Point(p, x);
+    const double d[3] = { x[0] - center[0], x[1] - center[1], x[2] - center[2] };
+    distances.push_back(std::sqrt(Dot(d, d)));
+    for (int k = 0; k < 3; ++k)
+    {
       sum[k] += signs[p] * normals[3 * p + k];
     }
   }
-  const double count = static_cast<double>(part.size());
-  for (double& c : centroid)
-  {
-    c /= count;
-  }
+  const double longest = 4.0 * Median(distances);
   double signedSum = 0.0;
   for (const std::int64_t p : part)
   {
     double x[3];
     ordered.Point(p, x);
-    const double d[3] = { x[0] - centroid[0], x[1] - centroid[1], x[2] - centroid[2] };
-    signedSum += signs[p] * Dot(&normals[3 * p], d);
+    const double d[3] = { x[0] - center[0], x[1] - center[1], x[2] - center[2] };
+    const double length = std::sqrt(Dot(d, d));
+    const double weight = length > longest ? longest / length : 1.0;
+    signedSum += signs[p] * weight * Dot(&normals[3 * p], d);
   }
+  const double count = static_cast<double>(part.size());
   const double meanLength = std::sqrt(Dot(sum, sum)) / count;
   const bool open = meanLength > 0.3 && std::fabs(sum[2]) > 0.3 * std::sqrt(Dot(sum, sum));
   const bool flip = open ? sum[2] < 0.0 : signedSum < 0.0;

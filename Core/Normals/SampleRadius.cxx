@@ -229,15 +229,15 @@ bool QuickTypicalRadius(const CloudPoints& cloud,
   WorkRunner& runner,
   double& radius)
 {
-  const std::int64_t count = boxes.GlobalCount;
+  const std::int64_t count = boxes.BodyCount;
   const std::int64_t searched = cloud.GetNumberOfPoints();
   if (count < 2 || searched <= k + 1)
   {
     return false;
   }
   const std::int64_t stride = std::max<std::int64_t>(1, count / 512);
-  const double* lower = boxes.SampleLower.data();
-  const double* upper = boxes.SampleUpper.data();
+  const double* lower = boxes.Lower.data();
+  const double* upper = boxes.Upper.data();
   std::vector<unsigned char> sampled(cloud.NumberOfOwnPoints);
   runner.For(cloud.NumberOfOwnPoints,
     65536,
