@@ -227,6 +227,14 @@ public:
   /// prediction.
   std::size_t GatherShell(const double x[3], double inner, double radius, ShellPoints& out) const;
 
+  /// How many points the cells a query of `radius` around x visits hold:
+  /// at least those within the radius, counted at the cost of a few sums.
+  std::int64_t CountCandidates(const double x[3], double radius) const
+  {
+    std::array<std::int64_t, 3> low, high;
+    return this->Ids.empty() ? 0 : this->QueryCells(x, radius, low, high);
+  }
+
   /// Cells searched through finer cells of their own.
   std::int64_t GetNumberOfDenseCells() const
   {

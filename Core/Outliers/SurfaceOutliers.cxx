@@ -130,6 +130,26 @@ double GatherNearestOthers(const SurfaceGrid& grid,
   return radius;
 }
 
+/// The points a quick look at x reads (into scratch.Shell) and the radius
+/// they lie within: those within ScreenRadius typical radii, or, where
+/// that would read more than DenseScreen candidates (a patch far denser
+/// than the cloud, as near a scanner), the ScreenCount nearest, which cost
+/// what they cost elsewhere.
+std::pair<std::size_t, double> GatherScreened(const SurfaceGrid& grid,
+  const double x[3],
+  OutlierScratch& scratch)
+{
+  constexpr std::int64_t DenseScreen = 4096;
+  constexpr int ScreenCount = 28; // about as many as ScreenRadius holds
+  const double radius = ScreenRadius * grid.Typical;
+  if (grid.Grid.CountCandidates(x, radius) <= DenseScreen)
+  {
+    return { grid.Grid.GatherShell(x, 0.0, radius, scratch.Shell), radius };
+  }
+  const double nearest = grid.Grid.GatherNearest(x, ScreenCount, scratch.Shell);
+  return { scratch.Shell.Count, nearest };
+}
+
 /// A quick look before the robust fit (most points need no more): the
 /// plane of the points within ScreenRadius of x (its own
 /// point `self` left out). A point within ScreenFactor of their deviations
@@ -147,8 +167,11 @@ bool ClearlyOnSurface(const SurfaceGrid& grid,
   constexpr double ScreenFactor = 2.5;
   constexpr double ScreenReach = 0.1;
   constexpr std::size_t FewestScreened = 12;
-  const double radius = ScreenRadius * grid.Typical;
-  const std::size_t gathered = grid.Grid.GatherShell(x, 0.0, radius, scratch.Shell);
+  const auto [gathered, radius] = GatherScreened(grid, x, scratch);
+  if (!(radius > 0.0))
+  {
+    return false;
+  }
   const ShellPoints& shell = scratch.Shell;
   // Offsets in units of the radius: one pass, without cancellation.
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();

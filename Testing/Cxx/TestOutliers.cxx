@@ -274,6 +274,57 @@ void TestThreadsAndOrder(Checks& checks)
   checks.True("strays: the same verdicts and curvatures in any input order", same);
 }
 
+/// A sphere with a patch a thousand times denser (as near a scanner) and
+/// strays twenty of the patch's spacings above it: the patch's points are
+/// judged by their nearest neighbors, not by the thousands within the
+/// cloud's typical radius, and must come out the same: none flagged, every
+/// stray flagged, the same on one thread and two.
+void TestDensePatch(Checks& checks)
+{
+  auto cloud = testing::Sample(testing::Sphere(Radius), Points, 46);
+  constexpr int PatchPoints = 20000;
+  constexpr int Strays = 10;
+  // About a thousand times the sphere's density: the sphere's spacing over
+  // a square sqrt(1000) times narrower than PatchPoints of its spacings.
+  const double half = 0.5 * SphereSpacing(Points) * std::sqrt(PatchPoints / 1000.0);
+  const double patchSpacing = 2.0 * half / std::sqrt(static_cast<double>(PatchPoints));
+  std::mt19937_64 random(47);
+  std::uniform_real_distribution<double> across(-half, half);
+  const std::size_t sphereCount = cloud.size();
+  for (int i = 0; i < PatchPoints + Strays; ++i)
+  {
+    const double a = across(random), b = across(random);
+    const double length = std::sqrt(a * a + b * b + Radius * Radius);
+    testing::SurfaceSample s{};
+    s.Normal = { { a / length, b / length, Radius / length } };
+    const double height = i < PatchPoints ? Radius : Radius + 20.0 * patchSpacing;
+    s.Point = { { height * s.Normal[0], height * s.Normal[1], height * s.Normal[2] } };
+    s.MinimumCurvature = s.MaximumCurvature = 1.0 / Radius;
+    s.BoundaryDistance = HUGE_VAL;
+    cloud.push_back(s);
+  }
+  SerialRunner serial;
+  ThreadRunner two(2);
+  Results one(cloud.size(), false), both(cloud.size(), false);
+  Estimate(cloud, EstimationSettings{}, one, serial);
+  Estimate(cloud, EstimationSettings{}, both, two);
+  int patchFlagged = 0, straysFlagged = 0;
+  for (std::size_t i = sphereCount; i < cloud.size(); ++i)
+  {
+    const bool stray = i >= sphereCount + PatchPoints;
+    (stray ? straysFlagged : patchFlagged) += one.Outlier[i] ? 1 : 0;
+  }
+  std::printf("dense patch: %d of %d patch points flagged, %d of %d strays\n",
+    patchFlagged,
+    PatchPoints,
+    straysFlagged,
+    Strays);
+  checks.True(
+    "dense patch: at most 0.1 % of its points flagged", patchFlagged <= PatchPoints / 1000);
+  checks.True("dense patch: every stray above it flagged", straysFlagged == Strays);
+  checks.True("dense patch: one thread and two bit-identical", one.BitIdentical(both));
+}
+
 /// The paper's fits take the cloud as it is: no verdicts.
 void TestPaperFitsUntouched(Checks& checks)
 {
@@ -300,6 +351,7 @@ int main(int argc, char* argv[])
       { "StraysWithoutNormals", TestStraysWithoutNormals },
       { "NoFalseOutliers", TestNoFalseOutliers },
       { "ThreadsAndOrder", TestThreadsAndOrder },
+      { "DensePatch", TestDensePatch },
       { "PaperFitsUntouched", TestPaperFitsUntouched },
     });
 }
