@@ -8,6 +8,7 @@
 #include <Eigen/Dense>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <mutex>
@@ -78,40 +79,79 @@ bool FitPlane(const NeighborOffsets& offsets,
   return variances[1] >= LinearShare * variances[2];
 }
 
-/// The k-th smallest (k from 1) of values[0, count): exact whatever the
-/// bounds, and quick when it lies in [low, high): the values below and
-/// within are counted without branches (a sphere's distances come too
-/// randomly for branch prediction) and only those within are sorted.
-double KthSmallest(const double* values,
+/// The k-th smallest (k from 1, at most count) of values[0, count), all
+/// in [0, high), for each of the `n` ranks ks[] (ascending), into kth[]:
+/// exact, in two passes whatever n. The values are counted into buckets of
+/// equal width (squared distances within a radius spread about evenly over
+/// them on a surface), and only the few that hold a wanted rank are
+/// copied out and selected in.
+void KthSmallestOfEach(const double* values,
   std::size_t count,
-  std::size_t k,
-  double low,
+  const std::size_t* ks,
+  int n,
   double high,
+  double* kth,
   std::vector<double>& scratch)
 {
-  std::size_t below = 0, within = 0;
+  constexpr int Buckets = 256;
+  const double scale = Buckets / high;
+  if (!(high > 0.0) || !std::isfinite(scale))
+  {
+    for (int j = 0; j < n; ++j)
+    {
+      scratch.assign(values, values + count);
+      std::nth_element(scratch.begin(), scratch.begin() + (ks[j] - 1), scratch.end());
+      kth[j] = scratch[ks[j] - 1];
+    }
+    return;
+  }
+  // Monotone in the value (values at or beyond `high` share the last).
+  const auto bucketOf = [scale](double v)
+  { return static_cast<int>(std::min(std::max(v * scale, 0.0), Buckets - 1.0)); };
+  std::array<std::uint32_t, Buckets> counts{};
   for (std::size_t i = 0; i < count; ++i)
   {
-    const double v = values[i];
-    below += v < low;
-    within += (v >= low) & (v < high);
+    ++counts[bucketOf(values[i])];
   }
-  if (below < k && k <= below + within)
+  // Per bucket holding a wanted rank: where its values go in scratch.
+  std::array<bool, Buckets> kept{};
+  std::array<std::size_t, Buckets> start{}, filled{};
+  std::size_t below = 0, used = 0;
+  constexpr int MostRanks = 8;
+  std::array<std::size_t, MostRanks> rank{};
+  std::array<int, MostRanks> bucketOfRank{};
+  n = std::min(n, MostRanks);
+  for (int b = 0, j = 0; b < Buckets && j < n; ++b)
   {
-    scratch.resize(within + 1); // one written past the last kept
-    std::size_t kept = 0;
-    for (std::size_t i = 0; i < count; ++i)
+    for (; j < n && ks[j] <= below + counts[b]; ++j)
     {
-      const double v = values[i];
-      scratch[kept] = v;
-      kept += (v >= low) & (v < high);
+      if (!kept[b])
+      {
+        kept[b] = true;
+        start[b] = used;
+        used += counts[b];
+      }
+      rank[j] = ks[j] - below - 1;
+      bucketOfRank[j] = b;
     }
-    std::nth_element(scratch.begin(), scratch.begin() + (k - below - 1), scratch.begin() + within);
-    return scratch[k - below - 1];
+    below += counts[b];
   }
-  scratch.assign(values, values + count);
-  std::nth_element(scratch.begin(), scratch.begin() + (k - 1), scratch.end());
-  return scratch[k - 1];
+  scratch.resize(used);
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    const int b = bucketOf(values[i]);
+    if (kept[b])
+    {
+      scratch[start[b] + filled[b]++] = values[i];
+    }
+  }
+  for (int j = 0; j < n; ++j)
+  {
+    const auto first = scratch.begin() + static_cast<std::ptrdiff_t>(start[bucketOfRank[j]]);
+    std::nth_element(
+      first, first + static_cast<std::ptrdiff_t>(rank[j]), first + counts[bucketOfRank[j]]);
+    kth[j] = first[static_cast<std::ptrdiff_t>(rank[j])];
+  }
 }
 
 /// The points within `radius` of x: through rows of cells unless they hold
@@ -159,16 +199,23 @@ bool GatherAtLeast(const OrderedCloud& ordered,
 }
 
 /// The k-th smallest of the candidates' squared distances (all within
-/// `radius`), looked for first about where it would lie were the points
-/// spread evenly on a surface: there the count within a distance grows
-/// with its square.
-double KthSquared(NearestSearch& search, double radius, std::size_t k)
+/// `radius`) for each of the `n` ranks ks[] (ascending), into kth[].
+void KthSquaredOfEach(NearestSearch& search,
+  double radius,
+  const std::size_t* ks,
+  int n,
+  double* kth)
 {
   const Candidates& found = search.Found;
-  const double expected = radius * radius * static_cast<double>(k) /
-    static_cast<double>(std::max<std::size_t>(found.Count, 1));
-  return KthSmallest(
-    found.Squared.data(), found.Count, k, 0.8 * expected, 1.25 * expected, search.Selected);
+  KthSmallestOfEach(
+    found.Squared.data(), found.Count, ks, n, radius * radius, kth, search.Selected);
+}
+
+double KthSquared(NearestSearch& search, double radius, std::size_t k)
+{
+  double kth = 0.0;
+  KthSquaredOfEach(search, radius, &k, 1, &kth);
+  return kth;
 }
 
 /// Keeps the candidates nearer than `radius` (every point nearer than the
@@ -421,10 +468,16 @@ void GrowWhileAgreeing(const OrderedCloud& ordered,
   double grown[Doublings + 1] = {};
   if (levels > 0 && GatherAtLeast(ordered, x, wanted << levels, search, gathered))
   {
+    std::size_t ranks[Doublings];
+    double squared[Doublings];
     for (int level = 1; level <= levels; ++level)
     {
-      grown[level] =
-        std::nextafter(std::sqrt(KthSquared(search, gathered, wanted << level)), HUGE_VAL);
+      ranks[level - 1] = wanted << level;
+    }
+    KthSquaredOfEach(search, gathered, ranks, levels, squared);
+    for (int level = 1; level <= levels; ++level)
+    {
+      grown[level] = std::nextafter(std::sqrt(squared[level - 1]), HUGE_VAL);
     }
     KeepWithinRadius(ordered, x, grown[levels], search);
   }
