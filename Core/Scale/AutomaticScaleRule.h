@@ -6,6 +6,8 @@
 #ifndef AutomaticScaleRule_h
 #define AutomaticScaleRule_h
 
+#include "Settings/SettingsTable.h"
+
 #include <array>
 #include <cmath>
 
@@ -37,11 +39,12 @@ struct SharingRule
 /// that picks one (AutomaticScaleEstimator).
 struct AutomaticScaleRule
 {
-  int BaseCount = 16;       // the first radius holds this many neighbors
-  int Levels = 8;           // radii base 2^(i/2), i < Levels: about 2000 neighbors at most
-  double Precision = 1e-3;  // a standard error this small (times the curvature) ends the growth
-  int MinimumCount = 12;    // fewer neighbors give no estimate to compare
-  double Tolerance = 2.0;   // standard errors two estimates may differ by
+  int BaseCount = 16;      // the first radius holds this many neighbors
+  int Levels = 8;          // radii base 2^(i/2), i < Levels: about 2000 neighbors at most
+  double Precision = 1e-3; // a standard error this small (times the curvature) ends the growth
+  int MinimumCount = 12;   // fewer neighbors give no estimate to compare
+  /// Standard errors two estimates may differ by.
+  double Tolerance = PCURV_DEFAULT("AutomaticScaleTolerance");
   double LargestRadius = 0; // no radius beyond this (a length)
   double TypicalRadius = 0; // the cloud's typical first radius (a length)
   bool ShareFits = false;   // points near an anchor take its fit (SharedFits.h)
