@@ -142,7 +142,8 @@ std::pair<std::size_t, double> GatherScreened(const SurfaceGrid& grid,
   constexpr std::int64_t DenseScreen = 4096;
   constexpr int ScreenCount = 28; // about as many as ScreenRadius holds
   const double radius = ScreenRadius * grid.Typical;
-  if (grid.Grid.CountCandidates(x, radius) <= DenseScreen)
+  // Only a grid with dense cells can hold that many (most have none).
+  if (grid.Grid.GetNumberOfDenseCells() == 0 || grid.Grid.CountCandidates(x, radius) <= DenseScreen)
   {
     return { grid.Grid.GatherShell(x, 0.0, radius, scratch.Shell), radius };
   }
