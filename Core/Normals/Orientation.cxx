@@ -127,9 +127,14 @@ void FlipPart(const std::vector<std::int64_t>& part, std::vector<signed char>& s
   }
 }
 
-/// The median of `values` (the upper one of an even count); reorders them.
+/// The median of `values` (the upper one of an even count; 0 of none);
+/// reorders them.
 double Median(std::vector<double>& values)
 {
+  if (values.empty())
+  {
+    return 0.0;
+  }
   const auto middle = values.begin() + values.size() / 2;
   std::nth_element(values.begin(), middle, values.end());
   return *middle;
@@ -168,6 +173,10 @@ void TurnPartOutward(const std::vector<std::int64_t>& part,
   const std::vector<double>& normals,
   std::vector<signed char>& signs)
 {
+  if (part.empty())
+  {
+    return;
+  }
   const std::array<double, 3> center = PartCenter(part, ordered);
   double sum[3] = { 0.0, 0.0, 0.0 };
   std::vector<double> distances;
