@@ -296,8 +296,8 @@ double WriteTrustAndShape(const CurvatureBuffers& out,
     }
     if (out.ShapeClass)
     {
-      out.ShapeClass[i] =
-        static_cast<unsigned char>(ClassifyShape(valid, outlier, kMin, kMax, error));
+      out.ShapeClass[i] = static_cast<unsigned char>(
+        ClassifyShape(valid, outlier, kMin, kMax, error, valid ? radii[i] : NaN));
     }
   }
   return scale;

@@ -10,7 +10,8 @@ ShapeClass ClassifyShape(bool valid,
   bool outlier,
   double minimumCurvature,
   double maximumCurvature,
-  double standardError)
+  double standardError,
+  double radius)
 {
   if (!valid || outlier || !std::isfinite(standardError) || !std::isfinite(minimumCurvature) ||
     !std::isfinite(maximumCurvature))
@@ -39,7 +40,12 @@ ShapeClass ClassifyShape(bool valid,
   {
     return ShapeClass::Ridge;
   }
-  return minimumDown ? ShapeClass::Valley : ShapeClass::Flat;
+  if (minimumDown)
+  {
+    return ShapeClass::Valley;
+  }
+  return ShapeSignificance * standardError * radius <= FlatBending ? ShapeClass::Flat
+                                                                   : ShapeClass::Undetermined;
 }
 
 bool IsTrusted(bool valid,

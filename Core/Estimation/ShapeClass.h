@@ -19,9 +19,11 @@ namespace pcurv
 /// bends away from the normal).
 enum class ShapeClass : std::uint8_t
 {
-  /// Not estimated, or an outlier (its values are the nearest surface's).
+  /// Not estimated, an outlier (its values are the nearest surface's), or
+  /// neither curvature significant while the estimate is too imprecise to
+  /// call the point flat (FlatBending).
   Undetermined = 0,
-  /// Neither curvature significant.
+  /// Neither curvature significant, and flatness known (FlatBending).
   Flat = 1,
   /// Both significant and positive (a sphere with outward normals).
   Dome = 2,
@@ -56,13 +58,23 @@ constexpr const char* ShapeClassArrayName = "Shape_Class";
 /// count as a feature rather than noise.
 constexpr double ShapeSignificance = 2.0;
 
-/// The class of an estimate: `valid` false, `outlier` true or a standard
-/// error not finite give Undetermined.
+/// A point is Flat only when flatness is known: a curvature of twice its
+/// standard error turns the surface by at most this many radians (about
+/// 57 degrees) across the point's neighborhood radius. Where it could turn
+/// more, "not significantly curved" says nothing of the shape (a tree
+/// crown's sparse, noisy points), and the point is Undetermined rather than
+/// Flat; ground and roofs, even of sparse airborne scans, are known far
+/// better than that.
+constexpr double FlatBending = 1.0;
+
+/// The class of an estimate of neighborhood radius `radius`: `valid`
+/// false, `outlier` true or a standard error not finite give Undetermined.
 ShapeClass ClassifyShape(bool valid,
   bool outlier,
   double minimumCurvature,
   double maximumCurvature,
-  double standardError);
+  double standardError,
+  double radius);
 
 /// A trusted curvature is known to this share of its own magnitude (twice
 /// its standard error within it): its sign beyond doubt and its size to a

@@ -7,6 +7,7 @@
 #include <array>
 #include <cstdio>
 #include <limits>
+#include <random>
 
 namespace
 {
@@ -21,16 +22,28 @@ void TestClassRule(Checks& checks)
 {
   const auto is = [&checks](const char* what, ShapeClass got, ShapeClass expected)
   { checks.Equal(what, static_cast<int>(got), static_cast<int>(expected)); };
-  is("rule: both small, flat", ClassifyShape(true, false, -0.1, 0.1, 0.1), ShapeClass::Flat);
-  is("rule: both positive, dome", ClassifyShape(true, false, 0.5, 1.0, 0.1), ShapeClass::Dome);
-  is("rule: both negative, cup", ClassifyShape(true, false, -1.0, -0.5, 0.1), ShapeClass::Cup);
-  is("rule: k_max alone, ridge", ClassifyShape(true, false, 0.1, 1.0, 0.1), ShapeClass::Ridge);
-  is("rule: k_min alone, valley", ClassifyShape(true, false, -1.0, -0.1, 0.1), ShapeClass::Valley);
-  is("rule: opposite, saddle", ClassifyShape(true, false, -1.0, 1.0, 0.1), ShapeClass::Saddle);
-  is("rule: within 2 errors, flat", ClassifyShape(true, false, -0.19, 0.19, 0.1), ShapeClass::Flat);
-  is("rule: not estimated", ClassifyShape(false, false, 0.5, 1.0, 0.1), ShapeClass::Undetermined);
-  is("rule: outlier", ClassifyShape(true, true, 0.5, 1.0, 0.1), ShapeClass::Undetermined);
-  is("rule: no error", ClassifyShape(true, false, 0.5, 1.0, NaN), ShapeClass::Undetermined);
+  is("rule: both small, flat", ClassifyShape(true, false, -0.1, 0.1, 0.1, 0.1), ShapeClass::Flat);
+  is("rule: both positive, dome", ClassifyShape(true, false, 0.5, 1.0, 0.1, 0.1), ShapeClass::Dome);
+  is("rule: both negative, cup", ClassifyShape(true, false, -1.0, -0.5, 0.1, 0.1), ShapeClass::Cup);
+  is("rule: k_max alone, ridge", ClassifyShape(true, false, 0.1, 1.0, 0.1, 0.1), ShapeClass::Ridge);
+  is("rule: k_min alone, valley",
+    ClassifyShape(true, false, -1.0, -0.1, 0.1, 0.1),
+    ShapeClass::Valley);
+  is("rule: opposite, saddle", ClassifyShape(true, false, -1.0, 1.0, 0.1, 0.1), ShapeClass::Saddle);
+  is("rule: within 2 errors, flat",
+    ClassifyShape(true, false, -0.19, 0.19, 0.1, 0.1),
+    ShapeClass::Flat);
+  is("rule: within 2 errors but imprecise, undetermined",
+    ClassifyShape(true, false, -0.19, 0.19, 0.1, 6.0),
+    ShapeClass::Undetermined);
+  is("rule: a significant curvature needs no precision",
+    ClassifyShape(true, false, 0.5, 1.0, 0.1, 100.0),
+    ShapeClass::Dome);
+  is("rule: not estimated",
+    ClassifyShape(false, false, 0.5, 1.0, 0.1, 0.1),
+    ShapeClass::Undetermined);
+  is("rule: outlier", ClassifyShape(true, true, 0.5, 1.0, 0.1, 0.1), ShapeClass::Undetermined);
+  is("rule: no error", ClassifyShape(true, false, 0.5, 1.0, NaN, 0.1), ShapeClass::Undetermined);
   checks.True("names: one per class, as documented",
     std::string(ShapeClassName(ShapeClass::Undetermined)) == "Undetermined" &&
       std::string(ShapeClassName(ShapeClass::Valley)) == "Valley" &&
@@ -213,6 +226,86 @@ void TestTrustedKeepsCrests(Checks& checks)
     share(within, trusted) >= 0.95);
 }
 
+/// Flat ground with tree crowns on it, as an airborne scan sees them:
+/// each crown a sparse scatter through a ball a few spacings wide, no
+/// normals given. Many crown points have no significant curvature, yet
+/// their errors are far too large to say they are flat: they must be
+/// Undetermined, not Flat, while the ground stays Flat.
+void TestSparseCrowns(Checks& checks)
+{
+  std::mt19937_64 random(214);
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  std::vector<testing::SurfaceSample> samples;
+  constexpr double Half = 4.0;
+  constexpr int GroundPoints = 8000, Crowns = 24, CrownPoints = 120;
+  constexpr double CrownRadius = 0.3;
+  for (int i = 0; i < GroundPoints; ++i)
+  {
+    testing::SurfaceSample s{};
+    s.Point = { { Half * uniform(random), Half * uniform(random), 0.0 } };
+    s.Normal = { { 0.0, 0.0, 1.0 } };
+    s.BoundaryDistance = HUGE_VAL;
+    samples.push_back(s);
+  }
+  std::vector<std::array<double, 3>> centers;
+  for (int c = 0; c < Crowns; ++c)
+  {
+    centers.push_back({ { (Half - 1.0) * uniform(random), (Half - 1.0) * uniform(random), 1.0 } });
+    for (int i = 0; i < CrownPoints;)
+    {
+      const std::array<double, 3> d = { { uniform(random), uniform(random), uniform(random) } };
+      if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] <= 1.0)
+      {
+        testing::SurfaceSample s{};
+        for (int k = 0; k < 3; ++k)
+        {
+          s.Point[k] = centers.back()[k] + CrownRadius * d[k];
+        }
+        s.Normal = { { 0.0, 0.0, 1.0 } };
+        s.BoundaryDistance = HUGE_VAL;
+        samples.push_back(s);
+        ++i;
+      }
+    }
+  }
+  EstimationSettings settings;
+  settings.EstimateNormals = true;
+  const ReportedRun run(samples, settings);
+  int crown = 0, crownFlat = 0, crownInsignificant = 0, ground = 0, groundFlat = 0;
+  for (std::size_t i = 0; i < samples.size(); ++i)
+  {
+    const bool flat = run.ShapeClass[i] == static_cast<unsigned char>(ShapeClass::Flat);
+    if (i >= static_cast<std::size_t>(GroundPoints))
+    {
+      const double bound = ShapeSignificance * run.StandardError[i];
+      ++crown;
+      crownFlat += flat;
+      crownInsignificant +=
+        run.Out.Valid[i] && run.Out.Maximum[i] <= bound && run.Out.Minimum[i] >= -bound;
+      continue;
+    }
+    bool nearCrown =
+      std::fabs(samples[i].Point[0]) > Half - 0.5 || std::fabs(samples[i].Point[1]) > Half - 0.5;
+    for (const auto& c : centers)
+    {
+      nearCrown =
+        nearCrown || std::hypot(samples[i].Point[0] - c[0], samples[i].Point[1] - c[1]) < 1.0;
+    }
+    ground += !nearCrown;
+    groundFlat += !nearCrown && flat;
+  }
+  std::printf(
+    "crowns: %d points, %d not significantly curved, %d Flat; open ground: %d of %d Flat\n",
+    crown,
+    crownInsignificant,
+    crownFlat,
+    groundFlat,
+    ground);
+  checks.True("crowns: many points not significantly curved", crownInsignificant >= crown / 5);
+  checks.True("crowns: at most 5 % Flat", crownFlat <= crown / 20);
+  checks.True("open ground: at least 90 % Flat", groundFlat >= 0.9 * ground);
+}
+
 } // namespace
 
 int main(int argc, char* argv[])
@@ -223,5 +316,6 @@ int main(int argc, char* argv[])
       { "ClassRule", TestClassRule },
       { "NoisyShapes", TestNoisyShapes },
       { "TrustedKeepsCrests", TestTrustedKeepsCrests },
+      { "SparseCrowns", TestSparseCrowns },
     });
 }
