@@ -332,8 +332,7 @@ bool NormalsFollowTheSurface(const CloudPoints& cloud,
   std::vector<std::int64_t> counts = { 0, 0 }; // following, tested
   for (std::int64_t i = 0; i < cloud.NumberOfOwnPoints; ++i)
   {
-    if (InSpacingSample(
-          &cloud.Coordinates[3 * i], boxes.Lower.data(), boxes.Upper.data(), stride))
+    if (InSpacingSample(&cloud.Coordinates[3 * i], boxes.Lower.data(), boxes.Upper.data(), stride))
     {
       const int follows = estimator.NormalFollowsSurface(i, scratch);
       counts[0] += follows > 0 ? 1 : 0;
