@@ -313,7 +313,8 @@ gui_type_in_dialog() {
   [ -n "$dialog" ] || return 1
   gui_until 30 gui_focused "$dialog"
   xdotool type --delay 40 "$3"
-  sleep 1
+  # The typed text drawn in the dialog: Enter then takes all of it.
+  gui_wait_still
   gui_mark_screen
   xdotool key Return
 }
