@@ -114,9 +114,15 @@ void ZoomOntoCentralPoints(const CloudPoints& cloud,
   constexpr int MaximumLevels = 1100;
   for (int axis = 0; axis < 3 && total > 0; ++axis)
   {
-    BracketCentralPoints(cloud, processes, axis, firstRank, lastRank, lower[axis], upper[axis]);
     for (int level = 0; level < MaximumLevels && upper[axis] > lower[axis]; ++level)
     {
+      if (level == 1)
+      {
+        // The first level did not find the central points spread wide: far
+        // strays squeeze them. Jump to their octaves instead of zooming
+        // 16-fold a level at a time (most clouds never get here).
+        BracketCentralPoints(cloud, processes, axis, firstRank, lastRank, lower[axis], upper[axis]);
+      }
       const double low = lower[axis];
       // In halves: the range of coordinates of opposite signs can overflow.
       const double halfWidth = (0.5 * upper[axis] - 0.5 * low) / Bins;
