@@ -4,6 +4,7 @@
 #include "Normals/OrderedCloud.h"
 #include "Normals/OrientationGraph.h"
 #include "Normals/PlaneQuadric.h"
+#include "Normals/RankSelection.h"
 
 #include <Eigen/Dense>
 
@@ -79,81 +80,6 @@ bool FitPlane(const NeighborOffsets& offsets,
   return variances[1] >= LinearShare * variances[2];
 }
 
-/// The k-th smallest (k from 1, at most count) of values[0, count), all
-/// in [0, high), for each of the `n` ranks ks[] (ascending), into kth[]:
-/// exact, in two passes whatever n. The values are counted into buckets of
-/// equal width (squared distances within a radius spread about evenly over
-/// them on a surface), and only the few that hold a wanted rank are
-/// copied out and selected in.
-void KthSmallestOfEach(const double* values,
-  std::size_t count,
-  const std::size_t* ks,
-  int n,
-  double high,
-  double* kth,
-  std::vector<double>& scratch)
-{
-  constexpr int Buckets = 256;
-  const double scale = Buckets / high;
-  if (!(high > 0.0) || !std::isfinite(scale))
-  {
-    for (int j = 0; j < n; ++j)
-    {
-      scratch.assign(values, values + count);
-      std::nth_element(scratch.begin(), scratch.begin() + (ks[j] - 1), scratch.end());
-      kth[j] = scratch[ks[j] - 1];
-    }
-    return;
-  }
-  // Monotone in the value (values at or beyond `high` share the last).
-  const auto bucketOf = [scale](double v)
-  { return static_cast<int>(std::min(std::max(v * scale, 0.0), Buckets - 1.0)); };
-  std::array<std::uint32_t, Buckets> counts{};
-  for (std::size_t i = 0; i < count; ++i)
-  {
-    ++counts[bucketOf(values[i])];
-  }
-  // Per bucket holding a wanted rank: where its values go in scratch.
-  std::array<bool, Buckets> kept{};
-  std::array<std::size_t, Buckets> start{}, filled{};
-  std::size_t below = 0, used = 0;
-  constexpr int MostRanks = 8;
-  std::array<std::size_t, MostRanks> rank{};
-  std::array<int, MostRanks> bucketOfRank{};
-  n = std::min(n, MostRanks);
-  for (int b = 0, j = 0; b < Buckets && j < n; ++b)
-  {
-    for (; j < n && ks[j] <= below + counts[b]; ++j)
-    {
-      if (!kept[b])
-      {
-        kept[b] = true;
-        start[b] = used;
-        used += counts[b];
-      }
-      rank[j] = ks[j] - below - 1;
-      bucketOfRank[j] = b;
-    }
-    below += counts[b];
-  }
-  scratch.resize(used);
-  for (std::size_t i = 0; i < count; ++i)
-  {
-    const int b = bucketOf(values[i]);
-    if (kept[b])
-    {
-      scratch[start[b] + filled[b]++] = values[i];
-    }
-  }
-  for (int j = 0; j < n; ++j)
-  {
-    const auto first = scratch.begin() + static_cast<std::ptrdiff_t>(start[bucketOfRank[j]]);
-    std::nth_element(
-      first, first + static_cast<std::ptrdiff_t>(rank[j]), first + counts[bucketOfRank[j]]);
-    kth[j] = first[static_cast<std::ptrdiff_t>(rank[j])];
-  }
-}
-
 /// The points within `radius` of x: through rows of cells unless they hold
 /// far more points than wanted (a dense cell).
 void Gather(const OrderedCloud& ordered,
@@ -211,11 +137,18 @@ void KthSquaredOfEach(NearestSearch& search,
     found.Squared.data(), found.Count, ks, n, radius * radius, kth, search.Selected);
 }
 
+/// The k-th smallest of the candidates' squared distances (all within
+/// `radius`) for one rank, looked for first about where it would lie were
+/// the points spread evenly on a surface (the count within a distance grows
+/// with its square): for one rank among a few dozen candidates, a window
+/// costs less than buckets.
 double KthSquared(NearestSearch& search, double radius, std::size_t k)
 {
-  double kth = 0.0;
-  KthSquaredOfEach(search, radius, &k, 1, &kth);
-  return kth;
+  const Candidates& found = search.Found;
+  const double expected = radius * radius * static_cast<double>(k) /
+    static_cast<double>(std::max<std::size_t>(found.Count, 1));
+  return KthSmallest(
+    found.Squared.data(), found.Count, k, 0.8 * expected, 1.25 * expected, search.Selected);
 }
 
 /// Keeps the candidates nearer than `radius` (every point nearer than the
