@@ -38,17 +38,42 @@ bool ColoredByEightBitColors(vtkSMProxy* display)
     (info->GetNumberOfComponents() == 3 || info->GetNumberOfComponents() == 4);
 }
 
-/// Map Scalars off for a display colored by 8-bit colors; false when it is
-/// colored otherwise.
-bool ShowTrueColors(vtkSMProxy* display)
+/// Colored by 8-bit colors that are the same at every point (a scan whose
+/// Red, Green and Blue fields were never filled, all 0): they show nothing.
+bool ColoredByConstantColors(vtkSMProxy* display)
 {
-  if (!display->GetProperty("MapScalars") || !ColoredByEightBitColors(display))
+  vtkPVArrayInformation* info =
+    vtkSMPVRepresentationProxy::GetArrayInformationForColorArray(display);
+  for (int component = 0; info && component < info->GetNumberOfComponents(); ++component)
+  {
+    const double* range = info->GetComponentRange(component);
+    if (range[0] != range[1])
+    {
+      return false;
+    }
+  }
+  return info != nullptr;
+}
+
+/// Map Scalars off while the display is colored by 8-bit colors (its own
+/// colors), on while it is colored by anything else (through the color
+/// map: with Map Scalars off VTK would take a classification or a
+/// curvature as gray levels or black). True when the display shows true
+/// colors.
+bool MapScalarsUnlessColors(vtkSMProxy* display)
+{
+  if (!display->GetProperty("MapScalars"))
   {
     return false;
   }
-  vtkSMPropertyHelper(display, "MapScalars").Set(0);
-  display->UpdateVTKObjects();
-  return true;
+  const bool colors = ColoredByEightBitColors(display);
+  vtkSMPropertyHelper mapScalars(display, "MapScalars");
+  if (mapScalars.GetAsInt() != (colors ? 0 : 1))
+  {
+    mapScalars.Set(colors ? 0 : 1);
+    display->UpdateVTKObjects();
+  }
+  return colors;
 }
 
 /// No scalar bar for a display in true colors: it would describe a map
@@ -61,6 +86,21 @@ void HideUnusedScalarBar(vtkSMProxy* display, pqView* view)
     vtkSMPVRepresentationProxy::SetScalarBarVisibility(display, view->getProxy(), false);
     view->render();
   }
+}
+
+/// Map Scalars after the display's colored array changed (by the toolbar,
+/// the Properties panel or Python), and the view drawn again.
+void FollowColorArray(pqDataRepresentation* display)
+{
+  if (!display)
+  {
+    return;
+  }
+  if (MapScalarsUnlessColors(display->getProxy()))
+  {
+    HideUnusedScalarBar(display->getProxy(), display->getView());
+  }
+  display->renderViewEventually();
 }
 
 /// Every corner of `bounds` projects inside the view's window (depth aside:
@@ -152,7 +192,17 @@ void pqCloudReaderDisplayBehavior::startDisplay(pqRepresentation* representation
   {
     return;
   }
-  if (ShowTrueColors(proxy))
+  if (ColoredByEightBitColors(proxy) && ColoredByConstantColors(proxy))
+  {
+    vtkSMPVRepresentationProxy::SetScalarColoring(proxy, nullptr, 0);
+    proxy->UpdateVTKObjects();
+  }
+  QPointer<pqDataRepresentation> watched(display);
+  QObject::connect(display,
+    &pqDataRepresentation::colorArrayNameModified,
+    this,
+    [watched]() { FollowColorArray(watched); });
+  if (MapScalarsUnlessColors(proxy))
   {
     // The Apply that made the display shows its scalar bar after this
     // (pqApplyBehavior): hidden once the Apply is over.

@@ -10,7 +10,12 @@
  *   unsigned-char components this turns Map Scalars off, so that the points
  *   show their own colors (the Properties panel's "Map Scalars" box,
  *   unchecked), and hides the scalar bar, which would describe a map that
- *   is not used.
+ *   is not used. It stays so only while the display is colored by such
+ *   colors: colored by any other array (a classification, a curvature), Map
+ *   Scalars is turned back on, so that the array goes through its color map
+ *   instead of being drawn as gray levels or black. Colors that are the
+ *   same at every point (Red, Green and Blue fields never filled) are not
+ *   chosen: the display starts in a solid color.
  * - In view. ParaView resets the camera only when the first cloud goes into
  *   an empty view: a second georeferenced tile a few kilometers away then
  *   lands off-screen. When a new display's bounds are not wholly inside the

@@ -26,6 +26,8 @@
 # What the harness provides:
 #   gui_init [SCREENSHOT]  scratch folder $work (removed on exit), exported
 #                          as GUI_TEST_WORK; GUI_TEST_MARKER=$work/marker;
+#                          GUI_TEST_SCRIPTS=$here (a GUI script imports its
+#                          siblings from there, e.g. las_tiles.py);
 #                          $here is the folder of the test scripts. The
 #                          screenshot's folder is made and an old one removed.
 #   gui_run COMMAND...     starts Xvfb on a free display (-displayfd, so
@@ -119,7 +121,7 @@ gui_pid="" gui_xvfb_pid="" gui_screenshot="" window=""
 gui_init() {
   gui_screenshot=${1:-}
   work=$(mktemp -d)
-  export GUI_TEST_WORK=$work GUI_TEST_MARKER=$work/marker
+  export GUI_TEST_WORK=$work GUI_TEST_MARKER=$work/marker GUI_TEST_SCRIPTS=$here
   # Caches (Mesa's compiled shaders, fonts) stay shared: they are built for
   # concurrent readers, and only save time.
   export XDG_CACHE_HOME=${XDG_CACHE_HOME:-${HOME:-/tmp}/.cache}

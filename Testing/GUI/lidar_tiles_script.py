@@ -8,46 +8,18 @@ wholly in the view, its coloring (array, Map Scalars) and whether a scalar
 bar shows for it. The driver opens and applies the tiles through File >
 Open and the Apply button."""
 
-import math
 import os
-import struct
+import sys
 
 from paraview import servermanager, simple
 from paraview.modules.vtkRemotingViews import vtkSMPVRepresentationProxy
 
+sys.path.insert(0, os.environ["GUI_TEST_SCRIPTS"])
+from las_tiles import write_tile  # noqa: E402  (beside this script)
+
 marker = os.environ["GUI_TEST_MARKER"]
 work = os.environ["GUI_TEST_WORK"]
 EAST_OF_FIRST = 5000.0
-
-
-def tile_points(west, south, size=200.0, rows=60):
-    """A gently rolling 200 m square of ground (no random numbers), with its colors."""
-    for i in range(rows):
-        for j in range(rows):
-            x, y = west + size * (i + 0.5) / rows, south + size * (j + 0.5) / rows
-            z = 50.0 + 3.0 * math.sin(i / 7.0) * math.cos(j / 9.0)
-            red = i < rows // 2
-            yield (x, y, z), (65535, 0, 0) if red else (0, 65535, 0)
-
-
-def write_tile(path, west, south, scale=0.01):
-    """LAS 1.2, point format 2 (26-byte records: format 0 and Red, Green, Blue)."""
-    points = list(tile_points(west, south))
-    xyz = [p for p, _ in points]
-    header = bytearray(227)
-    header[0:4] = b"LASF"
-    header[24], header[25] = 1, 2
-    struct.pack_into("<HIIBHI", header, 94, 227, 227, 0, 2, 26, len(points))
-    offset = (west, south, 0.0)
-    struct.pack_into("<3d3d", header, 131, scale, scale, scale, *offset)
-    low = [min(p[k] for p in xyz) for k in range(3)]
-    high = [max(p[k] for p in xyz) for k in range(3)]
-    struct.pack_into("<6d", header, 179, high[0], low[0], high[1], low[1], high[2], low[2])
-    records = b"".join(
-        struct.pack("<3iHBBbBH3H", *(round((c - o) / scale) for c, o in zip(p, offset)), 0, 0x09, 2, 0, 0, 0, *rgb)
-        for p, rgb in points)
-    with open(path, "wb") as handle:
-        handle.write(bytes(header) + records)
 
 
 def wholly_in_view(view, bounds):
