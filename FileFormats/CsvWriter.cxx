@@ -1,6 +1,7 @@
 #include "FileFormats/CsvWriter.h"
 
 #include "FileFormats/FileOutput.h"
+#include "FileFormats/PlyComments.h"
 
 namespace pcurv
 {
@@ -13,11 +14,17 @@ std::string WriteFile(const char* fileName, const table::Cloud& cloud)
   OutputFile file;
   std::string error = file.Open(fileName);
   std::string& out = file.Buffer();
+  for (const auto& field : cloud.Fields)
+  {
+    out += "# " + ply::FormatFieldComment(field.first, field.second) + "\n";
+  }
+  bool firstColumn = true;
   for (const table::Array& array : cloud.Arrays)
   {
     for (const std::string& name : array.ColumnNames)
     {
-      out += (out.empty() ? "" : ",") + name;
+      out += (firstColumn ? "" : ",") + name;
+      firstColumn = false;
     }
   }
   out += "\n";

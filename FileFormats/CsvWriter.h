@@ -1,6 +1,7 @@
 /**
- * A cloud (CloudTable.h) as comma-separated text: a header line of the
- * column names (x y z, nx ny nz, ... as in PLY), then one line per point,
+ * A cloud (CloudTable.h) as comma-separated text: its field data as lines
+ * "# field <name> <value>" (PlyComments.h), a header line of the column
+ * names (x y z, nx ny nz, ... as in PLY), then one line per point,
  * every value written exactly (integers in full, floating point values in
  * the fewest digits that read back to the same value). No VTK here;
  * vtkCSVPointCloudWriter is the VTK glue.

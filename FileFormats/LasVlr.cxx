@@ -1,6 +1,9 @@
 #include "FileFormats/LasVlr.h"
 
 #include "FileFormats/LasBytes.h"
+#include "FileFormats/PlyComments.h"
+
+#include <sstream>
 
 namespace pcurv
 {
@@ -138,7 +141,46 @@ void AppendVlr(std::vector<unsigned char>& out, const Vlr& vlr)
 //------------------------------------------------------------------------------
 bool IsKept(const std::string& userId, std::uint16_t recordId)
 {
-  return userId == "LASF_Projection" || (userId == "LASF_Spec" && recordId == 4);
+  return userId == "LASF_Projection" || (userId == "LASF_Spec" && recordId == 4) ||
+    (userId == FieldDataUserId && recordId == FieldDataRecordId);
+}
+
+//------------------------------------------------------------------------------
+Vlr FieldDataRecord(const FieldTexts& fields)
+{
+  Vlr record{ FieldDataUserId, FieldDataRecordId, "Field data (PrincipalCurvatures)", {} };
+  for (const auto& field : fields)
+  {
+    const std::string line = ply::FormatFieldComment(field.first, field.second) + "\n";
+    if (record.Data.size() + line.size() <= MaximumVlrPayload)
+    {
+      record.Data.insert(record.Data.end(), line.begin(), line.end());
+    }
+  }
+  return record;
+}
+
+//------------------------------------------------------------------------------
+FieldTexts FieldDataOf(const std::vector<Vlr>& records)
+{
+  FieldTexts fields;
+  for (const Vlr& record : records)
+  {
+    if (record.UserId != FieldDataUserId || record.RecordId != FieldDataRecordId)
+    {
+      continue;
+    }
+    std::istringstream lines(std::string(record.Data.begin(), record.Data.end()));
+    std::string line, name, value;
+    while (std::getline(lines, line))
+    {
+      if (ply::ParseFieldComment(line, name, value))
+      {
+        fields.emplace_back(name, value);
+      }
+    }
+  }
+  return fields;
 }
 
 //------------------------------------------------------------------------------

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace pcurv
@@ -48,6 +49,7 @@ struct Vlr
 
 constexpr std::uint32_t VlrHeaderSize = 54;
 constexpr std::uint32_t ExtraBytesDescriptorSize = 192;
+constexpr std::size_t MaximumVlrPayload = 65535;
 
 /// One descriptor of the Extra Bytes record.
 struct ExtraBytesDescriptor
@@ -75,8 +77,24 @@ std::vector<unsigned char> ExtraBytesPayload(const std::vector<ExtraBytesDescrip
 void AppendVlr(std::vector<unsigned char>& out, const Vlr& vlr);
 
 /// Whether a record is one this project keeps: the coordinate system
-/// (LASF_Projection) and the Extra Bytes description.
+/// (LASF_Projection), the Extra Bytes description and the field data.
 bool IsKept(const std::string& userId, std::uint16_t recordId);
+
+/// The data set's field data as (name, value text) pairs (CloudTable.h),
+/// the values of a several-valued one as pairs of the same name.
+using FieldTexts = std::vector<std::pair<std::string, std::string>>;
+
+/// The record of the plugin's own that carries the field data (the unit,
+/// class names, counts) which the LAS header and its standard records have
+/// no place for: user id FieldDataUserId, record FieldDataRecordId, a
+/// line "field <name> <value>" per pair (PlyComments.h's form); a line
+/// that would take the payload past a VLR's 65535 bytes is left out.
+constexpr const char* FieldDataUserId = "PCurv_FieldData";
+constexpr std::uint16_t FieldDataRecordId = 1;
+Vlr FieldDataRecord(const FieldTexts& fields);
+
+/// The pairs of the field-data records among `records`, in order.
+FieldTexts FieldDataOf(const std::vector<Vlr>& records);
 
 /**
  * The kept records of an open file (stream): the count VLRs from byte

@@ -237,6 +237,10 @@ std::vector<Vlr> RecordsOf(const PointSet& points, const FileSettings& settings,
     }
     records.push_back({ "LASF_Spec", 4, "Extra Bytes", ExtraBytesPayload(descriptors) });
   }
+  if (!settings.Fields.empty())
+  {
+    records.push_back(FieldDataRecord(settings.Fields));
+  }
   return records;
 }
 

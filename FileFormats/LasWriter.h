@@ -71,6 +71,9 @@ struct FileSettings
   std::vector<Vlr> CoordinateRecords;
   /// WKT to write as record 2112 when CoordinateRecords has none.
   std::string Wkt;
+  /// Field data to keep in the plugin's own record (LasVlr.h's
+  /// FieldDataRecord); none when empty.
+  FieldTexts Fields;
   std::string Software = "PrincipalCurvatures";
 };
 

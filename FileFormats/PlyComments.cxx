@@ -1,5 +1,7 @@
 #include "FileFormats/PlyComments.h"
 
+#include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <sstream>
 
@@ -57,13 +59,45 @@ bool ParseArrayComment(const std::string& text, ArrayComment& comment)
 //------------------------------------------------------------------------------
 std::string FormatFieldComment(const std::string& name, const std::string& value)
 {
-  return "field " + name + " " + value;
+  std::string word = name.empty() ? std::string("Field") : name;
+  std::replace_if(
+    word.begin(),
+    word.end(),
+    [](char c) { return std::isspace(static_cast<unsigned char>(c)); },
+    '_');
+  std::string text = value;
+  std::replace_if(
+    text.begin(), text.end(), [](char c) { return c == '\n' || c == '\r'; }, ' ');
+  return "field " + word + " " + text;
 }
 
 //------------------------------------------------------------------------------
 bool ParseFieldComment(const std::string& text, std::string& name, std::string& value)
 {
   return SplitWord(text, "field", name, value);
+}
+
+//------------------------------------------------------------------------------
+bool ParseFieldCommentLine(const char* begin,
+  const char* end,
+  std::string& name,
+  std::string& value)
+{
+  while (begin < end && (*begin == ' ' || *begin == '\t'))
+  {
+    ++begin;
+  }
+  if (begin < end && end[-1] == '\r')
+  {
+    --end;
+  }
+  const std::string prefix = "# ";
+  if (static_cast<std::size_t>(end - begin) <= prefix.size() ||
+    std::string(begin, prefix.size()) != prefix)
+  {
+    return false;
+  }
+  return ParseFieldComment(std::string(begin + prefix.size(), end), name, value);
 }
 
 //------------------------------------------------------------------------------

@@ -33,9 +33,18 @@ std::string FormatArrayComment(const ArrayComment& comment);
 bool ParseArrayComment(const std::string& text, ArrayComment& comment);
 
 /// A header comment "field <name> <value>": one field-data value of the
-/// data set written (its unit, counts), as text.
+/// data set written (its unit, counts), as text, on one line (white space
+/// in the name becomes '_', line ends in the value spaces). A field of
+/// several values (class names) is one comment per value, in order.
 std::string FormatFieldComment(const std::string& name, const std::string& value);
 bool ParseFieldComment(const std::string& text, std::string& name, std::string& value);
+
+/// A text file's line "# field <name> <value>" (CsvWriter.h), spaces
+/// before the '#' and a carriage return at the end allowed.
+bool ParseFieldCommentLine(const char* begin,
+  const char* end,
+  std::string& name,
+  std::string& value);
 
 /// The numbers of a field comment's value ("12", "0.5 1 2"); false when a
 /// word is not a number (the value is then text).

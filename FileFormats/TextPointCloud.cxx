@@ -1,6 +1,7 @@
 #include "FileFormats/TextPointCloud.h"
 
 #include "FileFormats/FileInput.h"
+#include "FileFormats/PlyComments.h"
 
 #include <algorithm>
 #include <cctype>
@@ -241,6 +242,7 @@ std::string ParseTextCloud(const char* data,
   std::size_t lineNumber = 0;
   std::size_t countLine = 0;
   std::string header; // the header line's start, quoted, for messages
+  std::string fieldName, fieldValue;
   while (p < end)
   {
     const char* lineEnd = static_cast<const char*>(std::memchr(p, '\n', end - p));
@@ -250,6 +252,11 @@ std::string ParseTextCloud(const char* data,
     }
     ++lineNumber;
     Tokenize(p, lineEnd, tokens);
+    if (tokens.empty() && cloud.Columns == 0 &&
+      ply::ParseFieldCommentLine(p, lineEnd, fieldName, fieldValue))
+    {
+      cloud.Fields.emplace_back(fieldName, fieldValue);
+    }
     p = lineEnd + 1;
     if (tokens.empty())
     {

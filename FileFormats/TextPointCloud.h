@@ -32,6 +32,8 @@ struct TextCloud
   std::size_t Columns = 0;
   std::vector<double> Values;     // Rows() x Columns, row major
   std::vector<std::string> Names; // the header's column names, or empty
+  /// The "# field <name> <value>" lines before the data (CsvWriter.h).
+  std::vector<std::pair<std::string, std::string>> Fields;
   std::size_t HeaderLine = 0;
   std::size_t FirstDataLine = 0;
   /// The rows holding a NaN or infinite number, with their line numbers.

@@ -2,6 +2,7 @@
 
 #include "FileFormats/LasCrs.h"
 #include "PointCloudReaderSupport.h"
+#include "PointCloudWriterSupport.h"
 
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
@@ -23,6 +24,15 @@ namespace
 {
 
 const char* const ProjectionPrefix = "LAS_Projection_";
+
+/// Whether the field data array `name` is one AddFileDescription makes:
+/// the file's header and standard records hold it.
+bool IsFileDescription(const std::string& name)
+{
+  return name == "LAS_Scale" || name == "LAS_Offset" || name == "LAS_Global_Encoding" ||
+    name.compare(0, std::char_traits<char>::length(ProjectionPrefix), ProjectionPrefix) == 0 ||
+    name == "Coordinate_System" || name == "Length_Unit" || name == "Vertical_Unit";
+}
 
 void AddString(vtkFieldData* field, const char* name, const std::string& value)
 {
@@ -145,6 +155,24 @@ void AddFileDescription(vtkFieldData* field,
   AddString(field, "Coordinate_System", crs.Description);
   AddString(field, "Length_Unit", crs.LengthUnit);
   AddString(field, "Vertical_Unit", crs.VerticalUnit);
+  AddFieldTexts(las::FieldDataOf(records), field);
+}
+
+//------------------------------------------------------------------------------
+void KeepFieldData(vtkFieldData* field,
+  las::FileSettings& settings,
+  std::vector<std::string>& skipped)
+{
+  vtkNew<vtkFieldData> others;
+  for (int i = 0; field && i < field->GetNumberOfArrays(); ++i)
+  {
+    vtkAbstractArray* array = field->GetAbstractArray(i);
+    if (!IsFileDescription(array->GetName() ? array->GetName() : ""))
+    {
+      others->AddArray(array);
+    }
+  }
+  settings.Fields = writers::FieldTextsOf(others, skipped);
 }
 
 //------------------------------------------------------------------------------

@@ -10,6 +10,7 @@
 
 #include "vtkType.h"
 
+#include <string>
 #include <vector>
 
 class vtkFieldData;
@@ -25,7 +26,8 @@ namespace readers
  * 3 components), LAS_Global_Encoding (unsigned short), each coordinate
  * system record's payload as LAS_Projection_<record id> (unsigned char),
  * and the strings Coordinate_System, Length_Unit and Vertical_Unit when
- * the records say them.
+ * the records say them; then the field data the plugin's own record kept
+ * (LasVlr.h's FieldDataRecord: Curvature_Unit, Shape_Class_Names, ...).
  */
 void AddFileDescription(vtkFieldData* field,
   const las::Header& header,
@@ -34,6 +36,13 @@ void AddFileDescription(vtkFieldData* field,
 /// The scale, offset, GPS time type and coordinate system that field (as
 /// AddFileDescription writes it; a WKT Coordinate_System too) asks to keep.
 void KeepFileDescription(vtkFieldData* field, las::FileSettings& settings);
+
+/// The field data that is not the file's description (AddFileDescription's
+/// arrays) as settings.Fields, for the plugin's own record; what a record
+/// cannot hold is named in `skipped`.
+void KeepFieldData(vtkFieldData* field,
+  las::FileSettings& settings,
+  std::vector<std::string>& skipped);
 
 /**
  * Point-data arrays (count tuples) for the extra fields, named as the file

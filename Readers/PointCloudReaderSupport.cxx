@@ -1,10 +1,13 @@
 #include "PointCloudReaderSupport.h"
 
+#include "FileFormats/PlyComments.h"
 #include "FileFormats/TextPointCloud.h"
 
 #include "vtkAlgorithm.h"
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -12,6 +15,7 @@
 #include "vtkObject.h"
 #include "vtkPolyData.h"
 #include "vtkSetGet.h"
+#include "vtkStringArray.h"
 #include "vtkTypeInt32Array.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 
@@ -157,6 +161,36 @@ vtkSmartPointer<vtkDataArray> NewArray(int vtkType,
   array->SetNumberOfComponents(components);
   array->SetNumberOfTuples(count);
   return array;
+}
+
+void AddFieldTexts(const std::vector<std::pair<std::string, std::string>>& fields,
+  vtkFieldData* fieldData)
+{
+  std::vector<double> numbers;
+  for (const auto& field : fields)
+  {
+    const char* name = field.first.c_str();
+    vtkStringArray* earlier = vtkStringArray::SafeDownCast(fieldData->GetAbstractArray(name));
+    if (earlier)
+    {
+      earlier->InsertNextValue(field.second);
+    }
+    else if (pcurv::ply::ParseNumbers(field.second, numbers) && !numbers.empty())
+    {
+      vtkNew<vtkDoubleArray> array;
+      array->SetName(name);
+      array->SetNumberOfComponents(static_cast<int>(numbers.size()));
+      array->InsertNextTuple(numbers.data());
+      fieldData->AddArray(array);
+    }
+    else
+    {
+      vtkNew<vtkStringArray> array;
+      array->SetName(name);
+      array->InsertNextValue(field.second);
+      fieldData->AddArray(array);
+    }
+  }
 }
 
 } // namespace readers

@@ -12,9 +12,11 @@
 #include <functional>
 #include <string>
 #include <utility>
+#include <vector>
 
 class vtkAlgorithm;
 class vtkDataArray;
+class vtkFieldData;
 class vtkInformation;
 class vtkInformationVector;
 class vtkPolyData;
@@ -89,6 +91,16 @@ vtkSmartPointer<vtkDataArray> NewArray(int vtkType,
   const char* name,
   int components,
   vtkIdType count);
+
+/**
+ * Field data from the (name, value text) pairs a file kept
+ * (PointCloudWriterSupport.h's FieldTextsOf): a value of numbers ("12",
+ * "0.5 1 2") a double array of one tuple, other text a string array; the
+ * texts of pairs that share a name are the values of one string array, in
+ * order.
+ */
+void AddFieldTexts(const std::vector<std::pair<std::string, std::string>>& fields,
+  vtkFieldData* fieldData);
 
 } // namespace readers
 } // namespace pcurv

@@ -67,6 +67,21 @@ bool NativeType(int vtkType, Type& type)
   }
 }
 
+/// A number's components as the text of a field value ("0.5 1 2").
+std::string NumbersText(vtkDataArray* numbers)
+{
+  std::string text;
+  for (int c = 0; c < numbers->GetNumberOfComponents(); ++c)
+  {
+    const double value = numbers->GetComponent(0, c);
+    table::Array one;
+    one.Data = &value;
+    text += c ? " " : "";
+    table::AppendValue(one, 0, text);
+  }
+  return text;
+}
+
 /// The input as the core's cloud, and the converted copies of arrays that
 /// the cloud points into.
 class CloudBuilder
@@ -105,24 +120,9 @@ public:
 
   void AddFields(vtkFieldData* fields)
   {
-    for (int i = 0; fields && i < fields->GetNumberOfArrays(); ++i)
+    for (auto& field : FieldTextsOf(fields, this->Skipped))
     {
-      vtkAbstractArray* array = fields->GetAbstractArray(i);
-      const std::string name = array->GetName() ? array->GetName() : "";
-      vtkStringArray* text = vtkStringArray::SafeDownCast(array);
-      vtkDataArray* numbers = vtkDataArray::SafeDownCast(array);
-      if (text && text->GetNumberOfValues() == 1)
-      {
-        this->Cloud.Fields.emplace_back(name, text->GetValue(0));
-      }
-      else if (numbers && numbers->GetNumberOfTuples() == 1)
-      {
-        this->Cloud.Fields.emplace_back(name, FieldText(numbers));
-      }
-      else
-      {
-        this->Skipped.push_back("field data " + name + " (not one value)");
-      }
+      this->Cloud.Fields.push_back(std::move(field));
     }
   }
 
@@ -167,20 +167,6 @@ private:
       this->Skipped.push_back(std::string(array->GetName() ? array->GetName() : "") +
         " rounded (64-bit integers beyond 2^53 as double)");
     }
-  }
-
-  static std::string FieldText(vtkDataArray* numbers)
-  {
-    std::string text;
-    for (int c = 0; c < numbers->GetNumberOfComponents(); ++c)
-    {
-      const double value = numbers->GetComponent(0, c);
-      table::Array one;
-      one.Data = &value;
-      text += c ? " " : "";
-      table::AppendValue(one, 0, text);
-    }
-    return text;
   }
 
   std::vector<vtkSmartPointer<vtkDataArray>> Held;
@@ -290,6 +276,36 @@ std::string SkippedText(const std::vector<std::string>& skipped)
 }
 
 } // namespace
+
+//------------------------------------------------------------------------------
+std::vector<std::pair<std::string, std::string>> FieldTextsOf(vtkFieldData* fields,
+  std::vector<std::string>& skipped)
+{
+  std::vector<std::pair<std::string, std::string>> texts;
+  for (int i = 0; fields && i < fields->GetNumberOfArrays(); ++i)
+  {
+    vtkAbstractArray* array = fields->GetAbstractArray(i);
+    const std::string name = array->GetName() ? array->GetName() : "";
+    vtkStringArray* text = vtkStringArray::SafeDownCast(array);
+    vtkDataArray* numbers = vtkDataArray::SafeDownCast(array);
+    if (text)
+    {
+      for (vtkIdType v = 0; v < text->GetNumberOfValues(); ++v)
+      {
+        texts.emplace_back(name, text->GetValue(v));
+      }
+    }
+    else if (numbers && numbers->GetNumberOfTuples() == 1)
+    {
+      texts.emplace_back(name, NumbersText(numbers));
+    }
+    else
+    {
+      skipped.push_back("field data " + name + " (numbers of more than one tuple)");
+    }
+  }
+  return texts;
+}
 
 //------------------------------------------------------------------------------
 unsigned long WriteInput(vtkWriter* writer,

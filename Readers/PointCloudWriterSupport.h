@@ -7,7 +7,10 @@
 
 #include <functional>
 #include <string>
+#include <utility>
+#include <vector>
 
+class vtkFieldData;
 class vtkWriter;
 
 namespace pcurv
@@ -27,10 +30,20 @@ using WriteFunction = std::function<std::string(const char* fileName, table::Clo
 struct WriteOptions
 {
   bool WithFaces = false;     // a polydata's polygons (PLY)
-  bool WithFieldData = false; // the field data of one value each (PLY comments)
+  bool WithFieldData = false; // the field data (FieldTextsOf), as comments
   bool PointsAsFloat = false; // x y z as float, whatever the points' type
   std::string NormalsArray;   // written as nx ny nz; empty: the normals attribute, else Normals
 };
+
+/**
+ * The field data as (name, value text) pairs, as files keep it (PLY and
+ * CSV comments, a LAS record; PlyComments.h): a string array one pair per
+ * value, in order (Shape_Class_Names' seven names); a numeric array of one
+ * tuple one pair, its components separated by spaces. Numeric arrays of
+ * more tuples are named in `skipped` instead.
+ */
+std::vector<std::pair<std::string, std::string>> FieldTextsOf(vtkFieldData* fields,
+  std::vector<std::string>& skipped);
 
 /**
  * WriteData of a writer: the writer's input (a vtkPointSet) as a cloud

@@ -32,6 +32,7 @@ void vtkCSVPointCloudWriter::WriteData()
   pcurv::writers::WriteOptions options;
   options.PointsAsFloat = this->PointsAsFloat;
   options.NormalsArray = this->NormalsArray ? this->NormalsArray : "";
+  options.WithFieldData = this->FieldDataComments;
   this->SetErrorCode(pcurv::writers::WriteInput(this,
     this->FileName,
     options,
@@ -46,4 +47,5 @@ void vtkCSVPointCloudWriter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
   os << indent << "NormalsArray: " << (this->NormalsArray ? this->NormalsArray : "(none)") << "\n";
   os << indent << "PointsAsFloat: " << this->PointsAsFloat << "\n";
+  os << indent << "FieldDataComments: " << this->FieldDataComments << "\n";
 }

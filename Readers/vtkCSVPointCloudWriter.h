@@ -13,7 +13,11 @@
  * 9 for float; integers in full, a char array as numbers), so that
  * coordinates far from the origin keep every digit, unlike vtkCSVWriter's
  * default precision of 5. Arrays that are not numbers (strings) are left
- * out with a warning; cells and field data are not written.
+ * out with a warning; cells are not written. With FieldDataComments on,
+ * the field data (the unit, the class names) goes before the header as
+ * comment lines `# field <name> <value>`, which vtkTextPointCloudReader
+ * reads back; off (the default), the file is a plain table whose first
+ * line is the header, as spreadsheets and `loadtxt(skiprows=1)` expect.
  *
  * Errors (no file name, an input that is not a point set, a file that
  * cannot be created or written) are one vtkErrorMacro naming the file,
@@ -59,6 +63,15 @@ public:
   vtkBooleanMacro(PointsAsFloat, bool);
   ///@}
 
+  ///@{
+  /// On: the field data as `# field <name> <value>` lines before the
+  /// header (a round trip through vtkTextPointCloudReader keeps it). Off
+  /// (the default): the header is the first line.
+  vtkSetMacro(FieldDataComments, bool);
+  vtkGetMacro(FieldDataComments, bool);
+  vtkBooleanMacro(FieldDataComments, bool);
+  ///@}
+
 protected:
   vtkCSVPointCloudWriter();
   ~vtkCSVPointCloudWriter() override;
@@ -69,6 +82,7 @@ protected:
   char* FileName = nullptr;
   char* NormalsArray = nullptr;
   bool PointsAsFloat = false;
+  bool FieldDataComments = false;
 
 private:
   vtkCSVPointCloudWriter(const vtkCSVPointCloudWriter&) = delete;

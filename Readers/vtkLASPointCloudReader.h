@@ -39,7 +39,9 @@
  * `LAS_Projection_<record id>` (unsigned char), which vtkLASPointCloudWriter
  * reuses; and the strings `Coordinate_System` (the WKT, or "EPSG:<code>"
  * from GeoTIFF keys), `Length_Unit` ("metre", "foot", "US survey foot",
- * ...) and `Vertical_Unit` when the file declares them.
+ * ...) and `Vertical_Unit` when the file declares them; then what a
+ * PCurv_FieldData record (vtkLASPointCloudWriter's) kept: the unit, the
+ * class names, the counts of the data set written.
  *
  * The points are read in chunks of 64k records straight into the output
  * arrays: the file is never held in memory.

@@ -14,6 +14,7 @@
 
 #include <set>
 #include <string>
+#include <vector>
 
 vtkStandardNewMacro(vtkLASPointCloudWriter);
 
@@ -213,6 +214,12 @@ void vtkLASPointCloudWriter::WriteData()
   }
   pcurv::las::FileSettings settings;
   pcurv::readers::KeepFileDescription(input->GetFieldData(), settings);
+  std::vector<std::string> skipped;
+  pcurv::readers::KeepFieldData(input->GetFieldData(), settings, skipped);
+  for (const std::string& what : skipped)
+  {
+    vtkWarningMacro(<< this->FileName << ": not written: " << what);
+  }
   const std::string error = pcurv::las::WriteFile(this->FileName, points, settings);
   if (!error.empty())
   {

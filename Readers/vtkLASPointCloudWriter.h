@@ -24,7 +24,10 @@
  * extent spans at most 10^9 units. The coordinate system records of the
  * input file (field data LAS_Projection_<record id>) are copied; a WKT
  * Coordinate_System from elsewhere is written as a WKT record. The
- * global-encoding WKT bit is set when a WKT record is written.
+ * global-encoding WKT bit is set when a WKT record is written. The other
+ * field data (Curvature_Unit, Shape_Class_Names, counts) is written as a
+ * record of the plugin's own (user id PCurv_FieldData), which
+ * vtkLASPointCloudReader turns back into field data.
  *
  * Errors (one vtkErrorMacro, nothing written): no input points, a point
  * whose coordinates do not fit the scale and offset, a value a standard

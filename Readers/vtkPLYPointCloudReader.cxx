@@ -73,34 +73,19 @@ void MakeArrays(vtkPolyData* output, pcurv::ply::VertexLayout& layout, vtkIdType
   }
 }
 
-/// The header's "field" comments (PlyComments.h) as field data: numbers
-/// as a double array, other text as a string.
+/// The header's "field" comments (PlyComments.h) as field data.
 void AddFieldComments(const pcurv::ply::Header& header, vtkPolyData* output)
 {
+  std::vector<std::pair<std::string, std::string>> fields;
+  std::string name, value;
   for (const std::string& comment : header.Comments)
   {
-    std::string name, value;
-    std::vector<double> numbers;
-    if (!pcurv::ply::ParseFieldComment(comment, name, value))
+    if (pcurv::ply::ParseFieldComment(comment, name, value))
     {
-      continue;
-    }
-    if (pcurv::ply::ParseNumbers(value, numbers))
-    {
-      vtkNew<vtkDoubleArray> array;
-      array->SetName(name.c_str());
-      array->SetNumberOfComponents(static_cast<int>(numbers.size()));
-      array->InsertNextTuple(numbers.data());
-      output->GetFieldData()->AddArray(array);
-    }
-    else
-    {
-      vtkNew<vtkStringArray> array;
-      array->SetName(name.c_str());
-      array->InsertNextValue(value);
-      output->GetFieldData()->AddArray(array);
+      fields.emplace_back(name, value);
     }
   }
+  pcurv::readers::AddFieldTexts(fields, output->GetFieldData());
 }
 
 /// The file's edges between two vertices of the piece [begin, end) as line

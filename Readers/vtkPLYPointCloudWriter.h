@@ -20,11 +20,12 @@
  * - a header comment "array <first property> <components> <name>" for each
  *   array of several components or with a changed name, from which
  *   vtkPLYPointCloudReader restores the array (name, type and components);
- * - a header comment "field <name> <value>" for each field-data array of
- *   one value (a string, or numbers: `Curvature_Unit`, the counts);
+ * - a header comment "field <name> <value>" for each field-data value: a
+ *   string array's values one comment each (`Curvature_Unit`,
+ *   `Shape_Class_Names`), numbers of one tuple one comment (the counts);
  * - a polydata's polygons as the face element (vertex_indices).
- * Arrays that are not numbers (strings), field data of more than one
- * value, lines, strips and the cells of other point sets are left out,
+ * Arrays that are not numbers (strings), numeric field data of more than
+ * one tuple, lines, strips and the cells of other point sets are left out,
  * with one warning naming them.
  *
  * Binary little endian by default; SetFileTypeToASCII writes text, every

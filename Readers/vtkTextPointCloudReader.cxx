@@ -154,6 +154,7 @@ void CopyPiece(const pcurv::TextCloud& cloud,
   {
     pointData->AddArray(DoubleColumns(cloud, { scalar.first }, begin, end, scalar.second.c_str()));
   }
+  pcurv::readers::AddFieldTexts(cloud.Fields, output->GetFieldData());
 }
 
 bool IsCloudExtension(const std::string& extension)

@@ -11,7 +11,10 @@
  * - Numbers are separated by white space, commas or semicolons (runs of
  *   separators count as one, as in `x, y, z`).
  * - Blank lines are skipped; `#` or `//` starts a comment that runs to the
- *   end of the line (whole-line and trailing comments).
+ *   end of the line (whole-line and trailing comments). A comment line
+ *   `# field <name> <value>` before the data (vtkCSVPointCloudWriter writes
+ *   them) becomes field data: numbers a double array, other text a string
+ *   array, lines of one name the values of one array.
  * - A first line holding a single non-negative integer is a point count (the
  *   Leica PTS header) and is skipped; in a `.pts` file every such line is
  *   skipped (PTS files that concatenate scans repeat it).

@@ -2,8 +2,11 @@
 // written as PLY (binary and ascii) and read back by vtkPLYPointCloudReader
 // (names, types, components, values bit for bit), the PLY header's text,
 // float points kept float, faces, full-precision CSV, the errors, and the
-// helper that joins the pieces of a distributed cloud.
+// helper that joins the pieces of a distributed cloud; field data (a unit,
+// class names, counts) through PLY, CSV and LAS and back.
 #include "vtkCSVPointCloudWriter.h"
+#include "vtkLASPointCloudReader.h"
+#include "vtkLASPointCloudWriter.h"
 #include "vtkPLYPointCloudReader.h"
 #include "vtkPLYPointCloudWriter.h"
 #include "vtkPointSetGather.h"
@@ -24,6 +27,7 @@
 #include "vtkShortArray.h"
 #include "vtkSignedCharArray.h"
 #include "vtkStringArray.h"
+#include "vtkTextPointCloudReader.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnsignedIntArray.h"
 #include "vtkUnsignedShortArray.h"
@@ -33,6 +37,7 @@
 #include <limits>
 #include <random>
 #include <sstream>
+#include <vector>
 
 namespace
 {
@@ -431,6 +436,113 @@ void TestCsv(Checks& checks)
       "637180.123456,4100000.1,-12.5,-5,0.1,0.3333333333333333,0,nan\n");
 }
 
+const char* const
+  ClassNames[] = { "Undetermined", "Flat", "Dome", "Cup", "Ridge", "Valley", "Saddle" };
+
+/// A 5 x 5 grid far from the origin with the filter's kinds of field data:
+/// a unit, class names (seven values), a count, a triple.
+vtkSmartPointer<vtkPolyData> FieldDataCloud()
+{
+  auto cloud = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  for (int i = 0; i < 25; ++i)
+  {
+    points->InsertNextPoint(637180.0 + i % 5, 4.1e6 + i / 5, 12.5 + 0.01 * i);
+  }
+  cloud->SetPoints(points);
+  vtkFieldData* fields = cloud->GetFieldData();
+  vtkNew<vtkStringArray> unit, names;
+  unit->SetName("Curvature_Unit");
+  unit->InsertNextValue("1/foot");
+  names->SetName("Shape_Class_Names");
+  for (const char* name : ClassNames)
+  {
+    names->InsertNextValue(name);
+  }
+  vtkNew<vtkIdTypeArray> count;
+  count->SetName("Unestimated_Points");
+  count->InsertNextValue(3);
+  vtkNew<vtkDoubleArray> triple;
+  triple->SetName("Scale Triple"); // a space: '_' in the files
+  triple->SetNumberOfComponents(3);
+  triple->InsertNextTuple3(0.5, 1.0 / 3, 2e-300);
+  for (vtkAbstractArray* array : std::vector<vtkAbstractArray*>{ unit, names, count, triple })
+  {
+    fields->AddArray(array);
+  }
+  return cloud;
+}
+
+template<typename Reader>
+vtkSmartPointer<vtkPolyData> ReadWith(const std::string& path)
+{
+  vtkNew<Reader> reader;
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  return reader->GetOutput();
+}
+
+void CheckFieldData(Checks& checks, const std::string& format, vtkPolyData* read)
+{
+  vtkFieldData* fields = read ? read->GetFieldData() : nullptr;
+  auto* unit =
+    fields ? vtkStringArray::SafeDownCast(fields->GetAbstractArray("Curvature_Unit")) : nullptr;
+  checks.True((format + ": the unit").c_str(),
+    unit && unit->GetNumberOfValues() == 1 && unit->GetValue(0) == "1/foot");
+  auto* names =
+    fields ? vtkStringArray::SafeDownCast(fields->GetAbstractArray("Shape_Class_Names")) : nullptr;
+  bool same = names && names->GetNumberOfValues() == 7;
+  for (int c = 0; same && c < 7; ++c)
+  {
+    same = names->GetValue(c) == ClassNames[c];
+  }
+  checks.True((format + ": the seven class names, in order").c_str(), same);
+  vtkDataArray* count = fields ? fields->GetArray("Unestimated_Points") : nullptr;
+  checks.True((format + ": the count").c_str(),
+    count && count->GetNumberOfTuples() == 1 && count->GetTuple1(0) == 3);
+  vtkDataArray* triple = fields ? fields->GetArray("Scale_Triple") : nullptr;
+  checks.True((format + ": the triple, every digit").c_str(),
+    triple && triple->GetNumberOfComponents() == 3 && triple->GetComponent(0, 0) == 0.5 &&
+      triple->GetComponent(0, 1) == 1.0 / 3 && triple->GetComponent(0, 2) == 2e-300);
+}
+
+/// Field data written by the PLY, CSV (FieldDataComments on) and LAS
+/// writers reads back as it was (a LAS file twice: its own description is
+/// not repeated).
+void TestFieldDataRoundTrip(Checks& checks)
+{
+  vtkSmartPointer<vtkPolyData> cloud = FieldDataCloud();
+  const std::string ply = Folder + "/fields.ply", csv = Folder + "/fields.csv",
+                    las = Folder + "/fields.las", again = Folder + "/fields_again.las";
+  vtkNew<vtkCSVPointCloudWriter> comments;
+  comments->SetFileName(csv.c_str());
+  comments->SetInputData(cloud);
+  comments->FieldDataCommentsOn();
+  comments->Write();
+  checks.True("written",
+    Write<vtkPLYPointCloudWriter>(cloud, ply).Code == 0 && comments->GetErrorCode() == 0 &&
+      Write<vtkLASPointCloudWriter>(cloud, las).Code == 0);
+  CheckFieldData(checks, "PLY", ReadWith<vtkPLYPointCloudReader>(ply));
+  CheckFieldData(checks, "CSV", ReadWith<vtkTextPointCloudReader>(csv));
+  vtkSmartPointer<vtkPolyData> fromLas = ReadWith<vtkLASPointCloudReader>(las);
+  CheckFieldData(checks, "LAS", fromLas);
+  checks.True("LAS read again: written", Write<vtkLASPointCloudWriter>(fromLas, again).Code == 0);
+  vtkSmartPointer<vtkPolyData> twice = ReadWith<vtkLASPointCloudReader>(again);
+  CheckFieldData(checks, "LAS twice", twice);
+  vtkDataArray* scale = twice->GetFieldData()->GetArray("LAS_Scale");
+  checks.True("LAS twice: its own scale once, not also in the field-data record",
+    scale && scale->GetNumberOfTuples() == 1);
+  const std::string plain = Folder + "/fields_plain.csv";
+  checks.True("CSV by default: the header first, no field data",
+    Write<vtkCSVPointCloudWriter>(cloud, plain).Code == 0 &&
+      ReadText(plain).compare(0, 6, "x,y,z\n") == 0);
+  const std::string text = ReadText(csv);
+  checks.True("CSV: the field data as comment lines before the header",
+    text.compare(0, 30, "# field Curvature_Unit 1/foot\n") == 0 &&
+      text.find("\nx,y,z\n") != std::string::npos);
+}
+
 void TestErrors(Checks& checks)
 {
   vtkSmartPointer<vtkPolyData> cloud = MakeCloud();
@@ -491,6 +603,7 @@ int main(int argc, char* argv[])
       { "CommentsThatDoNotFit", TestCommentsThatDoNotFit },
       { "Gather", TestGather },
       { "Csv", TestCsv },
+      { "FieldDataRoundTrip", TestFieldDataRoundTrip },
       { "Errors", TestErrors },
     });
 }
