@@ -7,6 +7,7 @@
 #define CurvatureArrays_h
 
 #include "Estimation/CurvatureOutputs.h"
+#include "Estimation/OutputTable.h"
 #include "Estimation/ShapeClass.h"
 
 #include "vtkDataArray.h"
@@ -62,72 +63,88 @@ struct CurvatureArrays
   std::vector<std::pair<vtkSmartPointer<vtkDataArray>, bool>> InOrder;
   pcurv::CurvatureBuffers Buffers;
   bool Single = false;
+  vtkIdType Tuples = 0;
+  bool Adjusted = false;
+  bool WithStandardError = false;
+  bool ForDisplay = false;
 
   CurvatureArrays(vtkIdType n, bool adjusted, bool standardError, bool display, bool single)
     : Single(single)
+    , Tuples(n)
+    , Adjusted(adjusted)
+    , WithStandardError(standardError)
+    , ForDisplay(display)
   {
     pcurv::CurvatureBuffers& b = this->Buffers;
-    b.Minimum = this->AddReal("Minimum_Curvature", 1, n);
-    b.Maximum = this->AddReal("Maximum_Curvature", 1, n);
-    b.Mean = this->AddReal("Mean_Curvature", 1, n);
-    b.Gauss = this->AddReal("Gauss_Curvature", 1, n);
-    b.MinimumDirection = this->AddReal("Minimum_Curvature_Direction", 3, n);
-    b.MaximumDirection = this->AddReal("Maximum_Curvature_Direction", 3, n);
-    b.Valid = this->Add<vtkUnsignedCharArray>("Curvature_Valid", 1, n);
-    b.NeighborCount = this->Add<vtkIntArray>("Neighbor_Count", 1, n, true);
-    b.ValidDirections = this->Add<vtkIntArray>("Valid_Direction_Count", 1, n, true);
-    b.SineFitRms = this->AddReal("Sine_Fit_RMS", 1, n, true);
-    b.Surroundings = this->AddReal("Surroundings_Threshold", 1, n, true);
-    b.PlaneDistance = this->AddReal("Plane_Distance_Threshold", 1, n, true);
-    // With the dynamic adjustment only: the neighbor count it aimed at for
-    // the point, to compare with Neighbor_Count.
-    b.TargetCount =
-      adjusted ? this->Add<vtkIntArray>("Target_Neighbor_Count", 1, n, true) : nullptr;
-    b.ShapeIndex = this->AddReal("Shape_Index", 1, n);
-    b.Curvedness = this->AddReal("Curvedness", 1, n);
-    // For display; derived from Mean_Curvature, so left out (and not
-    // computed) with the diagnostics when the output is to be small.
-    b.ClippedMean = display ? this->AddReal("Mean_Curvature_Clipped", 1, n) : nullptr;
-    // With the fits that give one: the standard error of the curvatures.
-    b.StandardError =
-      standardError ? this->AddReal("Curvature_Standard_Error", 1, n, true) : nullptr;
-    // With the same fits: 1 where the curvatures are known to a third of
-    // themselves, or precisely near zero (not a diagnostic: what a user
-    // filters by).
-    b.Trusted =
-      standardError ? this->Add<vtkUnsignedCharArray>("Curvature_Trusted", 1, n) : nullptr;
-    // With the same fits: the shape class (pcurv::ShapeClass), which needs
-    // the standard error; Shape_Class_Names in the field data names them.
-    b.ShapeClass =
-      standardError ? this->Add<vtkUnsignedCharArray>(pcurv::ShapeClassArrayName, 1, n) : nullptr;
-    // With the same fits: the normal their directions are tangent to.
-    b.FittedNormal = standardError ? this->AddReal("Fitted_Normal", 3, n) : nullptr;
-    // With the same fits: the points moved onto their neighbors' surface,
-    // and every point's distance to it.
-    b.Outlier = standardError ? this->Add<vtkUnsignedCharArray>("Outlier", 1, n) : nullptr;
-    b.SurfaceDistance = standardError ? this->AddReal("Surface_Distance", 1, n, true) : nullptr;
+    using pcurv::Output;
+    b.Minimum = this->AddReal(Output::MinimumCurvature);
+    b.Maximum = this->AddReal(Output::MaximumCurvature);
+    b.Mean = this->AddReal(Output::MeanCurvature);
+    b.Gauss = this->AddReal(Output::GaussCurvature);
+    b.MinimumDirection = this->AddReal(Output::MinimumDirection);
+    b.MaximumDirection = this->AddReal(Output::MaximumDirection);
+    b.Valid = this->Add<vtkUnsignedCharArray>(Output::Valid);
+    b.NeighborCount = this->Add<vtkIntArray>(Output::NeighborCount);
+    b.ValidDirections = this->Add<vtkIntArray>(Output::ValidDirections);
+    b.SineFitRms = this->AddReal(Output::SineFitRms);
+    b.Surroundings = this->AddReal(Output::Surroundings);
+    b.PlaneDistance = this->AddReal(Output::PlaneDistance);
+    b.TargetCount = this->Add<vtkIntArray>(Output::TargetCount);
+    b.ShapeIndex = this->AddReal(Output::ShapeIndex);
+    b.Curvedness = this->AddReal(Output::Curvedness);
+    b.ClippedMean = this->AddReal(Output::ClippedMean);
+    b.StandardError = this->AddReal(Output::StandardError);
+    b.Trusted = this->Add<vtkUnsignedCharArray>(Output::Trusted);
+    b.ShapeClass = this->Add<vtkUnsignedCharArray>(Output::ShapeClass);
+    b.FittedNormal = this->AddReal(Output::FittedNormal);
+    b.Outlier = this->Add<vtkUnsignedCharArray>(Output::Outlier);
+    b.SurfaceDistance = this->AddReal(Output::SurfaceDistance);
   }
 
-  /// A float or double array (Single), as the core's buffer.
-  pcurv::RealBuffer AddReal(const char* name,
-    int components,
-    vtkIdType tuples,
-    bool diagnostic = false)
+  /// Whether the output of this run has the array (its table row's
+  /// condition).
+  bool Written(const pcurv::OutputArray& row) const
   {
+    switch (row.Condition)
+    {
+      case pcurv::OutputCondition::DynamicAdjustment:
+        return this->Adjusted;
+      case pcurv::OutputCondition::Display:
+        return this->ForDisplay;
+      case pcurv::OutputCondition::StandardError:
+        return this->WithStandardError;
+      case pcurv::OutputCondition::Always:
+        break;
+    }
+    return true;
+  }
+
+  /// A float or double array (Single), as the core's buffer; null when the
+  /// run does not write it.
+  pcurv::RealBuffer AddReal(pcurv::Output id)
+  {
+    const pcurv::OutputArray& row = pcurv::OutputOf(id);
     pcurv::RealBuffer buffer;
-    this->InOrder.emplace_back(
-      NewRealArray(name, components, tuples, this->Single, buffer), diagnostic);
+    if (this->Written(row))
+    {
+      this->InOrder.emplace_back(
+        NewRealArray(row.Name, row.Components, this->Tuples, this->Single, buffer), row.Diagnostic);
+    }
     return buffer;
   }
 
+  /// An array of the table's integer type, as the core's buffer; null when
+  /// the run does not write it.
   template<typename ArrayT>
-  typename ArrayT::ValueType* Add(const char* name,
-    int components,
-    vtkIdType tuples,
-    bool diagnostic = false)
+  typename ArrayT::ValueType* Add(pcurv::Output id)
   {
-    auto array = NewArray<ArrayT>(name, components, tuples);
-    this->InOrder.emplace_back(array, diagnostic);
+    const pcurv::OutputArray& row = pcurv::OutputOf(id);
+    if (!this->Written(row))
+    {
+      return nullptr;
+    }
+    auto array = NewArray<ArrayT>(row.Name, row.Components, this->Tuples);
+    this->InOrder.emplace_back(array, row.Diagnostic);
     return array->GetPointer(0);
   }
 
