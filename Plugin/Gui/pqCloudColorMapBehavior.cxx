@@ -1,6 +1,7 @@
 #include "pqCloudColorMapBehavior.h"
 
 #include "CloudFilterNames.h"
+#include "Estimation/OutputTable.h"
 #include "Estimation/ShapeClass.h"
 #include "Lines/LineTypes.h"
 
@@ -9,12 +10,19 @@
 #include "pqServerManagerModel.h"
 #include "pqView.h"
 #include "vtkDataObject.h"
+#include "vtkNew.h"
+#include "vtkPVArrayInformation.h"
+#include "vtkPVDataInformation.h"
+#include "vtkPVDataSetAttributesInformation.h"
 #include "vtkSMPVRepresentationProxy.h"
 #include "vtkSMPropertyHelper.h"
 #include "vtkSMSessionProxyManager.h"
 #include "vtkSMProxy.h"
+#include "vtkSMTransferFunctionManager.h"
+#include "vtkSMTransferFunctionProxy.h"
 
 #include <array>
+#include <cctype>
 #include <string>
 #include <vector>
 
@@ -125,6 +133,54 @@ void ShowLinesByKind(vtkSMProxy* display)
   display->UpdateVTKObjects();
 }
 
+/// The first string of the field data array `name` of the display's input,
+/// or "".
+std::string FieldText(pqDataRepresentation* representation, const char* name)
+{
+  vtkPVDataInformation* data = representation->getInputDataInformation();
+  vtkPVArrayInformation* array =
+    data ? data->GetFieldDataInformation()->GetArrayInformation(name) : nullptr;
+  const char* text =
+    array && array->GetNumberOfStringValues() > 0 ? array->GetStringValue(0) : nullptr;
+  return text ? text : "";
+}
+
+/// The largest value of the numeric field data array `name`, or 0.
+double FieldNumber(pqDataRepresentation* representation, const char* name)
+{
+  vtkPVDataInformation* data = representation->getInputDataInformation();
+  vtkPVArrayInformation* array =
+    data ? data->GetFieldDataInformation()->GetArrayInformation(name) : nullptr;
+  return array && array->GetNumberOfComponents() > 0 ? array->GetComponentRange(0)[1] : 0.0;
+}
+
+/// Whether `map` is the map of the array `arrayName`. A display's map is
+/// the array's only once both properties have changed (ParaView sets the
+/// array, then the map): ParaView registers it under a name that ends with
+/// the array's.
+bool IsMapOf(vtkSMProxy* map, const std::string& arrayName)
+{
+  const char* mapName =
+    map ? map->GetSessionProxyManager()->GetProxyName("lookup_tables", map) : nullptr;
+  const std::string suffix = arrayName + ".PVLookupTable";
+  const std::string registered = mapName ? mapName : "";
+  return registered.size() >= suffix.size() &&
+    registered.compare(registered.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+/// An output's name as a title: "Mean_Curvature" as "Mean curvature".
+std::string Readable(const std::string& name)
+{
+  std::string text = name;
+  for (std::size_t i = 0; i < text.size(); ++i)
+  {
+    text[i] = text[i] == '_'
+      ? ' '
+      : (i > 0 ? static_cast<char>(std::tolower(static_cast<unsigned char>(text[i]))) : text[i]);
+  }
+  return text;
+}
+
 /// A display of one of the plugin's filters (curvatures, normals, lines).
 bool ShowsCloudFilter(vtkSMProxy* display)
 {
@@ -200,6 +256,82 @@ void pqCloudColorMapBehavior::watchView(pqView* view)
   // after it has given the display the shared color map of its array.
   QObject::connect(
     view, &pqView::representationAdded, this, &pqCloudColorMapBehavior::giveOwnColorMap);
+  QObject::connect(
+    view, &pqView::representationAdded, this, &pqCloudColorMapBehavior::watchColorBar);
+}
+
+void pqCloudColorMapBehavior::watchColorBar(pqRepresentation* representation)
+{
+  auto* data = qobject_cast<pqDataRepresentation*>(representation);
+  if (!data || !data->getProxy()->GetProperty("LookupTable") ||
+    pqApplicationCore::instance()->isLoadingState())
+  {
+    return;
+  }
+  // ParaView sets the array, then the map: described after each.
+  QObject::connect(data,
+    &pqDataRepresentation::colorArrayNameModified,
+    this,
+    [data]() { pqCloudColorMapBehavior::describeColorBar(data); });
+  QObject::connect(data,
+    &pqDataRepresentation::colorTransferFunctionModified,
+    this,
+    [data]() { pqCloudColorMapBehavior::describeColorBar(data); });
+  pqCloudColorMapBehavior::describeColorBar(data);
+}
+
+void pqCloudColorMapBehavior::describeColorBar(pqDataRepresentation* representation)
+{
+  vtkSMProxy* display = representation->getProxy();
+  pqView* view = representation->getView();
+  const char* arrayName =
+    vtkSMPropertyHelper(display, "ColorArrayName", /*quiet=*/true).GetInputArrayNameToProcess();
+  const pcurv::OutputArray* row = arrayName ? pcurv::FindOutput(arrayName) : nullptr;
+  vtkSMProxy* map = vtkSMPropertyHelper(display, "LookupTable").GetAsProxy();
+  // Only a curvature filter's output (saved or not) says its unit.
+  if (!row || !view || CategoriesOf(arrayName) || !IsMapOf(map, arrayName) ||
+    FieldText(representation, "Curvature_Unit").empty())
+  {
+    return;
+  }
+  // The bar is made now if it does not exist yet, hidden: ParaView shows
+  // this one when it shows the map's bar (after an Apply, or asked to).
+  vtkSMProxy* bar = vtkSMTransferFunctionProxy::FindScalarBarRepresentation(map, view->getProxy());
+  const bool made = bar == nullptr;
+  if (made)
+  {
+    vtkNew<vtkSMTransferFunctionManager> manager;
+    bar = manager->GetScalarBarRepresentation(map, view->getProxy());
+  }
+  if (!bar || !bar->GetProperty("Title"))
+  {
+    return;
+  }
+  if (made && bar->GetProperty("Visibility"))
+  {
+    vtkSMPropertyHelper(bar, "Visibility").Set(0);
+  }
+  const std::string unit = pcurv::UnitText(row->Unit, FieldText(representation, "Length_Unit"));
+  const std::string title = Readable(row->Name) + (unit.empty() ? "" : " (" + unit + ")");
+  vtkSMPropertyHelper(bar, "Title").Set(title.c_str());
+  if (row->Components == 1 && bar->GetProperty("ComponentTitle"))
+  {
+    // Left from an earlier array of several components (RGB's): one
+    // component has no component to name.
+    vtkSMPropertyHelper(bar, "ComponentTitle").Set("");
+  }
+  const double unestimated = FieldNumber(representation, "Unestimated_Points");
+  if (row->Value == pcurv::OutputValue::Real && unestimated > 0 &&
+    bar->GetProperty("DrawNanAnnotation"))
+  {
+    // The points in the map's NaN color, named and counted.
+    const std::string nan =
+      "not estimated (" + std::to_string(static_cast<long long>(unestimated)) + ")";
+    vtkSMPropertyHelper(bar, "DrawNanAnnotation").Set(1);
+    vtkSMPropertyHelper(bar, "NanAnnotation").Set(nan.c_str());
+  }
+  bar->UpdateVTKObjects();
+  representation->renderViewEventually();
 }
 
 void pqCloudColorMapBehavior::giveOwnColorMap(pqRepresentation* representation)
@@ -264,17 +396,8 @@ void pqCloudColorMapBehavior::colorCategories(pqDataRepresentation* representati
   vtkSMProxy* map = display->GetProperty("LookupTable")
     ? vtkSMPropertyHelper(display, "LookupTable").GetAsProxy()
     : nullptr;
-  // The display's map is the array's once both properties have changed
-  // (ParaView sets them one after the other): ParaView registers it under
-  // a name that ends with the array's.
-  const char* mapName =
-    map ? map->GetSessionProxyManager()->GetProxyName("lookup_tables", map) : nullptr;
   const CategoricalArray* categories = CategoriesOf(arrayName);
-  const std::string suffix =
-    std::string(categories ? categories->ArrayName : "") + ".PVLookupTable";
-  const std::string registered = mapName ? mapName : "";
-  if (!map || !categories || registered.size() < suffix.size() ||
-    registered.compare(registered.size() - suffix.size(), suffix.size(), suffix) != 0 ||
+  if (!categories || !IsMapOf(map, categories->ArrayName) ||
     vtkSMPropertyHelper(map, "IndexedLookup").GetAsInt() == 1)
   {
     return;

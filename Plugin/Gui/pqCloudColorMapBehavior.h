@@ -20,6 +20,13 @@
  * views keep separate maps. Not applied while a state file loads: its
  * color maps are kept.
  *
+ * Colored by one of the curvature filter's output arrays (of its output,
+ * or of a saved result read back: any data with Curvature_Unit field
+ * data), the color bar's title is the array's name in words with its unit
+ * from the output table (Estimation/OutputTable.h) and the data's
+ * Length_Unit: "Mean curvature (1/foot)". Where points were not
+ * estimated, the bar shows the map's NaN color as "not estimated (N)".
+ *
  * Colored by Shape_Class or Line_Kind, a display's map is categorical: a
  * color and a legend entry named after each class (pcurv::ShapeClass) or
  * line kind (pcurv::LineKind), shown. A display of Curvature Lines is
@@ -45,11 +52,16 @@ private Q_SLOTS:
   /// A new display of one of the plugin's filters: the view's map of its
   /// array, else its own.
   void giveOwnColorMap(pqRepresentation* representation);
+  /// Any new display: its color bar described while it is colored by an
+  /// output array (describeColorBar).
+  void watchColorBar(pqRepresentation* representation);
 
 private:
   /// Colored by Shape_Class or Line_Kind: its map as categories with
   /// their names.
   static void colorCategories(pqDataRepresentation* representation);
+  /// The color bar's title (name and unit) and NaN annotation.
+  static void describeColorBar(pqDataRepresentation* representation);
 };
 
 #endif

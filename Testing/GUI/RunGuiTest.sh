@@ -17,6 +17,9 @@ gui_read_marker 'ok*' || status=1
 # A normals-less .xyz: read by the plugin's reader, normals estimated.
 case "$marker" in *"reader ASCIIPointCloudReader, normals estimated True, colored by Mean_Curvature_Clipped, representation 'Points'"*) ;;
   *) echo "FAILED: the .xyz was not read by the plugin's reader with estimated normals and shown as points colored by Mean_Curvature_Clipped"; status=1 ;; esac
+# The color bar says what the array is and its unit (the .xyz names none).
+case "$marker" in *"color bar 'Mean curvature clipped (1/length unit)'"*) echo "color bar titled with the unit" ;;
+  *) echo "FAILED: the color bar's title is not 'Mean curvature clipped (1/length unit)'"; status=1 ;; esac
 # The color range is the clipped array's: symmetric about zero (white is
 # zero curvature, although this torus's mean curvature is positive
 # everywhere), its end the clip, at most a histogram bin (2^(1/16), 4.4 %)

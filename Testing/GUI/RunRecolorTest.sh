@@ -9,7 +9,9 @@
 # - zero.las, whose colors are all 0, is not colored by them (solid color);
 # - result.las, tile.las through the filter and saved by the plugin's LAS
 #   writer, opens in true colors and, colored by Mean_Curvature, shows the
-#   map's colors.
+#   map's colors under a color bar titled with the unit the tile's
+#   coordinate system gives (metre), its NaN color named and counted for
+#   the points not estimated (the lone point among them).
 #   RunRecolorTest.sh PARAVIEW PLUGIN SCREENSHOT.png
 set -u
 paraview=$1 plugin=$2 screenshot=$3
@@ -67,17 +69,17 @@ for tag in opened classes colors zero result curvature; do
   echo "state $tag: $(cat "$work/state_$tag" 2>/dev/null)"
 done
 state=$(cat "$work/state_opened" 2>/dev/null)
-expect "file tile.las colored_by RGB map_scalars 0 scalar_bar 0"
+expect "file tile.las colored_by RGB map_scalars 0 scalar_bar 0.*"
 state=$(cat "$work/state_classes" 2>/dev/null)
-expect "file tile.las colored_by Classification map_scalars 1 scalar_bar [01]"
+expect "file tile.las colored_by Classification map_scalars 1 scalar_bar [01].*"
 state=$(cat "$work/state_colors" 2>/dev/null)
-expect "file tile.las colored_by RGB map_scalars 0 scalar_bar 0"
+expect "file tile.las colored_by RGB map_scalars 0 scalar_bar 0.*"
 state=$(cat "$work/state_zero" 2>/dev/null)
-expect "file zero.las colored_by - map_scalars [01] scalar_bar 0"
+expect "file zero.las colored_by - map_scalars [01] scalar_bar 0.*"
 state=$(cat "$work/state_result" 2>/dev/null)
-expect "file result.las colored_by RGB map_scalars 0 scalar_bar 0"
+expect "file result.las colored_by RGB map_scalars 0 scalar_bar 0.*"
 state=$(cat "$work/state_curvature" 2>/dev/null)
-expect "file result.las colored_by Mean_Curvature map_scalars 1 scalar_bar [01]"
+expect "file result.las colored_by Mean_Curvature map_scalars 1 scalar_bar [01] title Mean curvature (1/metre) | nan not estimated ([1-9][0-9]*)"
 
 # The middle of the render view, inside its frame (whose blue border would
 # count): blues and reds of the map, far from gray.

@@ -2,7 +2,8 @@
 # Two clouds colored by the same array in one view, in the real ParaView
 # GUI under Xvfb (shared_colorbar_script.py): they must share one color map
 # whose range covers both clouds' Mean_Curvature_Clipped, and the view must
-# show one scalar bar of that title, not two with different ranges.
+# show one scalar bar ("Mean curvature clipped (1/length unit)"), not two
+# with different ranges.
 #   RunSharedColorBarTest.sh PARAVIEW PLUGIN SCREENSHOT.png
 set -u
 paraview=$1 plugin=$2 screenshot=$3
@@ -31,7 +32,7 @@ while read -r _ name _ map _ low high _ data_low data_high; do
   fi
 done < <(grep "^cloud " <<< "$marker")
 bars=$(grep "^visible bars" <<< "$marker")
-case "$bars" in "visible bars 1 titled Mean_Curvature_Clipped"*) echo "one scalar bar: $bars" ;;
-  *) echo "FAILED: not one scalar bar titled Mean_Curvature_Clipped: $bars"; status=1 ;; esac
+case "$bars" in "visible bars 1 titled Mean curvature clipped (1/length unit)"*) echo "one scalar bar: $bars" ;;
+  *) echo "FAILED: not one scalar bar titled Mean curvature clipped (1/length unit): $bars"; status=1 ;; esac
 echo "screenshot: $screenshot"
 exit $status

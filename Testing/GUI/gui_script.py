@@ -29,6 +29,7 @@ try:
     lookup = display.LookupTable  # the display's own (the plugin's GUI part)
     color_range = (lookup.RGBPoints[0], lookup.RGBPoints[-4])
     display.SetScalarBarVisibility(view, True)
+    bar_title = simple.GetScalarBar(lookup, view).Title
     view.CameraPosition = [6, -9, 8]
     view.CameraViewUp = [0, 0, 1]
     ResetCamera(view)
@@ -39,9 +40,10 @@ try:
     estimated = output.GetPointData().GetNormals() is not None
     with open(marker, "w") as handle:
         handle.write("ok reader %s, normals estimated %s, colored by %s, representation %s, point size %g, "
-                     "color range %g %g, mean curvature %g %g, valid %g %g\n"
+                     "color range %g %g, mean curvature %g %g, valid %g %g, color bar '%s'\n"
                      % (cloud.GetXMLName(), estimated, colored_by[-1], display.Representation,
-                        display.PointSize, color_range[0], color_range[1], mean[0], mean[1], valid[0], valid[1]))
+                        display.PointSize, color_range[0], color_range[1], mean[0], mean[1], valid[0], valid[1],
+                        bar_title))
 except Exception as error:  # report to the driver instead of a silent GUI
     with open(marker, "w") as handle:
         handle.write("error %s\n" % error)

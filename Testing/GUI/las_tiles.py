@@ -25,22 +25,36 @@ def tile_points(west, south, colors, classes, size=200.0, rows=60):
             yield (x, y, z), colors(i, j, rows), classes(i, j, rows)
 
 
-def write_tile(path, west, south, scale=0.01, colors=red_west_green_east, classes=ground):
-    """Writes the tile whose south-west corner is (west, south)."""
+def wkt_record(wkt):
+    """A LASF_Projection WKT record (2112): its 54-byte header, then the
+    null-terminated text."""
+    text = wkt.encode("ascii") + b"\0"
+    header = struct.pack("<H16sHH32s", 0, b"LASF_Projection", 2112, len(text), b"OGC WKT")
+    return header + text
+
+
+def write_tile(path, west, south, scale=0.01, colors=red_west_green_east, classes=ground, wkt=None,
+               lone=None):
+    """Writes the tile whose south-west corner is (west, south); with `wkt`,
+    a coordinate system record; with `lone` (x, y, z), one more point there,
+    far from the others."""
     points = list(tile_points(west, south, colors, classes))
+    if lone:
+        points.append((lone, (0, 0, 0), 2))
+    records = wkt_record(wkt) if wkt else b""
     xyz = [p for p, _, _ in points]
     header = bytearray(227)
     header[0:4] = b"LASF"
     header[24], header[25] = 1, 2
-    struct.pack_into("<HIIBHI", header, 94, 227, 227, 0, 2, 26, len(points))
+    struct.pack_into("<HIIBHI", header, 94, 227, 227 + len(records), 1 if wkt else 0, 2, 26, len(points))
     offset = (west, south, 0.0)
     struct.pack_into("<3d3d", header, 131, scale, scale, scale, *offset)
     low = [min(p[k] for p in xyz) for k in range(3)]
     high = [max(p[k] for p in xyz) for k in range(3)]
     struct.pack_into("<6d", header, 179, high[0], low[0], high[1], low[1], high[2], low[2])
-    records = b"".join(
+    body = b"".join(
         struct.pack("<3iHBBbBH3H", *(round((c - o) / scale) for c, o in zip(p, offset)), 0, 0x09, label, 0, 0, 0,
                     *rgb)
         for p, rgb, label in points)
     with open(path, "wb") as handle:
-        handle.write(bytes(header) + records)
+        handle.write(bytes(header) + records + body)

@@ -21,7 +21,7 @@ import os
 import sys
 
 from paraview import servermanager, simple
-from paraview.modules.vtkRemotingViews import vtkSMPVRepresentationProxy
+from paraview.modules.vtkRemotingViews import vtkSMPVRepresentationProxy, vtkSMTransferFunctionProxy
 
 sys.path.insert(0, os.environ["GUI_TEST_SCRIPTS"])
 from las_tiles import write_tile  # noqa: E402  (beside this script)
@@ -40,9 +40,18 @@ def all_zero(i, j, rows):
     return (0, 0, 0)
 
 
+UTM = ('PROJCS["WGS 84 / UTM zone 33N",GEOGCS["WGS 84",DATUM["WGS_1984",SPHEROID["WGS 84",6378137,'
+       '298.257223563]],PRIMEM["Greenwich",0],UNIT["degree",0.0174532925199433]],PROJECTION["Transverse_Mercator"],'
+       'PARAMETER["central_meridian",15],PARAMETER["scale_factor",0.9996],PARAMETER["false_easting",500000],'
+       'PARAMETER["false_northing",0],UNIT["metre",1],AUTHORITY["EPSG","32633"]]')
+
+
 def write_inputs():
     tile = os.path.join(work, "tile.las")
-    write_tile(tile, WEST, SOUTH, classes=ground_west_building_east)
+    # In metres (a WKT record), with one point 30 m off the tile, alone:
+    # not estimated.
+    write_tile(tile, WEST, SOUTH, classes=ground_west_building_east, wkt=UTM,
+               lone=(WEST + 230.0, SOUTH + 100.0, 50.0))
     write_tile(os.path.join(work, "zero.las"), WEST, SOUTH, colors=all_zero)
     reader = simple.OpenDataFile(tile)
     curvatures = simple.PrincipalCurvatures(Input=reader)
@@ -60,13 +69,25 @@ def displayed_files(view):
             yield os.path.basename(source.FileName), source, display
 
 
+def bar_text(display, view):
+    """" title <title> | nan <annotation>" of the display's color bar, if it
+    has one (found, not made)."""
+    lookup = display.LookupTable
+    bar = vtkSMTransferFunctionProxy.FindScalarBarRepresentation(lookup.SMProxy, view.SMProxy) if lookup else None
+    if bar is None:
+        return ""
+    helper = servermanager._getPyProxy(bar)
+    nan = helper.NanAnnotation if helper.DrawNanAnnotation else "-"
+    return " title %s | nan %s" % (helper.Title, nan)
+
+
 def record_state(caller, event):
     """One line per visible display, after each render of the view."""
     try:
         view = simple.GetActiveView()
-        lines = ["file %s colored_by %s map_scalars %d scalar_bar %d\n" % (
+        lines = ["file %s colored_by %s map_scalars %d scalar_bar %d%s\n" % (
             name, display.ColorArrayName[1] or "-", display.MapScalars,
-            vtkSMPVRepresentationProxy.IsScalarBarVisible(display.SMProxy, view.SMProxy))
+            vtkSMPVRepresentationProxy.IsScalarBarVisible(display.SMProxy, view.SMProxy), bar_text(display, view))
             for name, _, display in displayed_files(view) if display.Visibility]
         with open(os.path.join(work, "state"), "w") as handle:
             handle.writelines(lines)

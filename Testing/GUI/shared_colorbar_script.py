@@ -5,7 +5,7 @@ RunSharedColorBarTest.sh: two tori of different sizes (minor radius 1 and
 the GUI's Apply shows a new output (Show, the scalar bar shown, every color
 map's range updated from the visible data). Writes GUI_TEST_MARKER: each
 display's color map and the range of its Mean_Curvature_Clipped, the map's
-range, and the visible scalar bars titled Mean_Curvature_Clipped."""
+range, and the visible scalar bars and their titles."""
 
 import os
 
