@@ -22,7 +22,7 @@ endif ()
 # formats and the VTK side.
 set(PCURV_LIBRARY_FOLDERS
   Settings Common Kernels Neighbors Cloud Fits Scale Normals Outliers Estimation Lines
-  FileFormats Filters Readers Plugin)
+  FileFormats Filters IO Plugin)
 
 function (pcurv_vtk_includes_in folder out)
   set(offenders "")
@@ -121,7 +121,7 @@ if (CMAKE_SCRIPT_MODE_FILE AND DEFINED SELF_TEST_DIR)
     "Plugin|VTK|Filters,Estimation|#include \"Normals/NormalSettings.h\"|1"
     "Plugin|VTK|Filters,Estimation|#include \"Estimation/ShapeClass.h\"|0"
     "Plugin|VTK|Filters,Estimation|#include \"pqApplicationCore.h\"|0"
-    "Plugin|VTK|Filters,Estimation|#include <Readers/vtkLASPointCloudReader.h>|1")
+    "Plugin|VTK|Filters,Estimation|#include <IO/vtkLASPointCloudReader.h>|1")
   set(failures "")
   set(index 0)
   foreach (case IN LISTS cases)

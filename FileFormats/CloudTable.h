@@ -2,7 +2,7 @@
  * A point cloud on its way out to a file (PLY, CSV): its arrays as typed
  * columns in the caller's memory, the name each component gets in the
  * file, and the exact text of a value. The writers (PlyWriter.h,
- * CsvWriter.h) share it. No VTK here; the VTK writers in Readers/ fill it.
+ * CsvWriter.h) share it. No VTK here; the VTK writers in IO/ fill it.
  */
 #ifndef pcurv_CloudTable_h
 #define pcurv_CloudTable_h

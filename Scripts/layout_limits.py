@@ -4,7 +4,7 @@ the largest product files and the largest classes.
     python3 Scripts/layout_limits.py [--max-chain N] [--max-lines N] [--max-class N]
 
 Follows every quoted include of the product code (Core, FileFormats,
-Filters, Readers, Plugin) that names a file of the project, from each
+Filters, IO, Plugin) that names a file of the project, from each
 source or header, and prints the longest chain (counted in includes: a
 file that includes a header that includes nothing of ours is a chain of
 1). A class is counted from its "class" or "struct" line to its closing
@@ -19,7 +19,7 @@ import re
 import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-PRODUCT = ["Core", "FileFormats", "Filters", "Readers", "Plugin"]
+PRODUCT = ["Core", "FileFormats", "Filters", "IO", "Plugin"]
 # The include roots, as the build has them: Core/ for the core's folders,
 # the repository for FileFormats/, and each VTK folder for its own headers.
 INCLUDE_ROOTS = [os.path.join(ROOT, "Core"), ROOT]

@@ -24,7 +24,7 @@
 #   or noisier clouds of ordinary values.
 # "The same code" was measured with a --coverage build: the set below
 # executes every line and every function (each kernel's own) of Core/,
-# FileFormats/, Readers/ and Filters/ that it executes with the tests left
+# FileFormats/, IO/ and Filters/ that it executes with the tests left
 # out added back. Measure again before leaving out another test.
 #
 # Options, and why:

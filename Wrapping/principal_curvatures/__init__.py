@@ -16,7 +16,7 @@ from .vtkPrincipalCurvatureFilters import (  # noqa: F401
     vtkPointCloudNormalEstimation,
     vtkPrincipalCurvatureEstimation,
 )
-from .vtkPrincipalCurvatureReaders import (  # noqa: F401
+from .vtkPrincipalCurvatureIO import (  # noqa: F401
     vtkLASPointCloudReader,
     vtkOFFMeshReader,
     vtkPLYPointCloudReader,

@@ -42,10 +42,10 @@
 #ifndef vtkPLYPointCloudWriter_h
 #define vtkPLYPointCloudWriter_h
 
-#include "vtkPrincipalCurvatureReadersModule.h" // for export macro
+#include "vtkPrincipalCurvatureIOModule.h" // for export macro
 #include "vtkWriter.h"
 
-class VTKPRINCIPALCURVATUREREADERS_EXPORT vtkPLYPointCloudWriter : public vtkWriter
+class VTKPRINCIPALCURVATUREIO_EXPORT vtkPLYPointCloudWriter : public vtkWriter
 {
 public:
   static vtkPLYPointCloudWriter* New();

@@ -74,12 +74,12 @@
 #define vtkTextPointCloudReader_h
 
 #include "vtkPolyDataAlgorithm.h"
-#include "vtkPrincipalCurvatureReadersModule.h" // for export macro
+#include "vtkPrincipalCurvatureIOModule.h" // for export macro
 
 #include <cstddef> // for std::size_t
 #include <vector>  // for the lines of WarnAboutNonFinitePositions
 
-class VTKPRINCIPALCURVATUREREADERS_EXPORT vtkTextPointCloudReader : public vtkPolyDataAlgorithm
+class VTKPRINCIPALCURVATUREIO_EXPORT vtkTextPointCloudReader : public vtkPolyDataAlgorithm
 {
 public:
   static vtkTextPointCloudReader* New();

@@ -18,9 +18,9 @@
 #define vtkPointSetGather_h
 
 #include "vtkPointSetAlgorithm.h"
-#include "vtkPrincipalCurvatureReadersModule.h" // for export macro
+#include "vtkPrincipalCurvatureIOModule.h" // for export macro
 
-class VTKPRINCIPALCURVATUREREADERS_EXPORT vtkPointSetGather : public vtkPointSetAlgorithm
+class VTKPRINCIPALCURVATUREIO_EXPORT vtkPointSetGather : public vtkPointSetAlgorithm
 {
 public:
   static vtkPointSetGather* New();

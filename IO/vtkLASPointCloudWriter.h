@@ -44,12 +44,12 @@
 #ifndef vtkLASPointCloudWriter_h
 #define vtkLASPointCloudWriter_h
 
-#include "vtkPrincipalCurvatureReadersModule.h" // for export macro
+#include "vtkPrincipalCurvatureIOModule.h" // for export macro
 #include "vtkWriter.h"
 
 class vtkPointSet;
 
-class VTKPRINCIPALCURVATUREREADERS_EXPORT vtkLASPointCloudWriter : public vtkWriter
+class VTKPRINCIPALCURVATUREIO_EXPORT vtkLASPointCloudWriter : public vtkWriter
 {
 public:
   static vtkLASPointCloudWriter* New();

@@ -31,10 +31,10 @@
 #ifndef vtkCSVPointCloudWriter_h
 #define vtkCSVPointCloudWriter_h
 
-#include "vtkPrincipalCurvatureReadersModule.h" // for export macro
+#include "vtkPrincipalCurvatureIOModule.h" // for export macro
 #include "vtkWriter.h"
 
-class VTKPRINCIPALCURVATUREREADERS_EXPORT vtkCSVPointCloudWriter : public vtkWriter
+class VTKPRINCIPALCURVATUREIO_EXPORT vtkCSVPointCloudWriter : public vtkWriter
 {
 public:
   static vtkCSVPointCloudWriter* New();

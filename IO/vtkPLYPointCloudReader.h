@@ -44,9 +44,9 @@
 #define vtkPLYPointCloudReader_h
 
 #include "vtkPolyDataAlgorithm.h"
-#include "vtkPrincipalCurvatureReadersModule.h" // for export macro
+#include "vtkPrincipalCurvatureIOModule.h" // for export macro
 
-class VTKPRINCIPALCURVATUREREADERS_EXPORT vtkPLYPointCloudReader : public vtkPolyDataAlgorithm
+class VTKPRINCIPALCURVATUREIO_EXPORT vtkPLYPointCloudReader : public vtkPolyDataAlgorithm
 {
 public:
   static vtkPLYPointCloudReader* New();

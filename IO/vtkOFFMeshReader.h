@@ -25,9 +25,9 @@
 #define vtkOFFMeshReader_h
 
 #include "vtkPolyDataAlgorithm.h"
-#include "vtkPrincipalCurvatureReadersModule.h" // for export macro
+#include "vtkPrincipalCurvatureIOModule.h" // for export macro
 
-class VTKPRINCIPALCURVATUREREADERS_EXPORT vtkOFFMeshReader : public vtkPolyDataAlgorithm
+class VTKPRINCIPALCURVATUREIO_EXPORT vtkOFFMeshReader : public vtkPolyDataAlgorithm
 {
 public:
   static vtkOFFMeshReader* New();

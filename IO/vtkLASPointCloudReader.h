@@ -59,9 +59,9 @@
 #define vtkLASPointCloudReader_h
 
 #include "vtkPolyDataAlgorithm.h"
-#include "vtkPrincipalCurvatureReadersModule.h" // for export macro
+#include "vtkPrincipalCurvatureIOModule.h" // for export macro
 
-class VTKPRINCIPALCURVATUREREADERS_EXPORT vtkLASPointCloudReader : public vtkPolyDataAlgorithm
+class VTKPRINCIPALCURVATUREIO_EXPORT vtkLASPointCloudReader : public vtkPolyDataAlgorithm
 {
 public:
   static vtkLASPointCloudReader* New();
