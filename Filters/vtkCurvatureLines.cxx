@@ -8,6 +8,8 @@
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkObjectFactory.h"
@@ -18,6 +20,9 @@
 #include "vtkSmartPointer.h"
 #include "vtkUnsignedCharArray.h"
 
+#include <cstdint>
+#include <sstream>
+#include <string>
 #include <vector>
 
 vtkStandardNewMacro(vtkCurvatureLines);
@@ -73,6 +78,35 @@ unsigned KindMask(int kinds)
   }
 }
 
+/// The field data Line_Counts: the lines of each kind, by code (what a
+/// legend of the drawn kinds lists).
+vtkSmartPointer<vtkIdTypeArray> KindCounts(const pcurv::LineResult& result)
+{
+  auto counts = vtkSmartPointer<vtkIdTypeArray>::New();
+  counts->SetName(pcurv::LineCountsArrayName);
+  counts->SetNumberOfComponents(pcurv::LineKindCount);
+  counts->SetNumberOfTuples(1);
+  counts->Fill(0);
+  for (const pcurv::CurvatureLine& line : result.Lines)
+  {
+    const int code = static_cast<int>(line.Kind);
+    counts->SetTypedComponent(0, code, counts->GetTypedComponent(0, code) + 1);
+  }
+  return counts;
+}
+
+/// The one message of a run that drew no line, with what to change.
+std::string NoLinesMessage(vtkCurvatureLines* self)
+{
+  std::ostringstream text;
+  text << "Curvature Lines drew no line: no crest of the curvatures stands out of their noise "
+          "(Significance "
+       << self->GetSignificance() << ") over the Minimum Length (" << self->GetMinimumLength()
+       << " neighborhood radii). Lower Significance or Minimum Length, or run Principal "
+          "Curvatures at a larger scale.";
+  return text.str();
+}
+
 /// The core's lines as polylines with their cell and point data.
 void WriteLines(const pcurv::LineResult& result, vtkPolyData* output)
 {
@@ -107,6 +141,7 @@ void WriteLines(const pcurv::LineResult& result, vtkPolyData* output)
   output->GetCellData()->AddArray(strength);
   output->GetCellData()->AddArray(length);
   output->GetPointData()->AddArray(curvature);
+  output->GetFieldData()->AddArray(KindCounts(result));
 }
 
 } // namespace
@@ -187,7 +222,15 @@ int vtkCurvatureLines::RequestData(vtkInformation*,
   {
     pcurv::SMPToolsRunner runner(0);
     // Distributed: the lines of the whole cloud, on process 0.
-    WriteLines(pcurv::ExtractCurvatureLines(in, settings, processes, &runner), output);
+    const pcurv::LineResult result = pcurv::ExtractCurvatureLines(in, settings, processes, &runner);
+    WriteLines(result, output);
+    // Every process takes part in the sum; process 0, which holds the
+    // lines, says so once.
+    const std::int64_t points = processes.Sum(static_cast<std::int64_t>(n));
+    if (result.Lines.empty() && processes.GetLocalProcessId() == 0 && points > 0)
+    {
+      vtkWarningMacro(<< NoLinesMessage(this));
+    }
   }
   catch (const pcurv::LineInputError& error)
   {

@@ -41,6 +41,10 @@ inline const char* LineKindName(LineKind kind)
 /// The name of the lines' cell array holding the kinds.
 constexpr const char* LineKindArrayName = "Line_Kind";
 
+/// The name of the lines' field data counting the lines of each kind (one
+/// tuple, a component per kind, by code).
+constexpr const char* LineCountsArrayName = "Line_Counts";
+
 /// Bit of a kind in LineSettings::Kinds.
 constexpr unsigned KindBit(LineKind kind)
 {

@@ -91,12 +91,14 @@ const CategoricalArray* CategoriesOf(const char* arrayName)
 }
 
 /// The map as categories: one color and one legend entry (its name) per
-/// code, whatever range the map had.
-void MakeCategoricalMap(vtkSMProxy* map, const CategoricalArray& categories)
+/// code of `codes`, whatever range the map had.
+void MakeCategoricalMap(vtkSMProxy* map,
+  const CategoricalArray& categories,
+  const std::vector<int>& codes)
 {
   std::vector<std::string> annotations;
   std::vector<double> colors;
-  for (int code = 0; code < categories.Count; ++code)
+  for (const int code : codes)
   {
     annotations.push_back(std::to_string(code));
     annotations.emplace_back(categories.Name(code));
@@ -179,6 +181,27 @@ std::string Readable(const std::string& name)
       : (i > 0 ? static_cast<char>(std::tolower(static_cast<unsigned char>(text[i]))) : text[i]);
   }
   return text;
+}
+
+/// The codes a legend of `categories` lists: every shape class; the line
+/// kinds that were drawn (Line_Counts), all where that is not known.
+std::vector<int> ShownCodes(pqDataRepresentation* representation,
+  const CategoricalArray& categories)
+{
+  vtkPVDataInformation* data = representation->getInputDataInformation();
+  vtkPVArrayInformation* counts = data && categories.ArrayName == pcurv::LineKindArrayName
+    ? data->GetFieldDataInformation()->GetArrayInformation(pcurv::LineCountsArrayName)
+    : nullptr;
+  std::vector<int> codes;
+  for (int code = 0; code < categories.Count; ++code)
+  {
+    if (!counts || code >= counts->GetNumberOfComponents() ||
+      counts->GetComponentRange(code)[1] > 0)
+    {
+      codes.push_back(code);
+    }
+  }
+  return codes;
 }
 
 /// A display of one of the plugin's filters (curvatures, normals, lines).
@@ -349,6 +372,16 @@ void pqCloudColorMapBehavior::giveOwnColorMap(pqRepresentation* representation)
   vtkSMPropertyHelper(display, "UseSeparateColorMap").Set(1);
   if (pcurv::IsCurvatureLines(vtkSMPropertyHelper(display, "Input").GetAsProxy()))
   {
+    auto* data = qobject_cast<pqDataRepresentation*>(representation);
+    vtkPVDataInformation* info = data ? data->getInputDataInformation() : nullptr;
+    if (info && info->GetNumberOfCells() == 0)
+    {
+      // No line drawn: no colors and no legend (the filter's warning says
+      // why), rather than a map of an empty array.
+      vtkSMPVRepresentationProxy::SetScalarColoring(display, nullptr, 0);
+      display->UpdateVTKObjects();
+      return;
+    }
     ShowLinesByKind(display);
   }
   // The display is already colored (by the output's active scalars) with
@@ -402,7 +435,7 @@ void pqCloudColorMapBehavior::colorCategories(pqDataRepresentation* representati
   {
     return;
   }
-  MakeCategoricalMap(map, *categories);
+  MakeCategoricalMap(map, *categories, ShownCodes(representation, *categories));
   // The legend: the names by their colors.
   if (pqView* view = representation->getView())
   {

@@ -29,8 +29,10 @@
  *
  * Colored by Shape_Class or Line_Kind, a display's map is categorical: a
  * color and a legend entry named after each class (pcurv::ShapeClass) or
- * line kind (pcurv::LineKind), shown. A display of Curvature Lines is
- * colored by Line_Kind when it is first shown, its lines 3 pixels wide.
+ * line kind (pcurv::LineKind), shown; the line kinds listed are those
+ * drawn (the field data Line_Counts). A display of Curvature Lines is
+ * colored by Line_Kind when it is first shown, its lines 3 pixels wide;
+ * one with no line is left uncolored, with no legend.
  */
 #ifndef pqCloudColorMapBehavior_h
 #define pqCloudColorMapBehavior_h

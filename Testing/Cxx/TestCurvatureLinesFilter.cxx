@@ -1,7 +1,8 @@
 // vtkCurvatureLines, the VTK glue: behind vtkPrincipalCurvatureEstimation
 // on an ellipsoid it gives polylines on the principal ellipses with their
-// arrays; an input without curvature arrays is one clear error; an empty
-// input gives an empty output.
+// arrays and the count of each kind; an input without curvature arrays is
+// one clear error; an empty input gives an empty output; a plane, no line
+// and one warning saying what to change.
 #include "AnalyticClouds.h"
 #include "TestChecks.h"
 #include "vtkCurvatureLines.h"
@@ -13,6 +14,7 @@
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkExecutive.h"
+#include "vtkFieldData.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
@@ -32,7 +34,10 @@ struct ErrorCount
   std::string Last; // every message, one after another
 };
 
-void Observe(vtkAlgorithm* filter, vtkCallbackCommand* callback, ErrorCount& count)
+void Observe(vtkAlgorithm* filter,
+  vtkCallbackCommand* callback,
+  ErrorCount& count,
+  unsigned long event = vtkCommand::ErrorEvent)
 {
   callback->SetClientData(&count);
   callback->SetCallback(
@@ -42,8 +47,8 @@ void Observe(vtkAlgorithm* filter, vtkCallbackCommand* callback, ErrorCount& cou
       ++c->Errors;
       c->Last += data ? static_cast<const char*>(data) : "";
     });
-  filter->AddObserver(vtkCommand::ErrorEvent, callback);
-  filter->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, callback);
+  filter->AddObserver(event, callback);
+  filter->GetExecutive()->AddObserver(event, callback);
 }
 
 /// Largest distance of the lines' points to the ellipsoid's three
@@ -85,6 +90,43 @@ int main(int, char*[])
     out->GetCellData()->GetArray("Line_Kind") && out->GetCellData()->GetArray("Line_Strength") &&
       out->GetCellData()->GetArray("Line_Length"));
   checks.True("point array", out->GetPointData()->GetArray("Line_Curvature") != nullptr);
+  // Line_Counts: the lines of each kind, as the cells say.
+  vtkDataArray* counts = out->GetFieldData()->GetArray("Line_Counts");
+  vtkDataArray* kinds = out->GetCellData()->GetArray("Line_Kind");
+  bool countsAgree = counts && kinds && counts->GetNumberOfComponents() == 6;
+  for (int code = 0; countsAgree && code < 6; ++code)
+  {
+    vtkIdType cells = 0;
+    for (vtkIdType c = 0; c < kinds->GetNumberOfTuples(); ++c)
+    {
+      cells += kinds->GetComponent(c, 0) == code ? 1 : 0;
+    }
+    countsAgree = counts->GetComponent(0, code) == cells;
+  }
+  checks.True("Line_Counts: each kind's lines", countsAgree);
+
+  // A plane: no line, and one warning that says what to change.
+  vtkNew<vtkPrincipalCurvatureEstimation> flatCurvatures;
+  flatCurvatures->SetInputData(MakeCloud(Sample(Plane(1.0), 4000, 5)));
+  vtkNew<vtkCurvatureLines> flat;
+  vtkNew<vtkCallbackCommand> warningCallback;
+  ErrorCount warnings;
+  Observe(flat, warningCallback, warnings, vtkCommand::WarningEvent);
+  flat->SetInputConnection(flatCurvatures->GetOutputPort());
+  flat->Update();
+  std::printf("plane: %lld lines, warnings: %s\n",
+    static_cast<long long>(flat->GetOutput()->GetNumberOfLines()),
+    warnings.Last.c_str());
+  checks.True("plane: no line, one warning saying so and what to lower",
+    flat->GetOutput()->GetNumberOfLines() == 0 && warnings.Errors == 1 &&
+      warnings.Last.find("drew no line") != std::string::npos &&
+      warnings.Last.find("Significance") != std::string::npos);
+  vtkNew<vtkCallbackCommand> quietCallback;
+  ErrorCount quiet;
+  Observe(lines, quietCallback, quiet, vtkCommand::WarningEvent);
+  lines->Modified();
+  lines->Update();
+  checks.True("ellipsoid: no warning", quiet.Errors == 0);
 
   // The raw cloud (no curvatures): one error naming what is missing.
   vtkNew<vtkCurvatureLines> bare;

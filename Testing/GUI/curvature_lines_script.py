@@ -8,7 +8,10 @@ and for the lines' display its coloring (array and association), line
 width, whether its map is categorical, its annotations, and whether its
 legend shows. The driver
 applies the cloud, creates Principal Curvatures and Curvature Lines by the
-quick launch, and applies each."""
+quick launch, and applies each. Then, asked by GUI_TEST_WORK/request, it
+shows Curvature Lines of a flat plane (no line) as a new display, and
+writes GUI_TEST_WORK/empty: its cells, coloring and whether a legend
+shows."""
 
 import os
 
@@ -29,6 +32,37 @@ def write_bump(path, seed=5):
     normals = numpy.column_stack([x * z, numpy.zeros_like(x), numpy.ones_like(x)])
     normals /= numpy.linalg.norm(normals, axis=1)[:, None]
     numpy.savetxt(path, numpy.column_stack([x, y, z, normals]), fmt="%.9g")
+
+
+def write_plane(path):
+    """A flat grid with its normals: no curvature, no line."""
+    grid = numpy.arange(60) * 0.1
+    x, y = (v.ravel() for v in numpy.meshgrid(grid, grid))
+    flat = numpy.column_stack([x, y, numpy.zeros_like(x), numpy.zeros_like(x), numpy.zeros_like(x),
+                               numpy.ones_like(x)])
+    numpy.savetxt(path, flat, fmt="%.9g")
+
+
+def show_empty_lines(caller, event):
+    """Asked once: Curvature Lines of a plane, shown; what the display is."""
+    request = os.path.join(work, "request")
+    if not os.path.exists(request):
+        return
+    os.remove(request)
+    try:
+        view = simple.GetActiveView()
+        path = os.path.join(work, "plane.xyz")
+        write_plane(path)
+        lines = simple.CurvatureLines(Input=simple.PrincipalCurvatures(Input=simple.OpenDataFile(path)))
+        display = simple.Show(lines, view)
+        simple.Render(view)
+        text = "empty lines %d colored_by %s legend %d\n" % (
+            lines.GetDataInformation().GetNumberOfCells(), display.ColorArrayName[1] or "-",
+            vtkSMPVRepresentationProxy.IsScalarBarVisible(display.SMProxy, view.SMProxy))
+    except Exception as error:  # the driver reports it
+        text = "error %s\n" % error
+    with open(os.path.join(work, "empty"), "w") as handle:
+        handle.write(text)
 
 
 def shown(source, view):
@@ -73,6 +107,9 @@ try:
     view = simple.GetActiveViewOrCreate("RenderView")
     view.OrientationAxesVisibility = 0
     view.GetRenderWindow().AddObserver("EndEvent", record_state)
+    interactor = view.GetRenderWindow().GetInteractor()
+    interactor.AddObserver("TimerEvent", show_empty_lines)
+    interactor.CreateRepeatingTimer(200)
     with open(marker, "w") as handle:
         handle.write("ready\n")
 except Exception as error:  # report to the driver instead of a silent GUI
