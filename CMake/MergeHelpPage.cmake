@@ -10,6 +10,10 @@ set(begin_marker "<!-- pcurv-help-fragment -->")
 set(end_marker "<!-- pcurv-help-fragment-end -->")
 file(READ "${generated}" page)
 file(READ "${fragment}" extra)
+# ParaView words an optional input array (the normals) as a requirement.
+string(REGEX REPLACE "The dataset must contain a field array \\(point\\)[ \t\r\n]*with 3 component\\(s\\)\\."
+  "Normals, if the dataset has them, are a point array of 3 components; they are estimated otherwise."
+  page "${page}")
 string(FIND "${page}" "${begin_marker}" previous_begin)
 if (previous_begin GREATER_EQUAL 0)
   string(FIND "${page}" "${end_marker}" previous_end)
