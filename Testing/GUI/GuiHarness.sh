@@ -78,6 +78,13 @@
 #                          the dialog NAME to show and take the focus, types
 #                          TEXT and Enter; fails when no dialog showed. The
 #                          screen is marked before Enter (gui_wait_still).
+#   gui_open_and_apply FILE PATTERN
+#                          opens FILE through File > Open (Ctrl+O, the path
+#                          typed, Enter), applies it (Alt+A), and waits until
+#                          a line of $work/state (the test's GUI script
+#                          writes it after each render) matches PATTERN and
+#                          the screen is still; a dialog that did not show is
+#                          noted in $work/events.
 #   gui_quick_launch LABEL creates a filter on the active source by the quick
 #                          launch: Ctrl+Space, LABEL typed into its dialog,
 #                          Enter; returns once the dialog has closed. The
@@ -305,6 +312,16 @@ gui_place_window() {
 
 gui_capture() {
   import -window root "$1"
+}
+
+gui_open_and_apply() {
+  gui_type_in_dialog "Open File" ctrl+o "$1" ||
+    { echo "no Open File dialog for $1" >> "$work/events"; return; }
+  gui_wait_still
+  xdotool windowfocus --sync "$window"
+  xdotool key --clearmodifiers alt+a
+  gui_until 120 grep -q "$2" "$work/state"
+  gui_wait_still
 }
 
 gui_type_in_dialog() {

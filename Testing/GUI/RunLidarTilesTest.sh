@@ -16,16 +16,9 @@ source "$(dirname "$0")/GuiHarness.sh"
 gui_init "$screenshot"
 export GUI_TEST_PLUGIN=$plugin
 
-# Opens a file through File > Open, then applies it, and waits until the
-# view has rendered it.
+# Opens and applies a tile, and waits until the view has rendered it.
 open_and_apply() {
-  gui_type_in_dialog "Open File" ctrl+o "$1" ||
-    { echo "no Open File dialog for $1" >> "$work/events"; return; }
-  gui_wait_still
-  xdotool windowfocus --sync "$window"
-  xdotool key --clearmodifiers alt+a
-  gui_until 120 grep -q "^tile $(basename "$1") " "$work/state"
-  gui_wait_still
+  gui_open_and_apply "$1" "^tile $(basename "$1") "
 }
 gui_drive() {
   gui_wait_for "$GUI_TEST_MARKER"

@@ -19,16 +19,10 @@ source "$(dirname "$0")/GuiHarness.sh"
 gui_init "$screenshot"
 export GUI_TEST_PLUGIN=$plugin
 
-# Opens a file through File > Open, applies it, and waits until the view
-# has rendered it.
+# Opens and applies a file of $work, and waits until the view has
+# rendered it.
 open_and_apply() {
-  gui_type_in_dialog "Open File" ctrl+o "$work/$1" ||
-    { echo "no Open File dialog for $1" >> "$work/events"; return; }
-  gui_wait_still
-  xdotool windowfocus --sync "$window"
-  xdotool key --clearmodifiers alt+a
-  gui_until 120 grep -q "^file $1 " "$work/state"
-  gui_wait_still
+  gui_open_and_apply "$work/$1" "^file $1 "
 }
 # Asks the GUI script for a change ("NAME color ARRAY", "NAME hide"), waits
 # until the state shows a line matching PATTERN (or, for "-NAME", no line
