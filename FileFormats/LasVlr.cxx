@@ -146,7 +146,7 @@ bool IsKept(const std::string& userId, std::uint16_t recordId)
 }
 
 //------------------------------------------------------------------------------
-Vlr FieldDataRecord(const FieldTexts& fields)
+Vlr FieldDataRecord(const FieldTexts& fields, std::vector<std::string>* left)
 {
   Vlr record{ FieldDataUserId, FieldDataRecordId, "Field data (PrincipalCurvatures)", {} };
   for (const auto& field : fields)
@@ -155,6 +155,10 @@ Vlr FieldDataRecord(const FieldTexts& fields)
     if (record.Data.size() + line.size() <= MaximumVlrPayload)
     {
       record.Data.insert(record.Data.end(), line.begin(), line.end());
+    }
+    else if (left)
+    {
+      left->push_back(field.first);
     }
   }
   return record;

@@ -88,10 +88,11 @@ using FieldTexts = std::vector<std::pair<std::string, std::string>>;
 /// class names, counts) which the LAS header and its standard records have
 /// no place for: user id FieldDataUserId, record FieldDataRecordId, a
 /// line "field <name> <value>" per pair (PlyComments.h's form); a line
-/// that would take the payload past a VLR's 65535 bytes is left out.
+/// that would take the payload past a VLR's 65535 bytes is left out, and
+/// its field's name added to `left` when given.
 constexpr const char* FieldDataUserId = "PCurv_FieldData";
 constexpr std::uint16_t FieldDataRecordId = 1;
-Vlr FieldDataRecord(const FieldTexts& fields);
+Vlr FieldDataRecord(const FieldTexts& fields, std::vector<std::string>* left = nullptr);
 
 /// The pairs of the field-data records among `records`, in order.
 FieldTexts FieldDataOf(const std::vector<Vlr>& records);

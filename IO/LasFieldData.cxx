@@ -173,6 +173,12 @@ void KeepFieldData(vtkFieldData* field,
     }
   }
   settings.Fields = writers::FieldTextsOf(others, skipped);
+  std::vector<std::string> left;
+  las::FieldDataRecord(settings.Fields, &left);
+  for (const std::string& name : left)
+  {
+    skipped.push_back("field data " + name + " (past the 65535 bytes a LAS record holds)");
+  }
 }
 
 //------------------------------------------------------------------------------

@@ -135,13 +135,18 @@ void ShowLinesByKind(vtkSMProxy* display)
   display->UpdateVTKObjects();
 }
 
-/// The first string of the field data array `name` of the display's input,
-/// or "".
-std::string FieldText(pqDataRepresentation* representation, const char* name)
+/// What the client knows of the field data array `name` of the display's
+/// input, or null.
+vtkPVArrayInformation* FieldArray(pqDataRepresentation* representation, const char* name)
 {
   vtkPVDataInformation* data = representation->getInputDataInformation();
-  vtkPVArrayInformation* array =
-    data ? data->GetFieldDataInformation()->GetArrayInformation(name) : nullptr;
+  return data ? data->GetFieldDataInformation()->GetArrayInformation(name) : nullptr;
+}
+
+/// The first string of the field data array `name`, or "".
+std::string FieldText(pqDataRepresentation* representation, const char* name)
+{
+  vtkPVArrayInformation* array = FieldArray(representation, name);
   const char* text =
     array && array->GetNumberOfStringValues() > 0 ? array->GetStringValue(0) : nullptr;
   return text ? text : "";
@@ -150,9 +155,7 @@ std::string FieldText(pqDataRepresentation* representation, const char* name)
 /// The largest value of the numeric field data array `name`, or 0.
 double FieldNumber(pqDataRepresentation* representation, const char* name)
 {
-  vtkPVDataInformation* data = representation->getInputDataInformation();
-  vtkPVArrayInformation* array =
-    data ? data->GetFieldDataInformation()->GetArrayInformation(name) : nullptr;
+  vtkPVArrayInformation* array = FieldArray(representation, name);
   return array && array->GetNumberOfComponents() > 0 ? array->GetComponentRange(0)[1] : 0.0;
 }
 
@@ -174,11 +177,10 @@ bool IsMapOf(vtkSMProxy* map, const std::string& arrayName)
 std::string Readable(const std::string& name)
 {
   std::string text = name;
-  for (std::size_t i = 0; i < text.size(); ++i)
+  for (std::size_t i = 1; i < text.size(); ++i)
   {
-    text[i] = text[i] == '_'
-      ? ' '
-      : (i > 0 ? static_cast<char>(std::tolower(static_cast<unsigned char>(text[i]))) : text[i]);
+    const auto c = static_cast<unsigned char>(text[i]);
+    text[i] = c == '_' ? ' ' : static_cast<char>(std::tolower(c));
   }
   return text;
 }
@@ -188,9 +190,8 @@ std::string Readable(const std::string& name)
 std::vector<int> ShownCodes(pqDataRepresentation* representation,
   const CategoricalArray& categories)
 {
-  vtkPVDataInformation* data = representation->getInputDataInformation();
-  vtkPVArrayInformation* counts = data && categories.ArrayName == pcurv::LineKindArrayName
-    ? data->GetFieldDataInformation()->GetArrayInformation(pcurv::LineCountsArrayName)
+  vtkPVArrayInformation* counts = categories.ArrayName == pcurv::LineKindArrayName
+    ? FieldArray(representation, pcurv::LineCountsArrayName)
     : nullptr;
   std::vector<int> codes;
   for (int code = 0; code < categories.Count; ++code)

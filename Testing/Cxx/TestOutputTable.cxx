@@ -19,7 +19,6 @@
 #include "vtkPolyData.h"
 #include "vtkUnsignedCharArray.h"
 
-#include <fstream>
 #include <map>
 #include <set>
 #include <sstream>
@@ -112,14 +111,6 @@ void TestArrays(Checks& checks)
     checks, "small output", vtkPrincipalCurvatureEstimation::ORIENTED_CIRCLES, false, false, true);
 }
 
-std::string ReadText(const std::string& path)
-{
-  std::ifstream file(path);
-  std::ostringstream text;
-  text << file.rdbuf();
-  return text.str();
-}
-
 /// The names between `open` and `close` marks in `text` (backticks, or
 /// a cell's tags), split at ", ".
 std::vector<std::string> NamesIn(const std::string& cell, char mark)
@@ -195,9 +186,9 @@ std::map<std::string, std::string> HelpRows(const std::string& text)
 
 void TestDocs(Checks& checks)
 {
-  const std::string markdown = ReadText(SourceDir + "/docs/output-arrays.md");
+  const std::string markdown = ReadTextFile(SourceDir + "/docs/output-arrays.md");
   const std::string help =
-    ReadText(SourceDir + "/Plugin/Help/filters.PrincipalCurvatureEstimation.html");
+    ReadTextFile(SourceDir + "/Plugin/Help/filters.PrincipalCurvatureEstimation.html");
   checks.True("docs/output-arrays.md and the help page read", !markdown.empty() && !help.empty());
   const auto documented = MarkdownRows(markdown);
   const auto helped = HelpRows(help);

@@ -33,10 +33,8 @@
 #include "vtkUnsignedShortArray.h"
 
 #include <cmath>
-#include <fstream>
 #include <limits>
 #include <random>
-#include <sstream>
 #include <vector>
 
 namespace
@@ -129,14 +127,6 @@ vtkSmartPointer<vtkPolyData> MakeCloud()
   count->InsertNextValue(3);
   cloud->GetFieldData()->AddArray(count);
   return cloud;
-}
-
-std::string ReadText(const std::string& path)
-{
-  std::ifstream file(path, std::ios::binary);
-  std::ostringstream text;
-  text << file.rdbuf();
-  return text.str();
 }
 
 struct Written
@@ -256,7 +246,7 @@ void TestHeader(Checks& checks)
   vtkSmartPointer<vtkPolyData> cloud = MakeCloud();
   const std::string path = Folder + "/writer_header.ply";
   Write<vtkPLYPointCloudWriter>(cloud, path);
-  const std::string text = ReadText(path);
+  const std::string text = ReadTextFile(path);
   const std::string header = text.substr(0, text.find("end_header\n") + 11);
   std::printf("%s", header.c_str());
   const std::string expected = "ply\n"
@@ -312,7 +302,7 @@ void TestFloatPointsAndFaces(Checks& checks)
   mesh->SetPolys(polys);
   const std::string path = Folder + "/writer_faces.ply";
   Write<vtkPLYPointCloudWriter>(mesh, path, true);
-  const std::string text = ReadText(path);
+  const std::string text = ReadTextFile(path);
   checks.True("float points stay float", text.find("property float x\n") != std::string::npos);
   checks.True("faces: element and list",
     text.find("element face 2\nproperty list uchar int vertex_indices\nend_header\n") !=
@@ -333,7 +323,7 @@ void TestOptions(Checks& checks)
   writer->PointsAsFloatOn();
   writer->SetNormalsArray("Maximum_Curvature_Direction");
   writer->Write();
-  const std::string text = ReadText(path);
+  const std::string text = ReadTextFile(path);
   checks.True("PointsAsFloat: float x y z",
     text.find("property float x\nproperty float y\n") != std::string::npos);
   checks.True("NormalsArray: that array as nx ny nz",
@@ -427,7 +417,7 @@ void TestCsv(Checks& checks)
   cloud->GetPointData()->AddArray(vector);
   const std::string path = Folder + "/writer.csv";
   const Written written = Write<vtkCSVPointCloudWriter>(cloud, path);
-  const std::string text = ReadText(path);
+  const std::string text = ReadTextFile(path);
   std::printf("%s", text.c_str());
   checks.True("csv written", written.Errors.empty() && written.Code == 0);
   checks.True("csv text",
@@ -533,11 +523,25 @@ void TestFieldDataRoundTrip(Checks& checks)
   vtkDataArray* scale = twice->GetFieldData()->GetArray("LAS_Scale");
   checks.True("LAS twice: its own scale once, not also in the field-data record",
     scale && scale->GetNumberOfTuples() == 1);
+  // A field past what a LAS record holds: named in a warning, not lost
+  // silently; the others kept.
+  vtkNew<vtkStringArray> huge;
+  huge->SetName("Huge_Note");
+  huge->InsertNextValue(std::string(70000, 'x'));
+  cloud->GetFieldData()->AddArray(huge);
+  const std::string tooLong = Folder + "/fields_too_long.las";
+  const Written written = Write<vtkLASPointCloudWriter>(cloud, tooLong);
+  checks.True("LAS: a field past 65535 bytes is named in a warning",
+    written.Code == 0 && written.Warnings.find("Huge_Note") != std::string::npos);
+  vtkSmartPointer<vtkPolyData> withoutHuge = ReadWith<vtkLASPointCloudReader>(tooLong);
+  CheckFieldData(checks, "LAS without the field past 65535 bytes", withoutHuge);
+  checks.True("LAS: that field is not in the file",
+    withoutHuge->GetFieldData()->GetAbstractArray("Huge_Note") == nullptr);
   const std::string plain = Folder + "/fields_plain.csv";
   checks.True("CSV by default: the header first, no field data",
     Write<vtkCSVPointCloudWriter>(cloud, plain).Code == 0 &&
-      ReadText(plain).compare(0, 6, "x,y,z\n") == 0);
-  const std::string text = ReadText(csv);
+      ReadTextFile(plain).compare(0, 6, "x,y,z\n") == 0);
+  const std::string text = ReadTextFile(csv);
   checks.True("CSV: the field data as comment lines before the header",
     text.compare(0, 30, "# field Curvature_Unit 1/foot\n") == 0 &&
       text.find("\nx,y,z\n") != std::string::npos);
@@ -557,8 +561,8 @@ void TestErrors(Checks& checks)
   const std::string emptyPath = Folder + "/writer_empty.ply";
   const Written none = Write<vtkPLYPointCloudWriter>(empty, emptyPath);
   checks.True("empty input: no error", none.Errors.empty() && none.Code == 0);
-  checks.True(
-    "empty input: 0 vertices", ReadText(emptyPath).find("element vertex 0\n") != std::string::npos);
+  checks.True("empty input: 0 vertices",
+    ReadTextFile(emptyPath).find("element vertex 0\n") != std::string::npos);
   vtkNew<vtkDoubleArray> shortArray; // fewer values than points: left out
   shortArray->SetName("Short_Array");
   shortArray->InsertNextValue(1);

@@ -10,7 +10,10 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <fstream>
 #include <initializer_list>
+#include <sstream>
+#include <string>
 
 /// Whether the tests run under AddressSanitizer (Scripts/sanitize.sh). There
 /// the tests that are studies as well (sweeps of settings to compare with)
@@ -27,6 +30,15 @@ constexpr bool UnderSanitizers = true;
 #else
 constexpr bool UnderSanitizers = false;
 #endif
+
+/// The whole file as text ("" when it cannot be read).
+inline std::string ReadTextFile(const std::string& path)
+{
+  std::ifstream file(path, std::ios::binary);
+  std::ostringstream text;
+  text << file.rdbuf();
+  return text.str();
+}
 
 class Checks
 {
