@@ -70,7 +70,7 @@ cd build-asan
 # A test that reports anything aborts and fails; the timeout covers the
 # slowdown of the sanitizers on a busy 2-core machine. Two tests at a time:
 # most are single-threaded, and the sanitized runs are most of CI's time.
-default_tests='^((CurvatureCore|CurvatureCoreGenericKernel|PrincipalCurvatureEstimation|DynamicAdjustment|BadInput(Configuration|Points|Scale))|(CloudEstimation|OrientedCircles|AutomaticScale|NormalField|NormalEstimation|NeighborGrid|Outliers|OpenScans)\..*|BadInputExtreme_.*|LASReader|LASWriter\..*|PointCloudWriters\..*|PLYReader|FuzzReaderSeeds|CurvatureLines\.(ExactEllipsoid|InputAndThreads)|ShapeClass\.(ClassRule|TrustedKeepsCrests)|TimeLeft\..*)$'
+default_tests='^((CurvatureCoreGenericKernel|PrincipalCurvatureEstimation|DynamicAdjustment|BadInput(Configuration|Points|Scale))|(CurvatureCore|CloudEstimation|OrientedCircles|AutomaticScale|NormalField|NormalEstimation|NeighborGrid|Outliers|OpenScans)\..*|BadInputExtreme_.*|LASReader|LASWriter\..*|PointCloudWriters\..*|PLYReader|FuzzReaderSeeds|CurvatureLines\.(ExactEllipsoid|InputAndThreads)|ShapeClass\.(ClassRule|TrustedKeepsCrests)|TimeLeft\..*)$'
 HEAVY_REPEATS='^(AutomaticScale\.(SharedFits|RoundedPositions|HeightJets|NoisyScan|AutomaticScale|WideLadder)|OrientedCircles\.(GatedThirdOrder|FourthOrder|FittedDirections)|NormalEstimation\.(NoisyGivenNormals|HeavyNoiseNormals)|Outliers\.NoFalseOutliers)$'
 if [ -n "${PCURV_SANITIZE_TESTS:-}" ]; then
   selection=(-R "$PCURV_SANITIZE_TESTS")

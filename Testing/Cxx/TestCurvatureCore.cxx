@@ -1087,25 +1087,27 @@ void TestNeighborSectors(Checks& checks)
   checks.Equal("oriented circles: neighbors' sectors as atan2 gives them", wrong, 0);
 }
 
-int main()
+int main(int argc, char* argv[])
 {
-  Checks checks;
-  TestTangentFrame(checks);
-  TestDirectionMaskMatchesPlaneTest(checks);
-  TestBinningKernelsAgree(checks);
-  TestCombineKernelsAgree(checks);
-  TestGatherKernelsAgree(checks);
-  TestShellGatherKernelsAgree(checks);
-  TestCircleDistanceKernelsAgree(checks);
-  TestOrientedSumKernelsAgree(checks);
-  TestOffsetsEqualCoordinates(checks);
-  TestCircleFits(checks);
-  TestPreviousMatchesEigenSolver(checks);
-  TestDistanceToCircle(checks);
-  TestSineFit(checks);
-  TestEstimatorOnSurfaces(checks);
-  TestDegenerateNeighborhoods(checks);
-  TestInvariance(checks);
-  TestNeighborSectors(checks);
-  return checks.Summary();
+  return RunNamedTests(argc,
+    argv,
+    {
+      { "TangentFrame", TestTangentFrame },
+      { "DirectionMaskMatchesPlaneTest", TestDirectionMaskMatchesPlaneTest },
+      { "BinningKernelsAgree", TestBinningKernelsAgree },
+      { "CombineKernelsAgree", TestCombineKernelsAgree },
+      { "GatherKernelsAgree", TestGatherKernelsAgree },
+      { "ShellGatherKernelsAgree", TestShellGatherKernelsAgree },
+      { "CircleDistanceKernelsAgree", TestCircleDistanceKernelsAgree },
+      { "OrientedSumKernelsAgree", TestOrientedSumKernelsAgree },
+      { "OffsetsEqualCoordinates", TestOffsetsEqualCoordinates },
+      { "CircleFits", TestCircleFits },
+      { "PreviousMatchesEigenSolver", TestPreviousMatchesEigenSolver },
+      { "DistanceToCircle", TestDistanceToCircle },
+      { "SineFit", TestSineFit },
+      { "EstimatorOnSurfaces", TestEstimatorOnSurfaces },
+      { "DegenerateNeighborhoods", TestDegenerateNeighborhoods },
+      { "Invariance", TestInvariance },
+      { "NeighborSectors", TestNeighborSectors },
+    });
 }
