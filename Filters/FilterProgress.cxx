@@ -1,7 +1,5 @@
 #include "FilterProgress.h"
 
-#include "Common/TimeLeft.h"
-
 #include "vtkSMPTools.h"
 #include "vtkAlgorithm.h"
 
@@ -40,7 +38,8 @@ void AlgorithmProgress::Pass()
 {
   const double fraction = this->Fraction.load(std::memory_order_relaxed);
   const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - this->Start;
-  this->Algorithm->SetProgressText(ProgressText(this->Label, fraction, elapsed.count()).c_str());
+  this->Algorithm->SetProgressText(
+    this->Clock.Text(this->Label, fraction, elapsed.count()).c_str());
   this->Algorithm->UpdateProgress(fraction);
   if (this->Algorithm->GetAbortExecute())
   {

@@ -8,6 +8,7 @@
 #define FilterProgress_h
 
 #include "Common/Progress.h"
+#include "Common/TimeLeft.h"
 #include "Common/WorkRunner.h"
 
 #include <atomic>
@@ -25,7 +26,7 @@ namespace pcurv
 /// runs the filter: ParaView shows progress, and honors Abort, only from
 /// there. The filter's abort flag travels back the same way. The filter's
 /// progress text (what ParaView's progress bar shows) says the time left
-/// (ProgressText, Common/TimeLeft.h).
+/// (TimeLeftClock, Common/TimeLeft.h).
 class AlgorithmProgress : public ProgressMonitor
 {
 public:
@@ -42,6 +43,7 @@ private:
   vtkAlgorithm* Algorithm;
   std::string Label;
   std::chrono::steady_clock::time_point Start;
+  TimeLeftClock Clock; // read and written by Pass alone
   std::atomic<double> Fraction{ 0.0 };
   std::atomic<bool> AbortRequested{ false };
 };

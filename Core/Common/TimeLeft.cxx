@@ -25,23 +25,49 @@ std::string RoughDuration(double seconds)
   }
   return std::to_string(minutes / 60) + " h " + std::to_string(minutes % 60) + " min";
 }
-} // namespace
 
-std::string ProgressText(const std::string& label, double fraction, double elapsedSeconds)
+/// ProgressText with the pace measured from `firstFraction` done at
+/// `firstSeconds`.
+std::string TextSince(const std::string& label,
+  double fraction,
+  double elapsedSeconds,
+  double firstFraction,
+  double firstSeconds)
 {
-  fraction = std::min(std::max(fraction, 0.0), 1.0);
+  const double seconds = elapsedSeconds - firstSeconds;
+  const double done = fraction - firstFraction;
   // Before a second has passed or 1 % is done, the pace says little (the
   // first stages are not the slowest).
-  if (!(elapsedSeconds >= 1.0) || fraction < 0.01 || fraction >= 1.0)
+  if (!(seconds >= 1.0) || !(done >= 0.01) || fraction >= 1.0)
   {
     return label;
   }
-  const double secondsLeft = elapsedSeconds * (1.0 - fraction) / fraction;
+  const double secondsLeft = seconds * (1.0 - fraction) / done;
   if (secondsLeft < ShortestEstimate)
   {
     return label + ": less than " + std::to_string(ShortestEstimate) + " s left";
   }
   return label + ": about " + RoughDuration(secondsLeft) + " left";
+}
+} // namespace
+
+std::string ProgressText(const std::string& label, double fraction, double elapsedSeconds)
+{
+  return TextSince(label, std::min(std::max(fraction, 0.0), 1.0), elapsedSeconds, 0.0, 0.0);
+}
+
+std::string TimeLeftClock::Text(const std::string& label, double fraction, double elapsedSeconds)
+{
+  fraction = std::min(std::max(fraction, 0.0), 1.0);
+  if (!this->Moved && fraction > 0.0 && std::isfinite(elapsedSeconds))
+  {
+    this->Moved = true;
+    this->FirstFraction = fraction;
+    this->FirstSeconds = elapsedSeconds;
+  }
+  return this->Moved
+    ? TextSince(label, fraction, elapsedSeconds, this->FirstFraction, this->FirstSeconds)
+    : label;
 }
 
 } // namespace pcurv

@@ -20,6 +20,23 @@ namespace pcurv
 /// ParaView's progress bar adds the percentage.
 std::string ProgressText(const std::string& label, double fraction, double elapsedSeconds);
 
+/// The progress text of a run whose first steps may report no progress at
+/// all (the serial steps before the first counted stage take seconds on
+/// millions of points): the pace is measured from the first time the
+/// fraction was seen to move, so that the time those steps took is not
+/// charged to every percent still to go.
+class TimeLeftClock
+{
+public:
+  /// ProgressText over the part of the run since the fraction first moved.
+  std::string Text(const std::string& label, double fraction, double elapsedSeconds);
+
+private:
+  bool Moved = false;
+  double FirstFraction = 0.0;
+  double FirstSeconds = 0.0;
+};
+
 } // namespace pcurv
 
 #endif

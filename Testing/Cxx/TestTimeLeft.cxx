@@ -43,6 +43,41 @@ void TestNoEstimate(Checks& checks)
   checks.True("no time measured", ProgressText("Run", 0.5, std::nan("")) == "Run");
 }
 
+/// A run whose first steps report nothing for 4 s, then go at a steady
+/// pace to the end at 24 s: the first estimate is near the 19 s left, not
+/// the 395 s the pace since the start would say.
+void TestSilentStart(Checks& checks)
+{
+  pcurv::TimeLeftClock clock;
+  std::string first;
+  double firstAt = 0.0;
+  for (double t = 0.0; t < 24.0 && first.empty(); t += 0.1)
+  {
+    const double fraction = t < 4.0 ? 0.0 : (t - 4.0) / 20.0;
+    const std::string text = clock.Text("Run", fraction, t);
+    checks.True("no estimate while nothing moved", t >= 4.0 || text == "Run");
+    if (text != "Run")
+    {
+      first = text;
+      firstAt = t;
+    }
+  }
+  checks.True(("the first estimate, at " + std::to_string(firstAt) + " s: '" + first + "'").c_str(),
+    first == "Run: about 20 s left" || first == "Run: about 15 s left");
+  checks.True("then the pace of the run: about 10 s left at 14 s",
+    clock.Text("Run", 0.5, 14.0) == "Run: about 10 s left");
+}
+
+/// A clock that never saw progress says the label alone, and a clock
+/// whose elapsed time is unknown does not start measuring.
+void TestClockWithoutPace(Checks& checks)
+{
+  pcurv::TimeLeftClock clock;
+  checks.True("nothing done", clock.Text("Run", 0.0, 30.0) == "Run");
+  checks.True("no time measured", clock.Text("Run", 0.5, std::nan("")) == "Run");
+  checks.True("done", clock.Text("Run", 1.0, 40.0) == "Run");
+}
+
 } // namespace
 
 int main(int argc, char* argv[])
@@ -53,5 +88,7 @@ int main(int argc, char* argv[])
       { "ShortRun", TestShortRun },
       { "LongRun", TestLongRun },
       { "NoEstimate", TestNoEstimate },
+      { "SilentStart", TestSilentStart },
+      { "ClockWithoutPace", TestClockWithoutPace },
     });
 }
