@@ -5,7 +5,10 @@
 # must open ParaView's help window on the plugin's own page for the filter
 # (pqHelpReaction::showProxyHelp finds it in the plugin's Qt help), not on
 # ParaView's front page: the help window's text, read back by OCR, must
-# hold the page's title, its sign convention and output array names.
+# hold the page's title, its sign convention and output array names. The
+# panel's Normals row, on a cloud without normals, reads "None (automatic)"
+# without ParaView's red no-entry icon (pqNormalsArraySelector): no red
+# pixel in that row.
 #   RunHelpTest.sh PARAVIEW PLUGIN SCREENSHOT.png
 set -u
 paraview=$1 plugin=$2 screenshot=$3
@@ -23,6 +26,10 @@ gui_drive() {
     tesseract "$work/left.png" - tsv 2>/dev/null |
       awk -F "\t" '$12 == "Delete" { print int(($7 + $9) / 3), int(($8 + $10 / 2) / 3); exit }' \
       > "$work/delete"
+    # The row of "(automatic)", by OCR too: its top and height.
+    tesseract "$work/left.png" - tsv 2>/dev/null |
+      awk -F "\t" '$12 == "(automatic)" { print int($8 / 3), int($10 / 3); exit }' \
+      > "$work/automatic"
     read -r dx dy < "$work/delete"
     if [ -n "${dx:-}" ]; then
       # The "?" button: right of the Delete button, whose text ends about
@@ -41,6 +48,22 @@ gui_run "$paraview" --dr --script="$here/help_script.py"
 
 status=0
 gui_read_marker 'ready*' || exit 1
+# The Normals row: the strip of the panel's width through "(automatic)".
+read -r ay ah < "$work/automatic" 2> /dev/null
+if [ -n "${ay:-}" ]; then
+  convert "$work/before.png" -crop "500x$((ah + 8))+0+$((ay - 4))" +repage \
+    "${screenshot%.png}_normals_row.png"
+  red=$(gui_count_pixels "${screenshot%.png}_normals_row.png" "" "(r > 180) & (g < 90) & (b < 90)")
+  if [ "$red" -eq 0 ]; then
+    echo "the Normals row reads None (automatic), with no red icon"
+  else
+    echo "FAILED: $red red pixels in the Normals row (ParaView's no-entry icon)"
+    status=1
+  fi
+else
+  echo "FAILED: no '(automatic)' found by OCR in the Properties panel"
+  status=1
+fi
 if [ -s "$work/clicked" ]; then
   echo "clicked the ? right of Delete at $(cat "$work/clicked")"
 else
