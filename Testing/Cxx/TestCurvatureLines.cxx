@@ -235,31 +235,87 @@ void TestExactEllipsoid(Checks& checks)
   checks.Below("exact ellipsoid: false length share", score.FalseShare, 0.02);
 }
 
-/// The estimator's curvatures of the noise-free ellipsoid (the targets'
-/// first row), and with 0.4 spacings of noise (the second).
-void TestEstimatedEllipsoid(Checks& checks)
+/// The scores of the estimator's lines on independent draws of the
+/// ellipsoid (100k points, uniform in area), with `noise` spacings of
+/// position noise: one draw's coverage moves by a few percent from the
+/// next's (where the lines stop short of the ellipses' ends), so the
+/// tests hold the draws' mean and each draw's floor.
+std::vector<LineScore> EllipsoidDraws(double noise, const char* what)
 {
   const std::size_t n = 100000;
   const double spacing = EllipsoidSpacing(n);
-  const auto clean = testing::Sample(testing::Ellipsoid(A, B, C), n, 72);
-  const LineScore score = ScoreEllipsoid(Extract(EstimatedArrays(clean), AllLineKinds), spacing);
-  score.Print("ellipsoid, estimated, noise-free, all kinds");
-  checks.True("estimated ellipsoid: 95 % of line points within 1 spacing", score.WithinOne >= 0.95);
-  checks.True("estimated ellipsoid: 95 % of the ellipses covered", score.Covered >= 0.95);
-  checks.Below("estimated ellipsoid: false length share", score.FalseShare, 0.02);
+  std::vector<LineScore> scores;
+  for (std::uint64_t draw = 0; draw < 6; ++draw)
+  {
+    auto samples = testing::Sample(testing::Ellipsoid(A, B, C), n, 72 + 100 * draw);
+    if (noise > 0.0)
+    {
+      testing::AddPositionNoise(samples, noise * spacing, 74 + 100 * draw);
+    }
+    scores.push_back(ScoreEllipsoid(Extract(EstimatedArrays(samples), AllLineKinds), spacing));
+    scores.back().Print(what);
+  }
+  return scores;
+}
+
+/// The mean of one score over the draws.
+double MeanOf(const std::vector<LineScore>& scores, double LineScore::*score)
+{
+  double sum = 0.0;
+  for (const LineScore& s : scores)
+  {
+    sum += s.*score;
+  }
+  return scores.empty() ? 0.0 : sum / static_cast<double>(scores.size());
+}
+
+/// The worst of one score over the draws (the least, or the most where
+/// less is better).
+double WorstOf(const std::vector<LineScore>& scores, double LineScore::*score, bool lessIsBetter)
+{
+  double worst = lessIsBetter ? 0.0 : 1.0;
+  for (const LineScore& s : scores)
+  {
+    worst = lessIsBetter ? std::max(worst, s.*score) : std::min(worst, s.*score);
+  }
+  return worst;
+}
+
+/// The estimator's curvatures of the noise-free ellipsoid (the targets'
+/// first row), and with 0.4 spacings of noise (the second), over six draws.
+void TestEstimatedEllipsoid(Checks& checks)
+{
+  const std::vector<LineScore> draws =
+    EllipsoidDraws(0.0, "ellipsoid, estimated, noise-free, all kinds");
+  checks.True("estimated ellipsoid: 95 % of line points within 1 spacing, every draw",
+    WorstOf(draws, &LineScore::WithinOne, false) >= 0.95);
+  checks.True("estimated ellipsoid: 95 % of the ellipses covered, mean of the draws",
+    MeanOf(draws, &LineScore::Covered) >= 0.95);
+  checks.True("estimated ellipsoid: 93.5 % covered, every draw",
+    WorstOf(draws, &LineScore::Covered, false) >= 0.935);
+  checks.Below("estimated ellipsoid: false length share, every draw",
+    WorstOf(draws, &LineScore::FalseShare, true),
+    0.02);
 }
 
 void TestNoisyEllipsoid(Checks& checks)
 {
-  const std::size_t n = 100000;
-  const double spacing = EllipsoidSpacing(n);
-  auto noisy = testing::Sample(testing::Ellipsoid(A, B, C), n, 73);
-  testing::AddPositionNoise(noisy, 0.4 * spacing, 74);
-  const LineScore score = ScoreEllipsoid(Extract(EstimatedArrays(noisy), AllLineKinds), spacing);
-  score.Print("ellipsoid, estimated, 0.4 spacings of noise, all kinds");
-  checks.True("noisy ellipsoid: 95 % of line points within 2 spacings", score.WithinTwo >= 0.95);
-  checks.True("noisy ellipsoid: 60 % of the ellipses covered", score.Covered >= 0.60);
-  checks.Below("noisy ellipsoid: false length share", score.FalseShare, 0.05);
+  const std::vector<LineScore> draws =
+    EllipsoidDraws(0.4, "ellipsoid, estimated, 0.4 spacings of noise, all kinds");
+  checks.True("noisy ellipsoid: 96 % of line points within 2 spacings, mean of the draws",
+    MeanOf(draws, &LineScore::WithinTwo) >= 0.96);
+  checks.True("noisy ellipsoid: 93 % within 2 spacings, every draw",
+    WorstOf(draws, &LineScore::WithinTwo, false) >= 0.93);
+  checks.True("noisy ellipsoid: 65 % of the ellipses covered, mean of the draws",
+    MeanOf(draws, &LineScore::Covered) >= 0.65);
+  checks.True("noisy ellipsoid: 60 % covered, every draw",
+    WorstOf(draws, &LineScore::Covered, false) >= 0.60);
+  checks.Below("noisy ellipsoid: false length share, mean of the draws",
+    MeanOf(draws, &LineScore::FalseShare),
+    0.04);
+  checks.Below("noisy ellipsoid: false length share, every draw",
+    WorstOf(draws, &LineScore::FalseShare, true),
+    0.08);
 }
 
 /// The bump's ridge and valleys, exact and estimated (default kinds:
