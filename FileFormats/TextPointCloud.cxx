@@ -146,6 +146,117 @@ std::string NoPointsReason(const TextCloud& cloud,
   return "no points: its " + std::to_string(lines) + " line(s) are blank or comments";
 }
 
+/// Why [p, end), the buffer after any byte order mark, is no text cloud
+/// (empty, or holding a NUL byte), or an empty string.
+std::string NotTextReason(const char* data, const char* p, const char* end)
+{
+  if (p == end)
+  {
+    return "the file is empty: no points";
+  }
+  if (const char* zero = static_cast<const char*>(std::memchr(p, '\0', end - p)))
+  {
+    const std::size_t line = static_cast<std::size_t>(std::count(p, zero, '\n')) + 1;
+    return AtLine(line) + "a NUL byte (byte " + std::to_string(zero - data) + "): not a text file";
+  }
+  return std::string();
+}
+
+/// Takes the words of line lineNumber for the header of column names.
+void ReadHeader(const std::vector<Token>& tokens,
+  std::size_t lineNumber,
+  TextCloud& cloud,
+  std::string& header)
+{
+  for (const Token& token : tokens)
+  {
+    cloud.Names.push_back(ColumnName(token));
+  }
+  cloud.HeaderLine = lineNumber;
+  header = Quoted(Token(tokens.front().first, tokens.back().second));
+}
+
+/// Checks the first data line and sets the cloud's column count from it;
+/// what is wrong with the line, or an empty string.
+std::string StartData(const std::vector<Token>& tokens,
+  std::size_t lineNumber,
+  std::size_t lines,
+  bool firstRowOnly,
+  const std::string& header,
+  TextCloud& cloud)
+{
+  double value;
+  // Words first: "2 numbers" would mislead about a line of words.
+  for (const Token& token : tokens)
+  {
+    if (!ParseNumber(token.first, token.second, value))
+    {
+      return AtLine(lineNumber) + Quoted(token) + " is not a number" +
+        (cloud.HeaderLine ? " (line " + std::to_string(cloud.HeaderLine) + ", " + header +
+              ", was taken for a header of column names)"
+                          : std::string());
+    }
+  }
+  if (tokens.size() < 3)
+  {
+    return AtLine(lineNumber) + std::to_string(tokens.size()) +
+      " number(s); a point needs at least x y z";
+  }
+  if (!cloud.Names.empty() && cloud.Names.size() != tokens.size())
+  {
+    return AtLine(lineNumber) + std::to_string(tokens.size()) + " columns, but the header (line " +
+      std::to_string(cloud.HeaderLine) + ") names " + std::to_string(cloud.Names.size());
+  }
+  cloud.Columns = tokens.size();
+  cloud.FirstDataLine = lineNumber;
+  cloud.Values.reserve(firstRowOnly ? cloud.Columns : lines * cloud.Columns);
+  return std::string();
+}
+
+/// Checks a data line's column count; the first data line sets it (see
+/// StartData). What is wrong with the line, or an empty string.
+std::string CheckDataLine(const std::vector<Token>& tokens,
+  std::size_t lineNumber,
+  std::size_t lines,
+  bool firstRowOnly,
+  const std::string& header,
+  TextCloud& cloud)
+{
+  if (cloud.Columns == 0)
+  {
+    return StartData(tokens, lineNumber, lines, firstRowOnly, header, cloud);
+  }
+  if (tokens.size() != cloud.Columns)
+  {
+    return AtLine(lineNumber) + std::to_string(tokens.size()) + " columns, but line " +
+      std::to_string(cloud.FirstDataLine) + " has " + std::to_string(cloud.Columns);
+  }
+  return std::string();
+}
+
+/// Appends the numbers of data line lineNumber to the cloud, noting a row
+/// with a NaN or infinite one; a word that is not a number, or an empty
+/// string.
+std::string AppendRow(const std::vector<Token>& tokens, std::size_t lineNumber, TextCloud& cloud)
+{
+  double value;
+  bool finite = true;
+  for (const Token& token : tokens)
+  {
+    if (!ParseNumber(token.first, token.second, value))
+    {
+      return AtLine(lineNumber) + Quoted(token) + " is not a number";
+    }
+    finite = finite && std::isfinite(value);
+    cloud.Values.push_back(value);
+  }
+  if (!finite)
+  {
+    cloud.NonFiniteRows.emplace_back(cloud.Rows() - 1, lineNumber);
+  }
+  return std::string();
+}
+
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -226,14 +337,10 @@ std::string ParseTextCloud(const char* data,
   {
     p += 3; // UTF-8 byte order mark
   }
-  if (p == end)
+  const std::string notText = NotTextReason(data, p, end);
+  if (!notText.empty())
   {
-    return "the file is empty: no points";
-  }
-  if (const char* zero = static_cast<const char*>(std::memchr(p, '\0', end - p)))
-  {
-    const std::size_t line = static_cast<std::size_t>(std::count(p, zero, '\n')) + 1;
-    return AtLine(line) + "a NUL byte (byte " + std::to_string(zero - data) + "): not a text file";
+    return notText;
   }
   // Reserve for as many rows as the buffer has lines.
   const std::size_t lines = static_cast<std::size_t>(std::count(p, end, '\n')) + 1;
@@ -275,60 +382,17 @@ std::string ParseTextCloud(const char* data,
     if (beforeData && cloud.Names.empty() && !ParseNumber(tokens[0].first, tokens[0].second, value))
     {
       // A header of column names.
-      for (const Token& token : tokens)
-      {
-        cloud.Names.push_back(ColumnName(token));
-      }
-      cloud.HeaderLine = lineNumber;
-      header = Quoted(Token(tokens.front().first, tokens.back().second));
+      ReadHeader(tokens, lineNumber, cloud, header);
       continue;
     }
-    if (beforeData)
+    std::string error = CheckDataLine(tokens, lineNumber, lines, firstRowOnly, header, cloud);
+    if (error.empty())
     {
-      // Words first: "2 numbers" would mislead about a line of words.
-      for (const Token& token : tokens)
-      {
-        if (!ParseNumber(token.first, token.second, value))
-        {
-          return AtLine(lineNumber) + Quoted(token) + " is not a number" +
-            (cloud.HeaderLine ? " (line " + std::to_string(cloud.HeaderLine) + ", " + header +
-                  ", was taken for a header of column names)"
-                              : std::string());
-        }
-      }
-      if (tokens.size() < 3)
-      {
-        return AtLine(lineNumber) + std::to_string(tokens.size()) +
-          " number(s); a point needs at least x y z";
-      }
-      if (!cloud.Names.empty() && cloud.Names.size() != tokens.size())
-      {
-        return AtLine(lineNumber) + std::to_string(tokens.size()) +
-          " columns, but the header (line " + std::to_string(cloud.HeaderLine) + ") names " +
-          std::to_string(cloud.Names.size());
-      }
-      cloud.Columns = tokens.size();
-      cloud.FirstDataLine = lineNumber;
-      cloud.Values.reserve(firstRowOnly ? cloud.Columns : lines * cloud.Columns);
+      error = AppendRow(tokens, lineNumber, cloud);
     }
-    else if (tokens.size() != cloud.Columns)
+    if (!error.empty())
     {
-      return AtLine(lineNumber) + std::to_string(tokens.size()) + " columns, but line " +
-        std::to_string(cloud.FirstDataLine) + " has " + std::to_string(cloud.Columns);
-    }
-    bool finite = true;
-    for (const Token& token : tokens)
-    {
-      if (!ParseNumber(token.first, token.second, value))
-      {
-        return AtLine(lineNumber) + Quoted(token) + " is not a number";
-      }
-      finite = finite && std::isfinite(value);
-      cloud.Values.push_back(value);
-    }
-    if (!finite)
-    {
-      cloud.NonFiniteRows.emplace_back(cloud.Rows() - 1, lineNumber);
+      return error;
     }
     if (firstRowOnly)
     {
@@ -391,197 +455,6 @@ std::string LowerExtension(const char* fileName)
     return std::string();
   }
   return LowerCase(name.substr(dot + 1));
-}
-
-namespace
-{
-
-/// The index of the column with each of the names (ignoring case), or an
-/// empty vector if one is missing.
-std::vector<std::size_t> NamedColumns(const std::vector<std::string>& lowerNames,
-  std::initializer_list<const char*> wanted)
-{
-  std::vector<std::size_t> found;
-  for (const char* name : wanted)
-  {
-    const auto at = std::find(lowerNames.begin(), lowerNames.end(), name);
-    if (at == lowerNames.end())
-    {
-      return {};
-    }
-    found.push_back(static_cast<std::size_t>(at - lowerNames.begin()));
-  }
-  return found;
-}
-
-bool IsByteColumn(const TextCloud& cloud, std::size_t column)
-{
-  const std::size_t rows = cloud.Rows();
-  for (std::size_t row = 0; row < rows; ++row)
-  {
-    const double v = cloud.Values[row * cloud.Columns + column];
-    if (!(v >= 0 && v <= 255 && v == std::floor(v)))
-    {
-      return false;
-    }
-  }
-  return true;
-}
-
-/// Integers in 0..255, some above 1: colors (`x y z r g b`), never
-/// normals. Axis-aligned unit normals (0 and 1 only) stay normals.
-bool AreColors(const TextCloud& cloud, const std::vector<std::size_t>& columns)
-{
-  bool aboveOne = false;
-  for (std::size_t column : columns)
-  {
-    if (!IsByteColumn(cloud, column))
-    {
-      return false;
-    }
-    for (std::size_t row = 0; row < cloud.Rows() && !aboveOne; ++row)
-    {
-      aboveOne = cloud.Values[row * cloud.Columns + column] > 1.0;
-    }
-  }
-  return aboveOne;
-}
-
-} // namespace
-
-//------------------------------------------------------------------------------
-ColumnLayout ChooseColumnLayout(const TextCloud& cloud, bool pts)
-{
-  ColumnLayout layout;
-  // Leica PTS: x y z intensity [r g b], colors integers in 0..255.
-  const bool ptsLayout = cloud.Columns == 4 ||
-    (cloud.Columns == 7 && IsByteColumn(cloud, 4) && IsByteColumn(cloud, 5) &&
-      IsByteColumn(cloud, 6));
-  std::vector<std::string> lower;
-  for (const std::string& name : cloud.Names)
-  {
-    lower.push_back(LowerCase(name));
-  }
-  if (!lower.empty())
-  {
-    std::vector<std::size_t> position = NamedColumns(lower, { "x", "y", "z" });
-    if (!position.empty())
-    {
-      layout.Position = position;
-    }
-    for (auto triple : { NamedColumns(lower, { "nx", "ny", "nz" }),
-           NamedColumns(lower, { "normal_x", "normal_y", "normal_z" }),
-           NamedColumns(lower, { "normalx", "normaly", "normalz" }),
-           NamedColumns(lower, { "n_x", "n_y", "n_z" }) })
-    {
-      if (!triple.empty())
-      {
-        layout.Normal = triple;
-        break;
-      }
-    }
-  }
-  else if (cloud.Columns >= 6 && !(pts && ptsLayout) && !AreColors(cloud, { 3, 4, 5 }))
-  {
-    layout.Normal = { 3, 4, 5 };
-  }
-
-  std::vector<std::size_t> remaining;
-  for (std::size_t column = 0; column < cloud.Columns; ++column)
-  {
-    const auto used = [column](const std::vector<std::size_t>& columns)
-    { return std::find(columns.begin(), columns.end(), column) != columns.end(); };
-    if (!used(layout.Position) && !used(layout.Normal))
-    {
-      remaining.push_back(column);
-    }
-  }
-  const auto bytes = [&cloud](const std::vector<std::size_t>& columns)
-  {
-    return columns.size() == 3 &&
-      std::all_of(columns.begin(),
-        columns.end(),
-        [&cloud](std::size_t column) { return IsByteColumn(cloud, column); });
-  };
-  if (!lower.empty())
-  {
-    for (auto triple :
-      { NamedColumns(lower, { "r", "g", "b" }), NamedColumns(lower, { "red", "green", "blue" }) })
-    {
-      const bool free = std::all_of(triple.begin(),
-        triple.end(),
-        [&remaining](std::size_t c)
-        { return std::find(remaining.begin(), remaining.end(), c) != remaining.end(); });
-      if (free && bytes(triple))
-      {
-        layout.Color = triple;
-        break;
-      }
-    }
-  }
-  else if (remaining.size() == 3 || (pts && ptsLayout && remaining.size() == 4))
-  {
-    std::vector<std::size_t> last(remaining.end() - 3, remaining.end());
-    if (bytes(last))
-    {
-      layout.Color = last;
-    }
-  }
-  // Array names in use: a header column named like one gets its index too.
-  std::vector<std::string> used;
-  if (!layout.Normal.empty())
-  {
-    used.emplace_back("Normals");
-  }
-  if (!layout.Color.empty())
-  {
-    used.emplace_back("RGB");
-  }
-  for (std::size_t column : remaining)
-  {
-    if (std::find(layout.Color.begin(), layout.Color.end(), column) != layout.Color.end())
-    {
-      continue;
-    }
-    std::string name;
-    if (!cloud.Names.empty())
-    {
-      name = cloud.Names[column];
-    }
-    else if (pts && ptsLayout && column == 3)
-    {
-      name = "Intensity";
-    }
-    else
-    {
-      name = "Column_" + std::to_string(column);
-    }
-    if (name.empty() || std::find(used.begin(), used.end(), name) != used.end())
-    {
-      name += "_" + std::to_string(column);
-    }
-    used.push_back(name);
-    layout.Scalars.emplace_back(column, name);
-  }
-  return layout;
-}
-
-//------------------------------------------------------------------------------
-std::vector<std::size_t> NonFinitePositionLines(const TextCloud& cloud, const ColumnLayout& layout)
-{
-  std::vector<std::size_t> lines;
-  for (const auto& row : cloud.NonFiniteRows)
-  {
-    const double* values = cloud.Values.data() + row.first * cloud.Columns;
-    const bool bad = std::any_of(layout.Position.begin(),
-      layout.Position.end(),
-      [values](std::size_t column) { return !std::isfinite(values[column]); });
-    if (bad)
-    {
-      lines.push_back(row.second);
-    }
-  }
-  return lines;
 }
 
 } // namespace pcurv
