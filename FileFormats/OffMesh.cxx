@@ -81,6 +81,76 @@ std::string Quoted(const std::string& word)
   return "'" + word.substr(0, 40) + (word.size() > 40 ? "...'" : "'");
 }
 
+/// Reads the vertex lines' x y z into mesh.Points; what is wrong, or an
+/// empty string.
+std::string ReadVertices(LineReader& lines,
+  std::vector<std::string>& words,
+  std::int64_t vertices,
+  OffMesh& mesh)
+{
+  for (std::int64_t v = 0; v < vertices; ++v)
+  {
+    if (!lines.Next(words))
+    {
+      return "the file ends after " + std::to_string(v) + " of its " + std::to_string(vertices) +
+        " vertices";
+    }
+    if (words.size() < 3)
+    {
+      return lines.At() + "vertex " + std::to_string(v) + ": " + std::to_string(words.size()) +
+        " number(s); a vertex needs x y z";
+    }
+    for (int c = 0; c < 3; ++c)
+    {
+      double value;
+      if (!ToDouble(words[c], value))
+      {
+        return lines.At() + "vertex " + std::to_string(v) + ": " + Quoted(words[c]) +
+          " is not a number";
+      }
+      mesh.Points.push_back(value);
+    }
+  }
+  return std::string();
+}
+
+/// Reads the face lines into mesh.Connectivity and mesh.Offsets; what is
+/// wrong, or an empty string.
+std::string ReadFaces(LineReader& lines,
+  std::vector<std::string>& words,
+  std::int64_t vertices,
+  std::int64_t faces,
+  OffMesh& mesh)
+{
+  for (std::int64_t f = 0; f < faces; ++f)
+  {
+    if (!lines.Next(words))
+    {
+      return "the file ends after " + std::to_string(f) + " of its " + std::to_string(faces) +
+        " faces";
+    }
+    std::int64_t n = 0;
+    if (!ToCount(words[0], n) || n < 3 || static_cast<std::size_t>(n) + 1 > words.size())
+    {
+      return lines.At() + "face " + std::to_string(f) + ": '" + words[0] + "' then " +
+        std::to_string(words.size() - 1) +
+        " word(s); a face is its vertex count (at least 3), then as many vertex indices";
+    }
+    for (std::int64_t i = 1; i <= n; ++i)
+    {
+      std::int64_t index = 0;
+      if (!ToCount(words[i], index) || index >= vertices)
+      {
+        return lines.At() + "face " + std::to_string(f) + ": " + Quoted(words[i]) +
+          " is not a vertex index (0 to " + std::to_string(vertices - 1) + ")";
+      }
+      mesh.Connectivity.push_back(index);
+    }
+    mesh.Offsets.push_back(static_cast<std::int64_t>(mesh.Connectivity.size()));
+  }
+  return std::string();
+}
+
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -115,56 +185,12 @@ std::string ParseOffMesh(const char* data, std::size_t size, OffMesh& mesh)
   // A vertex line takes at least 6 bytes ("0 0 0\n"): a count beyond what
   // the file can hold must not reserve memory for it.
   mesh.Points.reserve(3 * std::min(static_cast<std::size_t>(vertices), size / 6 + 1));
-  for (std::int64_t v = 0; v < vertices; ++v)
+  const std::string error = ReadVertices(lines, words, vertices, mesh);
+  if (!error.empty())
   {
-    if (!lines.Next(words))
-    {
-      return "the file ends after " + std::to_string(v) + " of its " + std::to_string(vertices) +
-        " vertices";
-    }
-    if (words.size() < 3)
-    {
-      return lines.At() + "vertex " + std::to_string(v) + ": " + std::to_string(words.size()) +
-        " number(s); a vertex needs x y z";
-    }
-    for (int c = 0; c < 3; ++c)
-    {
-      double value;
-      if (!ToDouble(words[c], value))
-      {
-        return lines.At() + "vertex " + std::to_string(v) + ": " + Quoted(words[c]) +
-          " is not a number";
-      }
-      mesh.Points.push_back(value);
-    }
+    return error;
   }
-  for (std::int64_t f = 0; f < faces; ++f)
-  {
-    if (!lines.Next(words))
-    {
-      return "the file ends after " + std::to_string(f) + " of its " + std::to_string(faces) +
-        " faces";
-    }
-    std::int64_t n = 0;
-    if (!ToCount(words[0], n) || n < 3 || static_cast<std::size_t>(n) + 1 > words.size())
-    {
-      return lines.At() + "face " + std::to_string(f) + ": '" + words[0] + "' then " +
-        std::to_string(words.size() - 1) +
-        " word(s); a face is its vertex count (at least 3), then as many vertex indices";
-    }
-    for (std::int64_t i = 1; i <= n; ++i)
-    {
-      std::int64_t index = 0;
-      if (!ToCount(words[i], index) || index >= vertices)
-      {
-        return lines.At() + "face " + std::to_string(f) + ": " + Quoted(words[i]) +
-          " is not a vertex index (0 to " + std::to_string(vertices - 1) + ")";
-      }
-      mesh.Connectivity.push_back(index);
-    }
-    mesh.Offsets.push_back(static_cast<std::int64_t>(mesh.Connectivity.size()));
-  }
-  return std::string();
+  return ReadFaces(lines, words, vertices, faces, mesh);
 }
 
 //------------------------------------------------------------------------------
