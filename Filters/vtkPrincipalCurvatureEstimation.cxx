@@ -105,6 +105,77 @@ pcurv::EstimationSettings CoreSettings(vtkPrincipalCurvatureEstimation* self)
 // RequestData).
 const char* const ProgressLabel = "Principal curvatures";
 
+/// Runs the core's estimation of the input's points into buffers and
+/// returns its summary.
+pcurv::EstimationSummary RunEstimation(vtkPrincipalCurvatureEstimation* self,
+  vtkPointSet* input,
+  vtkDataArray* normals,
+  const pcurv::EstimationSettings& settings,
+  const pcurv::ControllerCollectives& processes,
+  const pcurv::CurvatureBuffers& buffers)
+{
+  const vtkIdType numberOfPoints = input->GetNumberOfPoints();
+  pcurv::AlgorithmProgress progress(self, ProgressLabel);
+  // One process: the whole estimation on a thread of its own, this one
+  // passing progress and Abort all along; distributed: here, passing them
+  // in the parallel stages (see RunPassingProgress).
+  const bool distributed = processes.IsDistributed();
+  pcurv::SMPToolsRunner runner(self->GetNumberOfThreads(), distributed ? &progress : nullptr);
+  auto runEstimation = [&]()
+  {
+    return pcurv::EstimateCloud(
+      numberOfPoints > 0 ? pcurv::ReadCloud(input, normals) : pcurv::CloudPoints{},
+      settings,
+      processes,
+      runner,
+      &progress,
+      buffers);
+  };
+  return distributed ? runEstimation() : pcurv::RunPassingProgress(progress, runEstimation);
+}
+
+/// The output: the input's geometry, the estimated arrays and normals,
+/// the run's reports and field data, and the curvature colored by default.
+void WriteOutput(vtkPrincipalCurvatureEstimation* self,
+  vtkPointSet* input,
+  vtkPolyData* output,
+  pcurv::output::CurvatureArrays& arrays,
+  vtkDataArray* estimatedNormals,
+  const pcurv::EstimationSummary& summary,
+  const pcurv::EstimationSettings& settings,
+  const pcurv::ControllerCollectives& processes)
+{
+  pcurv::CopyGeometry(input, output);
+  arrays.AddTo(output->GetPointData(), self->GetDiagnosticArrays());
+  pcurv::report::ReportUnestimated(self, summary, processes, output);
+  pcurv::report::WarnOnCoarseCoordinates(self,
+    input,
+    summary.UsedSurroundingsThreshold,
+    settings.Neighborhood == pcurv::NeighborhoodMode::Automatic &&
+        settings.Mode == pcurv::FitMode::OrientedCircles
+      ? 16
+      : settings.NumberOfNeighbors);
+  pcurv::report::AddRunFields(output,
+    summary,
+    arrays.Buffers.Trusted != nullptr,
+    settings.Mode == pcurv::FitMode::OrientedCircles &&
+      settings.Neighborhood == pcurv::NeighborhoodMode::Automatic,
+    settings.ShareFits);
+  if (estimatedNormals)
+  {
+    output->GetPointData()->SetNormals(estimatedNormals);
+  }
+  // The active scalars: ParaView colors a new display by them, over their
+  // range, so the first Apply shows the curvature rather than a solid
+  // color, and its structure rather than a few outliers.
+  output->GetPointData()->SetActiveScalars(
+    self->GetDiagnosticArrays() ? "Mean_Curvature_Clipped" : "Mean_Curvature");
+  // White (zero) in the middle of the colors, whichever tail was clipped.
+  pcurv::SetSymmetricRange(
+    output->GetPointData()->GetArray("Mean_Curvature_Clipped"), summary.MeanCurvatureClip);
+  pcurv::AddCurvatureUnit(output);
+}
+
 } // namespace
 
 vtkPrincipalCurvatureEstimation::vtkPrincipalCurvatureEstimation()
@@ -203,26 +274,10 @@ int vtkPrincipalCurvatureEstimation::RequestData(vtkInformation*,
     estimatedNormals = pcurv::output::NewRealArray(
       "Normals", 3, numberOfPoints, this->SinglePrecisionOutput, arrays.Buffers.Normals);
   }
-  pcurv::AlgorithmProgress progress(this, ProgressLabel);
-  // One process: the whole estimation on a thread of its own, this one
-  // passing progress and Abort all along; distributed: here, passing them
-  // in the parallel stages (see RunPassingProgress).
-  const bool distributed = processes.IsDistributed();
-  pcurv::SMPToolsRunner runner(this->NumberOfThreads, distributed ? &progress : nullptr);
   pcurv::EstimationSettings settings = CoreSettings(this);
   settings.EstimateNormals = this->UsedEstimatedNormals;
-  auto runEstimation = [&]()
-  {
-    return pcurv::EstimateCloud(
-      numberOfPoints > 0 ? pcurv::ReadCloud(input, normals) : pcurv::CloudPoints{},
-      settings,
-      processes,
-      runner,
-      &progress,
-      arrays.Buffers);
-  };
   const pcurv::EstimationSummary summary =
-    distributed ? runEstimation() : pcurv::RunPassingProgress(progress, runEstimation);
+    RunEstimation(this, input, normals, settings, processes, arrays.Buffers);
   if (summary.TargetCountsClamped)
   {
     const auto& counts = summary.TargetNeighborCounts;
@@ -241,35 +296,7 @@ int vtkPrincipalCurvatureEstimation::RequestData(vtkInformation*,
   this->NumberOfSharedFitPoints = summary.NumberOfSharedPoints;
   this->NumberOfJetFitPoints = summary.NumberOfJetPoints;
   this->FourthOrderFits = summary.FourthOrderFits;
-  pcurv::CopyGeometry(input, output);
-  arrays.AddTo(output->GetPointData(), this->DiagnosticArrays);
-  pcurv::report::ReportUnestimated(this, summary, processes, output);
-  pcurv::report::WarnOnCoarseCoordinates(this,
-    input,
-    summary.UsedSurroundingsThreshold,
-    settings.Neighborhood == pcurv::NeighborhoodMode::Automatic &&
-        settings.Mode == pcurv::FitMode::OrientedCircles
-      ? 16
-      : settings.NumberOfNeighbors);
-  pcurv::report::AddRunFields(output,
-    summary,
-    arrays.Buffers.Trusted != nullptr,
-    settings.Mode == pcurv::FitMode::OrientedCircles &&
-      settings.Neighborhood == pcurv::NeighborhoodMode::Automatic,
-    settings.ShareFits);
-  if (estimatedNormals)
-  {
-    output->GetPointData()->SetNormals(estimatedNormals);
-  }
-  // The active scalars: ParaView colors a new display by them, over their
-  // range, so the first Apply shows the curvature rather than a solid
-  // color, and its structure rather than a few outliers.
-  output->GetPointData()->SetActiveScalars(
-    this->DiagnosticArrays ? "Mean_Curvature_Clipped" : "Mean_Curvature");
-  // White (zero) in the middle of the colors, whichever tail was clipped.
-  pcurv::SetSymmetricRange(
-    output->GetPointData()->GetArray("Mean_Curvature_Clipped"), summary.MeanCurvatureClip);
-  pcurv::AddCurvatureUnit(output);
+  WriteOutput(this, input, output, arrays, estimatedNormals, summary, settings, processes);
   return 1;
 }
 
