@@ -95,6 +95,29 @@ vtkSmartPointer<vtkIdTypeArray> KindCounts(const pcurv::LineResult& result)
   return counts;
 }
 
+/// The input's point coordinates, 3 per point.
+std::vector<double> ReadPoints(vtkPointSet* input)
+{
+  const vtkIdType n = input->GetNumberOfPoints();
+  std::vector<double> xyz(3 * static_cast<std::size_t>(n));
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    input->GetPoint(i, &xyz[3 * i]);
+  }
+  return xyz;
+}
+
+/// The filter's settings for the core.
+pcurv::LineSettings CoreSettings(vtkCurvatureLines* self)
+{
+  pcurv::LineSettings settings;
+  settings.Kinds = KindMask(self->GetKinds());
+  settings.MinimumLength = self->GetMinimumLength();
+  settings.MinimumStrength = self->GetMinimumStrength();
+  settings.Significance = self->GetSignificance();
+  return settings;
+}
+
 /// The one message of a run that drew no line, with what to change.
 std::string NoLinesMessage(vtkCurvatureLines* self)
 {
@@ -192,11 +215,7 @@ int vtkCurvatureLines::RequestData(vtkInformation*,
   {
     return 0;
   }
-  std::vector<double> xyz(3 * static_cast<std::size_t>(n));
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    input->GetPoint(i, &xyz[3 * i]);
-  }
+  const std::vector<double> xyz = ReadPoints(input);
   const std::vector<double> standardError = ReadArray(pd, "Curvature_Standard_Error", 1);
   const std::vector<double> radius = ReadArray(pd, "Surroundings_Threshold", 1);
   const std::vector<double> validValues = ReadArray(pd, "Curvature_Valid", 1);
@@ -213,11 +232,7 @@ int vtkCurvatureLines::RequestData(vtkInformation*,
   in.StandardError = standardError.empty() ? nullptr : standardError.data();
   in.Radius = radius.empty() ? nullptr : radius.data();
   in.Valid = valid.empty() ? nullptr : valid.data();
-  pcurv::LineSettings settings;
-  settings.Kinds = KindMask(this->Kinds);
-  settings.MinimumLength = this->MinimumLength;
-  settings.MinimumStrength = this->MinimumStrength;
-  settings.Significance = this->Significance;
+  const pcurv::LineSettings settings = CoreSettings(this);
   try
   {
     pcurv::SMPToolsRunner runner(0);
