@@ -24,6 +24,94 @@ using normals::OrientOutward;
 using normals::OrientPointwise;
 using normals::QuickTypicalRadius;
 
+namespace
+{
+
+/// Fits a plane to the nearest neighbors of each of the n points of the
+/// ordered cloud into fits (their normals and the orientation graph's
+/// neighbors), reporting a point an item to progress.
+void FitPlanes(const OrderedCloud& ordered,
+  const NormalSettings& usable,
+  std::int64_t n,
+  double radius,
+  WorkRunner& runner,
+  StageProgress* progress,
+  PlaneFits& fits)
+{
+  fits.GraphNeighbors = usable.GraphNeighbors;
+  fits.Normals.assign(3 * n, 0.0);
+  fits.Neighbors.Assign(n * usable.GraphNeighbors, n - 1);
+  runner.For(n,
+    1024,
+    [&](std::int64_t begin, std::int64_t end)
+    {
+      if (progress && progress->Stopped())
+      {
+        return;
+      }
+      NearestSearch search;
+      search.Guess = radius;
+      for (std::int64_t p = begin; p < end; ++p)
+      {
+        FitPoint(ordered, usable, p, search, fits);
+      }
+      if (progress)
+      {
+        progress->Advance(end - begin);
+      }
+    });
+}
+
+/// Writes the cloud's coordinates back from the ordered copy when it goes
+/// out of scope, if they were released.
+struct CoordinatesAside
+{
+  CloudPoints& Cloud;
+  const OrderedCloud& Ordered;
+  WorkRunner& Runner;
+  const bool Released;
+  ~CoordinatesAside()
+  {
+    if (this->Released)
+    {
+      this->Ordered.WriteCoordinates(this->Cloud.Coordinates, this->Runner);
+    }
+  }
+};
+
+/// Gives the fitted normals their signs, as the settings' orientation
+/// asks; false when progress was stopped.
+bool OrientNormals(const NormalSettings& usable,
+  const OrderedCloud& ordered,
+  std::int64_t n,
+  double radius,
+  WorkRunner& runner,
+  PlaneFits& fits,
+  NormalSummary& summary,
+  StageProgress* progress)
+{
+  if (usable.Orientation == NormalOrientation::Outward)
+  {
+    // Twice as many points as 32-bit positions hold: the frontier keeps a
+    // sign bit beside each.
+    const bool small = n < std::numeric_limits<std::int32_t>::max() / 2;
+    if (!(small ? OrientOutward<std::int32_t>(
+                    fits, ordered, radius, runner, fits.Normals, summary, progress)
+                : OrientOutward<std::int64_t>(
+                    fits, ordered, radius, runner, fits.Normals, summary, progress)))
+    {
+      return false;
+    }
+  }
+  else
+  {
+    OrientPointwise(usable, ordered, fits.Normals);
+  }
+  return true;
+}
+
+} // namespace
+
 NormalSummary EstimateNormals(CloudPoints& cloud,
   const NormalSettings& settings,
   WorkRunner& runner,
@@ -64,28 +152,7 @@ NormalSummary EstimateNormals(CloudPoints& cloud,
   }
 
   PlaneFits fits;
-  fits.GraphNeighbors = usable.GraphNeighbors;
-  fits.Normals.assign(3 * n, 0.0);
-  fits.Neighbors.Assign(n * usable.GraphNeighbors, n - 1);
-  runner.For(n,
-    1024,
-    [&](std::int64_t begin, std::int64_t end)
-    {
-      if (progress && progress->Stopped())
-      {
-        return;
-      }
-      NearestSearch search;
-      search.Guess = radius;
-      for (std::int64_t p = begin; p < end; ++p)
-      {
-        FitPoint(ordered, usable, p, search, fits);
-      }
-      if (progress)
-      {
-        progress->Advance(end - begin);
-      }
-    });
+  FitPlanes(ordered, usable, n, radius, runner, progress, fits);
   if (progress && progress->Stopped())
   {
     return summary;
@@ -94,41 +161,14 @@ NormalSummary EstimateNormals(CloudPoints& cloud,
   // The orientation reads the ordered copy alone: without a halo, the
   // cloud's coordinates are released meanwhile and written back from the
   // copy on the way out, whichever it is.
-  struct CoordinatesAside
-  {
-    CloudPoints& Cloud;
-    const OrderedCloud& Ordered;
-    WorkRunner& Runner;
-    const bool Released;
-    ~CoordinatesAside()
-    {
-      if (this->Released)
-      {
-        this->Ordered.WriteCoordinates(this->Cloud.Coordinates, this->Runner);
-      }
-    }
-  };
   const CoordinatesAside aside{ cloud, ordered, runner, cloud.GetNumberOfPoints() == n };
   if (aside.Released)
   {
     std::vector<double>().swap(cloud.Coordinates);
   }
-  if (usable.Orientation == NormalOrientation::Outward)
+  if (!OrientNormals(usable, ordered, n, radius, runner, fits, summary, progress))
   {
-    // Twice as many points as 32-bit positions hold: the frontier keeps a
-    // sign bit beside each.
-    const bool small = n < std::numeric_limits<std::int32_t>::max() / 2;
-    if (!(small ? OrientOutward<std::int32_t>(
-                    fits, ordered, radius, runner, fits.Normals, summary, progress)
-                : OrientOutward<std::int64_t>(
-                    fits, ordered, radius, runner, fits.Normals, summary, progress)))
-    {
-      return summary;
-    }
-  }
-  else
-  {
-    OrientPointwise(usable, ordered, fits.Normals);
+    return summary;
   }
   // Allocated last: the orientation's graph is the estimate's peak memory.
   normals.assign(3 * n, 0.0);
