@@ -83,6 +83,12 @@ private:
     }
     return key;
   }
+  /// The table from the cells' keys, sorted and unique, to their slots
+  /// (their indices).
+  void BuildTable(const std::vector<std::uint64_t>& keys);
+  /// Points, the cloud's points by slot, and SlotStart, each slot's first;
+  /// cells: the number of slots but the last, empty one.
+  void SortPointsBySlot(std::size_t cells, WorkRunner& runner);
   /// The slot of a cell's key, or the empty slot of a cell not near any
   /// sample point.
   std::int64_t Find(std::uint64_t key) const
@@ -140,6 +146,14 @@ SampleNeighborhoods::SampleNeighborhoods(const CloudPoints& cloud,
   }
   std::sort(keys.begin(), keys.end());
   keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+  this->BuildTable(keys);
+  // Every point's slot (the last, empty one when it is near no sample
+  // point), then the points by slot.
+  this->SortPointsBySlot(keys.size(), runner);
+}
+
+void SampleNeighborhoods::BuildTable(const std::vector<std::uint64_t>& keys)
+{
   std::uint64_t size = 64;
   while (size < 4 * keys.size())
   {
@@ -159,10 +173,12 @@ SampleNeighborhoods::SampleNeighborhoods(const CloudPoints& cloud,
     this->TableKey[h] = keys[slot];
     this->TableSlot[h] = static_cast<std::int64_t>(slot);
   }
-  // Every point's slot (the last, empty one when it is near no sample
-  // point), then the points by slot.
-  const std::int64_t n = cloud.GetNumberOfPoints();
-  const std::int64_t slots = static_cast<std::int64_t>(keys.size()) + 1;
+}
+
+void SampleNeighborhoods::SortPointsBySlot(std::size_t cells, WorkRunner& runner)
+{
+  const std::int64_t n = this->Cloud.GetNumberOfPoints();
+  const std::int64_t slots = static_cast<std::int64_t>(cells) + 1;
   std::vector<std::int32_t> slotOf(n);
   runner.For(n,
     65536,
@@ -171,7 +187,7 @@ SampleNeighborhoods::SampleNeighborhoods(const CloudPoints& cloud,
       for (std::int64_t i = begin; i < end; ++i)
       {
         slotOf[i] =
-          static_cast<std::int32_t>(this->Find(Key(this->CellOf(&cloud.Coordinates[3 * i]))));
+          static_cast<std::int32_t>(this->Find(Key(this->CellOf(&this->Cloud.Coordinates[3 * i]))));
       }
     });
   this->SlotStart.assign(slots + 1, 0);
@@ -213,6 +229,34 @@ std::int64_t SampleNeighborhoods::Work(const std::vector<std::int64_t>& sample) 
   return work;
 }
 
+/// The own points of the cloud in InSpacingSample's sample, in order.
+std::vector<std::int64_t> SpacingSample(const CloudPoints& cloud,
+  const double* lower,
+  const double* upper,
+  std::int64_t stride,
+  WorkRunner& runner)
+{
+  std::vector<unsigned char> sampled(cloud.NumberOfOwnPoints);
+  runner.For(cloud.NumberOfOwnPoints,
+    65536,
+    [&](std::int64_t begin, std::int64_t end)
+    {
+      for (std::int64_t i = begin; i < end; ++i)
+      {
+        sampled[i] = InSpacingSample(&cloud.Coordinates[3 * i], lower, upper, stride);
+      }
+    });
+  std::vector<std::int64_t> sample;
+  for (std::int64_t i = 0; i < cloud.NumberOfOwnPoints; ++i)
+  {
+    if (sampled[i])
+    {
+      sample.push_back(i);
+    }
+  }
+  return sample;
+}
+
 } // namespace
 
 /// TypicalRadius(cloud, alone, boxes, k) (CloudStatistics.cxx) without its
@@ -238,24 +282,7 @@ bool QuickTypicalRadius(const CloudPoints& cloud,
   const std::int64_t stride = std::max<std::int64_t>(1, count / 512);
   const double* lower = boxes.Lower.data();
   const double* upper = boxes.Upper.data();
-  std::vector<unsigned char> sampled(cloud.NumberOfOwnPoints);
-  runner.For(cloud.NumberOfOwnPoints,
-    65536,
-    [&](std::int64_t begin, std::int64_t end)
-    {
-      for (std::int64_t i = begin; i < end; ++i)
-      {
-        sampled[i] = InSpacingSample(&cloud.Coordinates[3 * i], lower, upper, stride);
-      }
-    });
-  std::vector<std::int64_t> sample;
-  for (std::int64_t i = 0; i < cloud.NumberOfOwnPoints; ++i)
-  {
-    if (sampled[i])
-    {
-      sample.push_back(i);
-    }
-  }
+  const std::vector<std::int64_t> sample = SpacingSample(cloud, lower, upper, stride, runner);
   if (sample.empty())
   {
     return false;
