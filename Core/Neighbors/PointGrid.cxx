@@ -118,6 +118,32 @@ void PointGrid::Build(const double* coordinates,
   {
     return;
   }
+  this->SpanPoints(coordinates, count, lattice);
+
+  // Counting sort by cell.
+  const std::int64_t numberOfCells =
+    this->Dimensions[0] * this->Dimensions[1] * this->Dimensions[2];
+  std::vector<std::int64_t> cellOf(count);
+  inRanges(count,
+    [&](std::int64_t begin, std::int64_t end)
+    {
+      for (std::int64_t i = begin; i < end; ++i)
+      {
+        const double* x = coordinates + 3 * i;
+        cellOf[i] = (this->CellIndex(x[2], 2) * this->Dimensions[1] + this->CellIndex(x[1], 1)) *
+            this->Dimensions[0] +
+          this->CellIndex(x[0], 0);
+      }
+    });
+  this->CellStart.Bucket(cellOf, numberOfCells, this->Ids);
+  this->FillSorted(coordinates, count, numberOfCells, runner, grain);
+  this->BuildDenseCells(coordinates);
+}
+
+void PointGrid::SpanPoints(const double* coordinates,
+  std::int64_t count,
+  const GridLattice& lattice)
+{
   std::array<std::int64_t, 3> high;
   std::array<double, 3> lower, upper;
   for (int k = 0; k < 3; ++k)
@@ -141,23 +167,14 @@ void PointGrid::Build(const double* coordinates,
     diagonalSquared += (upper[k] - lower[k]) * (upper[k] - lower[k]);
   }
   this->Diagonal = std::sqrt(diagonalSquared);
+}
 
-  // Counting sort by cell.
-  const std::int64_t numberOfCells =
-    this->Dimensions[0] * this->Dimensions[1] * this->Dimensions[2];
-  std::vector<std::int64_t> cellOf(count);
-  inRanges(count,
-    [&](std::int64_t begin, std::int64_t end)
-    {
-      for (std::int64_t i = begin; i < end; ++i)
-      {
-        const double* x = coordinates + 3 * i;
-        cellOf[i] = (this->CellIndex(x[2], 2) * this->Dimensions[1] + this->CellIndex(x[1], 1)) *
-            this->Dimensions[0] +
-          this->CellIndex(x[0], 0);
-      }
-    });
-  this->CellStart.Bucket(cellOf, numberOfCells, this->Ids);
+void PointGrid::FillSorted(const double* coordinates,
+  std::int64_t count,
+  std::int64_t numberOfCells,
+  WorkRunner* runner,
+  std::int64_t grain)
+{
   // The coordinates in cell order (one pass of scattered reads), then each
   // cell sorted by coordinates, which makes the order independent of the
   // input's: the cell's points copied side by side for the sort, whose
@@ -166,7 +183,9 @@ void PointGrid::Build(const double* coordinates,
   {
     this->Sorted[k].resize(count);
   }
-  inRanges(count,
+  RunRanges(runner,
+    count,
+    grain,
     [&](std::int64_t begin, std::int64_t end)
     {
       constexpr std::int64_t Ahead = 16;
@@ -183,7 +202,9 @@ void PointGrid::Build(const double* coordinates,
         }
       }
     });
-  inRanges(numberOfCells,
+  RunRanges(runner,
+    numberOfCells,
+    grain,
     [&](std::int64_t begin, std::int64_t end)
     {
       std::vector<CellEntry> cell;
@@ -195,7 +216,6 @@ void PointGrid::Build(const double* coordinates,
         }
       }
     });
-  this->BuildDenseCells(coordinates);
 }
 
 void PointGrid::SortCell(std::int64_t begin, std::int64_t end, std::vector<CellEntry>& cell)
@@ -260,54 +280,58 @@ void PointGrid::BuildDenseCells(const double* coordinates)
     {
       this->DenseOfCell.assign(numberOfCells, -1);
     }
-    DenseCell cell;
-    const std::int64_t ix = c % this->Dimensions[0];
-    const std::int64_t iy = (c / this->Dimensions[0]) % this->Dimensions[1];
-    const std::int64_t iz = c / (this->Dimensions[0] * this->Dimensions[1]);
-    cell.Cell = { { this->Low[0] + ix, this->Low[1] + iy, this->Low[2] + iz } };
-    // About 8 points a fine cell were the points spread through the volume;
-    // on a surface, more (its fine cells are fewer).
-    cell.Split = static_cast<int>(std::min(64.0, std::max(2.0, std::cbrt(n / 8.0))));
-    cell.First = static_cast<std::int64_t>(this->FineIds.size());
-    cell.Starts = static_cast<std::int64_t>(this->FineStart.size());
-    const std::int64_t fineCells = static_cast<std::int64_t>(cell.Split) * cell.Split * cell.Split;
-    std::vector<std::pair<std::int64_t, std::int64_t>> keyed; // (fine cell, sorted position)
-    keyed.reserve(n);
-    for (std::int64_t j = this->CellStart[c]; j < this->CellStart[c + 1]; ++j)
-    {
-      const double* q = coordinates + 3 * this->Ids[j];
-      const std::int64_t f =
-        (this->FineIndex(cell, q[2], 2) * cell.Split + this->FineIndex(cell, q[1], 1)) *
-          cell.Split +
-        this->FineIndex(cell, q[0], 0);
-      keyed.emplace_back(f, j); // j: the cell's order by coordinates, kept within a fine cell
-    }
-    std::sort(keyed.begin(), keyed.end());
-    std::vector<std::int64_t> starts(fineCells + 1, 0);
-    for (const auto& entry : keyed)
-    {
-      ++starts[entry.first + 1];
-    }
-    for (std::int64_t f = 0; f < fineCells; ++f)
-    {
-      starts[f + 1] += starts[f];
-    }
-    for (std::int64_t& start : starts)
-    {
-      start += cell.First;
-    }
-    this->FineStart.insert(this->FineStart.end(), starts.begin(), starts.end());
-    for (const auto& entry : keyed)
-    {
-      for (int k = 0; k < 3; ++k)
-      {
-        this->Fine[k].push_back(this->Sorted[k][entry.second]);
-      }
-      this->FineIds.push_back(this->Ids[entry.second]);
-    }
-    this->DenseOfCell[c] = static_cast<std::int32_t>(this->DenseCells.size());
-    this->DenseCells.push_back(cell);
+    this->AddDenseCell(coordinates, c, n);
   }
+}
+
+void PointGrid::AddDenseCell(const double* coordinates, std::int64_t c, std::int64_t n)
+{
+  DenseCell cell;
+  const std::int64_t ix = c % this->Dimensions[0];
+  const std::int64_t iy = (c / this->Dimensions[0]) % this->Dimensions[1];
+  const std::int64_t iz = c / (this->Dimensions[0] * this->Dimensions[1]);
+  cell.Cell = { { this->Low[0] + ix, this->Low[1] + iy, this->Low[2] + iz } };
+  // About 8 points a fine cell were the points spread through the volume;
+  // on a surface, more (its fine cells are fewer).
+  cell.Split = static_cast<int>(std::min(64.0, std::max(2.0, std::cbrt(n / 8.0))));
+  cell.First = static_cast<std::int64_t>(this->FineIds.size());
+  cell.Starts = static_cast<std::int64_t>(this->FineStart.size());
+  const std::int64_t fineCells = static_cast<std::int64_t>(cell.Split) * cell.Split * cell.Split;
+  std::vector<std::pair<std::int64_t, std::int64_t>> keyed; // (fine cell, sorted position)
+  keyed.reserve(n);
+  for (std::int64_t j = this->CellStart[c]; j < this->CellStart[c + 1]; ++j)
+  {
+    const double* q = coordinates + 3 * this->Ids[j];
+    const std::int64_t f =
+      (this->FineIndex(cell, q[2], 2) * cell.Split + this->FineIndex(cell, q[1], 1)) * cell.Split +
+      this->FineIndex(cell, q[0], 0);
+    keyed.emplace_back(f, j); // j: the cell's order by coordinates, kept within a fine cell
+  }
+  std::sort(keyed.begin(), keyed.end());
+  std::vector<std::int64_t> starts(fineCells + 1, 0);
+  for (const auto& entry : keyed)
+  {
+    ++starts[entry.first + 1];
+  }
+  for (std::int64_t f = 0; f < fineCells; ++f)
+  {
+    starts[f + 1] += starts[f];
+  }
+  for (std::int64_t& start : starts)
+  {
+    start += cell.First;
+  }
+  this->FineStart.insert(this->FineStart.end(), starts.begin(), starts.end());
+  for (const auto& entry : keyed)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      this->Fine[k].push_back(this->Sorted[k][entry.second]);
+    }
+    this->FineIds.push_back(this->Ids[entry.second]);
+  }
+  this->DenseOfCell[c] = static_cast<std::int32_t>(this->DenseCells.size());
+  this->DenseCells.push_back(cell);
 }
 
 double PointGrid::StartRadius(const double x[3]) const

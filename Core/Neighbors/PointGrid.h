@@ -296,12 +296,25 @@ private:
     double X[3];
     std::int64_t Id;
   };
+  /// The local cells the points span (Low, Dimensions) and the diagonal
+  /// of their bounding box.
+  void SpanPoints(const double* coordinates, std::int64_t count, const GridLattice& lattice);
+  /// Sorted: the coordinates of the points in Ids's order, then each cell
+  /// sorted into PrecedesInCell's order.
+  void FillSorted(const double* coordinates,
+    std::int64_t count,
+    std::int64_t numberOfCells,
+    WorkRunner* runner,
+    std::int64_t grain);
   /// Sorts entries [begin, end) of Ids and Sorted into PrecedesInCell's
   /// order, through `cell` (scratch).
   void SortCell(std::int64_t begin, std::int64_t end, std::vector<CellEntry>& cell);
   /// Finds the cells far denser than the median non-empty one and builds
   /// their finer cells.
   void BuildDenseCells(const double* coordinates);
+  /// Splits cell c, holding n points, into finer cells: their points
+  /// appended to the Fine arrays, the cell to DenseCells.
+  void AddDenseCell(const double* coordinates, std::int64_t c, std::int64_t n);
   /// The fine cell along an axis of coordinate c in dense cell `dense`,
   /// clamped to it (monotone in c, so a query's range of fine cells holds
   /// every point within its radius).
