@@ -357,47 +357,24 @@ void MarkNeighborsOf(const CloudPoints& cloud,
     });
 }
 
-} // namespace
-
-SurfaceOutliers MoveOutliersOntoSurface(CloudPoints& cloud,
+/// Judges the points of the cloud (halo included) in passes: outlier[i]
+/// and distance[i], the verdicts' flags and distances; the grid sees the
+/// points not flagged in outlier.
+void JudgeInPasses(const SurfaceGrid& grid,
+  const CloudPoints& cloud,
   const Collectives& processes,
-  WorkRunner& runner)
+  const GridLattice& lattice,
+  WorkRunner& runner,
+  std::vector<unsigned char>& outlier,
+  std::vector<double>& distance)
 {
-  SurfaceOutliers found;
-  const std::int64_t own = cloud.NumberOfOwnPoints;
-  found.Distance.assign(own, NaN);
-  found.Flag.assign(own, 0);
-  if (processes.Sum(own) <= OutlierNeighbors)
-  {
-    return found;
-  }
-  const CloudBoxes boxes = MeasureBoxes(cloud, processes);
-  const double typical = TypicalRadius(cloud, processes, boxes, OutlierNeighbors, &runner);
-  if (!(typical > 0.0) || !std::isfinite(typical))
-  {
-    return found;
-  }
-  const GridLattice lattice = GlobalLattice(boxes, typical);
-  if (processes.IsDistributed())
-  {
-    // Every own point's neighbors, their neighbors for the verdicts of
-    // the passes before, and so on; an outlier's feet (each within a reach
-    // of the one before) and their neighbors' verdicts likewise.
-    const double reach = processes.Max(LargestLocalKthDistance(cloud, lattice, OutlierNeighbors));
-    ExchangeHalo(cloud, processes, (Passes + PlacingSteps + 2) * reach);
-    RemoveRepeatedHalo(cloud);
-  }
   // Outliers judged in passes, each on the points not judged outliers
   // before: a point among many outliers sees its surface once the farther
   // ones are gone. Only the points whose neighbors were judged outliers in
   // the pass before are judged again: the others' neighbors are the same.
   const std::int64_t all = cloud.GetNumberOfPoints();
-  std::vector<unsigned char> outlier(all, 0), again(all, 1);
-  std::vector<double> distance(all, NaN), reach(all, 0.0);
-  SurfaceGrid grid;
-  grid.Grid.Build(cloud.Coordinates.data(), all, lattice, &runner);
-  grid.Outlier = outlier.data();
-  grid.Typical = typical;
+  std::vector<unsigned char> again(all, 1);
+  std::vector<double> reach(all, 0.0);
   ScratchPool<OutlierScratch> scratches;
   for (int pass = 0; pass < Passes; ++pass)
   {
@@ -429,8 +406,18 @@ SurfaceOutliers MoveOutliersOntoSurface(CloudPoints& cloud,
       outlier[i] |= found[i];
     }
   }
-  std::copy_n(distance.begin(), own, found.Distance.begin());
-  std::copy_n(outlier.begin(), own, found.Flag.begin());
+}
+
+/// Places the own outliers flagged in found on the surface, then, the halo
+/// dropped, moves those whose surface point is an own point and lists the
+/// others in found's Remote arrays; found.Count: the outliers placed over
+/// every process.
+void PlaceOutliers(const SurfaceGrid& grid,
+  CloudPoints& cloud,
+  const Collectives& processes,
+  std::int64_t own,
+  SurfaceOutliers& found)
+{
   // Placed once every verdict is in, and moved once every place is found.
   std::vector<std::pair<std::int64_t, Verdict>> moves;
   OutlierScratch scratch;
@@ -460,6 +447,49 @@ SurfaceOutliers MoveOutliersOntoSurface(CloudPoints& cloud,
     }
   }
   found.Count = processes.Sum(static_cast<std::int64_t>(moves.size()));
+}
+
+} // namespace
+
+SurfaceOutliers MoveOutliersOntoSurface(CloudPoints& cloud,
+  const Collectives& processes,
+  WorkRunner& runner)
+{
+  SurfaceOutliers found;
+  const std::int64_t own = cloud.NumberOfOwnPoints;
+  found.Distance.assign(own, NaN);
+  found.Flag.assign(own, 0);
+  if (processes.Sum(own) <= OutlierNeighbors)
+  {
+    return found;
+  }
+  const CloudBoxes boxes = MeasureBoxes(cloud, processes);
+  const double typical = TypicalRadius(cloud, processes, boxes, OutlierNeighbors, &runner);
+  if (!(typical > 0.0) || !std::isfinite(typical))
+  {
+    return found;
+  }
+  const GridLattice lattice = GlobalLattice(boxes, typical);
+  if (processes.IsDistributed())
+  {
+    // Every own point's neighbors, their neighbors for the verdicts of
+    // the passes before, and so on; an outlier's feet (each within a reach
+    // of the one before) and their neighbors' verdicts likewise.
+    const double reach = processes.Max(LargestLocalKthDistance(cloud, lattice, OutlierNeighbors));
+    ExchangeHalo(cloud, processes, (Passes + PlacingSteps + 2) * reach);
+    RemoveRepeatedHalo(cloud);
+  }
+  const std::int64_t all = cloud.GetNumberOfPoints();
+  std::vector<unsigned char> outlier(all, 0);
+  std::vector<double> distance(all, NaN);
+  SurfaceGrid grid;
+  grid.Grid.Build(cloud.Coordinates.data(), all, lattice, &runner);
+  grid.Outlier = outlier.data();
+  grid.Typical = typical;
+  JudgeInPasses(grid, cloud, processes, lattice, runner, outlier, distance);
+  std::copy_n(distance.begin(), own, found.Distance.begin());
+  std::copy_n(outlier.begin(), own, found.Flag.begin());
+  PlaceOutliers(grid, cloud, processes, own, found);
   return found;
 }
 
