@@ -1,6 +1,5 @@
 #include "Scale/AutomaticScale.h"
 
-#include "Fits/HeightJet.h"
 #include "Scale/SimplestOrder.h"
 
 #include <algorithm>
@@ -26,27 +25,6 @@ constexpr double NormalTestRadius = 4.0;
 /// early (a feature, a thin part), a jet of a few neighbors is far less
 /// precise or no more right.
 constexpr double JetTrialRadius = 2.0;
-/// The jet's neighbors (the point among them): few, for the smallest
-/// radius and so the smallest bias, yet some above its 15 unknowns.
-constexpr int JetCount = 20;
-/// The jet's standard error over its residual's: the truncation that makes
-/// the residual where positions have no noise biases the curvatures too,
-/// by about as much and of one sign over a neighborhood, which the
-/// residual's covariance does not show. Calibrated on the shared accuracy
-/// suite's noise-free clouds (a bias estimated from a second, wider jet
-/// covered as well and cost twice the time).
-constexpr double JetBiasFactor = 3.0;
-/// The jet's agreement with the ladder: within this many times the
-/// ladder's own tolerance (PreferJet).
-constexpr double JetAgreement = 2.0;
-/// The most the jet's disagreement may raise the ladder's error by, as a
-/// factor (PreferJet): on the shared accuracy suite's noise-free clouds,
-/// where the jet was right and its error not below the ladder's, the
-/// ladder's real error was about 4 times its reported one (the median).
-constexpr double LadderBiasAllowance = 3.0;
-/// How far the jet's neighbors may reach, in first radii, where that is
-/// beyond the largest radius (the first radius is then about the largest).
-constexpr double JetReach = 1.3;
 
 /// FirstFourthOrderLevel where no level fits the fourth order.
 constexpr int NoFourthOrder = std::numeric_limits<int>::max();
@@ -134,34 +112,175 @@ bool FitSums(OrientedCircleAccumulatorOf<Order>& accumulator,
     settings.MaximumOpposingFraction);
   return true;
 }
-
-/// The nearest points whose squared distance is below `limit`, in their
-/// order (a shell's), into `out`; returns their count. Branch-free: which
-/// side of the limit a point falls on is not predictable.
-std::size_t KeepNearerThan(const NearestPoints& nearest, double limit, ShellPoints& out)
-{
-  const ShellPoints& from = nearest.Points;
-  if (out.Dx.size() < from.Count)
-  {
-    for (std::vector<double>* axis : { &out.Dx, &out.Dy, &out.Dz })
-    {
-      axis->resize(from.Count);
-    }
-    out.Ids.resize(from.Count);
-  }
-  std::size_t count = 0;
-  for (std::size_t i = 0; i < from.Count; ++i)
-  {
-    out.Dx[count] = from.Dx[i];
-    out.Dy[count] = from.Dy[i];
-    out.Dz[count] = from.Dz[i];
-    out.Ids[count] = from.Ids[i];
-    count += nearest.Squared[i] < limit;
-  }
-  out.Count = count;
-  return count;
-}
 } // namespace
+
+/// Estimate's ladder of oriented circles at one point: the point's frame
+/// and radius unit, the sums grown shell by shell, and the fits kept.
+struct AutomaticScaleEstimator::CircleLadder
+{
+  CircleLadder(const AutomaticScaleEstimator& estimator,
+    const double* x,
+    double unit,
+    const TangentFrame& frame,
+    AutomaticScaleScratch& scratch)
+    : Estimator(estimator)
+    , Rule(estimator.Rule)
+    , Scratch(scratch)
+    , X(x)
+    , Unit(unit)
+    , InverseUnit(1.0 / unit)
+    , Frame(frame)
+    , Rounding(RoundingVariance(estimator.Rule.CoordinateStep, frame.Normal))
+    , QuarticLevel(FirstFourthOrderLevel(estimator.Rule))
+    , Accepted(scratch.Scales)
+  {
+    scratch.Sums.Begin(frame);
+    this->Accepted.clear();
+  }
+
+  /// Grows the sums to the radius `r` of `level` and fits them into
+  /// `result`; false (no fit) where the neighborhood reaches across.
+  bool Fit(int level, double r, OrientedCircleResult& result)
+  {
+    AutomaticScaleScratch& scratch = this->Scratch;
+    OrientedCircleAccumulator& accumulator = scratch.Sums;
+    QuarticCircleAccumulator& quartic = scratch.QuarticSums;
+    if (level >= this->QuarticLevel && !this->FourthOrder)
+    {
+      // The inner radii's neighbors again, into the fourth order's sums.
+      this->FourthOrder = true;
+      quartic.Begin(this->Frame);
+      this->Estimator.Grid.GatherShell(this->X, 0.0, this->Inner, scratch.Shell);
+      this->Estimator.AddShell(scratch.Shell, this->InverseUnit, quartic);
+    }
+    // The inner radii's neighbors are in the sums already.
+    this->Estimator.GatherLevel(this->X, this->Inner, r, scratch);
+    if (this->FourthOrder)
+    {
+      this->Estimator.AddShell(scratch.Shell, this->InverseUnit, quartic);
+    }
+    else
+    {
+      this->Estimator.AddShell(scratch.Shell, this->InverseUnit, accumulator);
+    }
+    this->Inner = r;
+    auto fitSimplest = [&](auto& sums)
+    {
+      return FitSimplestOrder(sums,
+        this->Frame,
+        this->InverseUnit,
+        this->Rounding,
+        this->Estimator.Settings,
+        this->Rule.EstimatedNormals,
+        result);
+    };
+    return this->FourthOrder ? fitSimplest(quartic) : fitSimplest(accumulator);
+  }
+
+  /// Judges the fit `result` at `r` by Lepski's rule and keeps it where it
+  /// passes; false where the growth ends there.
+  bool Judge(const OrientedCircleResult& result, double r)
+  {
+    const AutomaticScaleRule& rule = this->Rule;
+    const int neighbors = result.Curvature.NeighborCount;
+    this->Reason = result.Curvature.Valid
+      ? UnestimatedReason::TooFewNeighbors
+      : UnestimatedReasonOf(result.Curvature, this->Estimator.Settings.MinimumPointsPerDirection);
+    if (result.Curvature.Valid && neighbors >= rule.MinimumCount)
+    {
+      // Where even the first radius turns too far, its fit is the best
+      // the sampling allows.
+      if (!AgreesWithSmaller(result, this->Accepted, rule.Tolerance) ||
+        (TurnsTooFar(result, r, rule.Tolerance) && !this->Accepted.empty()))
+      {
+        return false;
+      }
+      this->Accepted.push_back(result);
+      this->Chosen = result;
+      this->ChosenRadius = r;
+      // More neighbors would not change the estimate measurably: done.
+      const double magnitude = std::max({ std::fabs(result.Curvature.MinimumCurvature),
+        std::fabs(result.Curvature.MaximumCurvature),
+        1.0 / r });
+      if (result.StandardError < rule.Precision * magnitude)
+      {
+        this->Precise = true;
+        this->Probing =
+          rule.EstimatedNormals && this->Accepted.size() == 1 && r < rule.LargestRadius;
+        return this->Probing;
+      }
+    }
+    if (r >= rule.LargestRadius)
+    {
+      return false;
+    }
+    return true;
+  }
+
+  /// The chosen radius's estimate, or the height jet's where that is the
+  /// better (PreferJet).
+  ScaleEstimate Estimate()
+  {
+    if (!this->Chosen.Curvature.Valid)
+    {
+      this->Chosen.Curvature.Reason = this->Reason;
+    }
+    const OrientedCircleResult& chosen = this->Chosen;
+    // The radius before the chosen one tells how much the growth moved
+    // the estimate: the bias it may have added; at the first radius, the
+    // one after it.
+    const std::vector<OrientedCircleResult>& accepted = this->Accepted;
+    const OrientedCircleResult* previous = accepted.size() >= 2 ? &accepted[accepted.size() - 2]
+      : this->Beyond.Curvature.Valid                            ? &this->Beyond
+                                                                : nullptr;
+    ScaleEstimate estimate{
+      chosen, this->ChosenRadius, ReportedStandardError(chosen, previous, this->Rule.Precision)
+    };
+    if (this->Precise && this->ChosenRadius <= JetTrialRadius * this->Unit)
+    {
+      this->Estimator.PreferJet(this->X,
+        this->Frame,
+        this->Unit,
+        this->Rounding,
+        ReportedStandardError(chosen, previous, 0.0),
+        this->Scratch,
+        estimate);
+    }
+    return estimate;
+  }
+
+  const AutomaticScaleEstimator& Estimator;
+  const AutomaticScaleRule& Rule;
+  AutomaticScaleScratch& Scratch;
+  const double* X;
+  const double Unit;
+  const double InverseUnit;
+  const TangentFrame Frame;
+  /// The coordinates' rounding along the normal (RoundingVariance).
+  const double Rounding;
+  /// The fourth order's sums, from the first radius that fits it on
+  /// (instead of the third's).
+  const int QuarticLevel;
+  bool FourthOrder = false;
+  OrientedCircleResult Chosen;
+  double ChosenRadius = std::numeric_limits<double>::quiet_NaN();
+  std::vector<OrientedCircleResult>& Accepted;
+  UnestimatedReason Reason = UnestimatedReason::TooFewNeighbors;
+  double Inner = 0.0;
+  /// Whether the growth ended by the precision stop.
+  bool Precise = false;
+  /// Where the precision stop came at the first radius kept, the fit of the
+  /// radius after it: no smaller radius shows the bias of the first one's
+  /// truncation, and that bias grows with the radius (with its square at
+  /// the third order), so the next radius's difference is about the first
+  /// one's own. Only where the normals were estimated: given ones fit the
+  /// fourth order at the first radius already, whose combined error covers
+  /// its smaller bias, and there the extra fit would add a fit of the fourth
+  /// order's sums at every point of a clean cloud.
+  bool Probing = false;
+  /// The fit of the radius after the first kept, where Probing.
+  OrientedCircleResult Beyond;
+};
 
 ScaleEstimate AutomaticScaleEstimator::Estimate(std::int64_t point,
   AutomaticScaleScratch& scratch) const
@@ -179,285 +298,29 @@ ScaleEstimate AutomaticScaleEstimator::Estimate(std::int64_t point,
   const AutomaticScaleRule& rule = this->Rule;
   const double unit =
     std::nextafter(std::min(this->FirstRadius(x, scratch), rule.LargestRadius), HUGE_VAL);
-  const double inverseUnit = 1.0 / unit;
   const TangentFrame frame = MakeTangentFrame({ { n[0], n[1], n[2] } });
-  const double roundingVariance = RoundingVariance(rule.CoordinateStep, frame.Normal);
-  OrientedCircleAccumulator& accumulator = scratch.Sums;
-  accumulator.Begin(frame);
-  // The fourth order's sums, from the first radius that fits it on
-  // (instead of the third's).
-  QuarticCircleAccumulator& quartic = scratch.QuarticSums;
-  const int quarticLevel = FirstFourthOrderLevel(rule);
-  bool fourthOrder = false;
-  OrientedCircleResult chosen;
-  double chosenRadius = std::numeric_limits<double>::quiet_NaN();
-  std::vector<OrientedCircleResult>& accepted = scratch.Scales;
-  accepted.clear();
-  UnestimatedReason reason = UnestimatedReason::TooFewNeighbors;
-  double inner = 0.0;
-  // Whether the growth ended by the precision stop.
-  bool precise = false;
-  // Where the precision stop came at the first radius kept, the fit of the
-  // radius after it: no smaller radius shows the bias of the first one's
-  // truncation, and that bias grows with the radius (with its square at
-  // the third order), so the next radius's difference is about the first
-  // one's own. Only where the normals were estimated: given ones fit the
-  // fourth order at the first radius already, whose combined error covers
-  // its smaller bias, and there the extra fit would add a fit of the fourth
-  // order's sums at every point of a clean cloud.
-  bool probing = false;
-  OrientedCircleResult beyond;
+  CircleLadder ladder(*this, x, unit, frame, scratch);
   for (int level = 0; level < rule.Levels; ++level)
   {
     const double r = std::min(unit * std::pow(2.0, 0.5 * level), rule.LargestRadius);
-    if (level >= quarticLevel && !fourthOrder)
-    {
-      // The inner radii's neighbors again, into the fourth order's sums.
-      fourthOrder = true;
-      quartic.Begin(frame);
-      this->Grid.GatherShell(x, 0.0, inner, scratch.Shell);
-      this->AddShell(scratch.Shell, inverseUnit, quartic);
-    }
-    // The inner radii's neighbors are in the sums already.
-    this->GatherLevel(x, inner, r, scratch);
-    if (fourthOrder)
-    {
-      this->AddShell(scratch.Shell, inverseUnit, quartic);
-    }
-    else
-    {
-      this->AddShell(scratch.Shell, inverseUnit, accumulator);
-    }
-    inner = r;
     OrientedCircleResult result;
-    auto fitSimplest = [&](auto& sums)
+    if (!ladder.Fit(level, r, result))
     {
-      return FitSimplestOrder(
-        sums, frame, inverseUnit, roundingVariance, this->Settings, rule.EstimatedNormals, result);
-    };
-    const bool fitted = fourthOrder ? fitSimplest(quartic) : fitSimplest(accumulator);
-    if (!fitted)
-    {
-      reason = UnestimatedReason::ReachesAcross;
+      ladder.Reason = UnestimatedReason::ReachesAcross;
       break;
     }
     result.EstimatedNormals = rule.EstimatedNormals;
-    if (probing)
+    if (ladder.Probing)
     {
-      beyond = result;
+      ladder.Beyond = result;
       break;
     }
-    const int neighbors = result.Curvature.NeighborCount;
-    reason = result.Curvature.Valid
-      ? UnestimatedReason::TooFewNeighbors
-      : UnestimatedReasonOf(result.Curvature, this->Settings.MinimumPointsPerDirection);
-    if (result.Curvature.Valid && neighbors >= rule.MinimumCount)
-    {
-      // Where even the first radius turns too far, its fit is the best
-      // the sampling allows.
-      if (!AgreesWithSmaller(result, accepted, rule.Tolerance) ||
-        (TurnsTooFar(result, r, rule.Tolerance) && !accepted.empty()))
-      {
-        break;
-      }
-      accepted.push_back(result);
-      chosen = result;
-      chosenRadius = r;
-      // More neighbors would not change the estimate measurably: done.
-      const double magnitude = std::max({ std::fabs(result.Curvature.MinimumCurvature),
-        std::fabs(result.Curvature.MaximumCurvature),
-        1.0 / r });
-      if (result.StandardError < rule.Precision * magnitude)
-      {
-        precise = true;
-        probing = rule.EstimatedNormals && accepted.size() == 1 && r < rule.LargestRadius;
-        if (!probing)
-        {
-          break;
-        }
-        continue;
-      }
-    }
-    if (r >= rule.LargestRadius)
+    if (!ladder.Judge(result, r))
     {
       break;
     }
   }
-  if (!chosen.Curvature.Valid)
-  {
-    chosen.Curvature.Reason = reason;
-  }
-  // The radius before the chosen one tells how much the growth moved
-  // the estimate: the bias it may have added; at the first radius, the one
-  // after it.
-  const OrientedCircleResult* previous = accepted.size() >= 2 ? &accepted[accepted.size() - 2]
-    : beyond.Curvature.Valid                                  ? &beyond
-                                                              : nullptr;
-  ScaleEstimate estimate{
-    chosen, chosenRadius, ReportedStandardError(chosen, previous, rule.Precision)
-  };
-  if (precise && chosenRadius <= JetTrialRadius * unit)
-  {
-    this->PreferJet(x,
-      frame,
-      unit,
-      roundingVariance,
-      ReportedStandardError(chosen, previous, 0.0),
-      scratch,
-      estimate);
-  }
-  return estimate;
-}
-
-void AutomaticScaleEstimator::PreferJet(const double* x,
-  const TangentFrame& frame,
-  double firstRadius,
-  double roundingVariance,
-  double ladderError,
-  AutomaticScaleScratch& scratch,
-  ScaleEstimate& estimate) const
-{
-  // The JetCount nearest and all as near as the last of them (a regular
-  // grid has many such ties), in the grid's order (the same on every
-  // process), from the nearest points FirstRadius gathered: they hold
-  // every point as near as their JetCount-th.
-  const NearestPoints& nearest = scratch.Nearest;
-  if (!(nearest.Radius > 0.0) || nearest.Points.Count < static_cast<std::size_t>(JetCount))
-  {
-    return;
-  }
-  const double limit = nearest.JetCountSquared;
-  // Within the largest radius, or JetReach first radii where the first is
-  // about the largest already.
-  const double reach = std::max(JetReach * firstRadius, this->Rule.LargestRadius);
-  if (!(limit < reach * reach))
-  {
-    return;
-  }
-  // As near as the limit or nearer (below the next number up).
-  ShellPoints& neighbors = scratch.Jet;
-  const std::size_t count = KeepNearerThan(nearest, std::nextafter(limit, HUGE_VAL), neighbors);
-  // The other points among them (the estimate's neighbor count).
-  const int others = static_cast<int>(std::count_if(nearest.Squared.begin(),
-    nearest.Squared.end(),
-    [limit](double squared) { return squared > 0.0 && squared <= limit; }));
-  const double radius = std::sqrt(limit);
-  // Over the neighbors' own plane: there the heights, and with them the
-  // terms the quartic leaves out, are the smallest (a given normal, even
-  // an exact one, tilts against an uneven neighborhood).
-  const TangentFrame plane = MakeTangentFrame(NeighborhoodPlaneNormal(
-    neighbors.Dx.data(), neighbors.Dy.data(), neighbors.Dz.data(), count, radius, frame.Normal));
-  const HeightJetFit jet = FitHeightJet(neighbors.Dx.data(),
-    neighbors.Dy.data(),
-    neighbors.Dz.data(),
-    count,
-    plane,
-    radius,
-    roundingVariance);
-  if (!jet.Curvature.Valid)
-  {
-    return;
-  }
-  const double error = ReportedErrorFactor * JetBiasFactor * jet.StandardError;
-  const PointCurvature& near = jet.Curvature;
-  // As precise as the ladder's precision stop asks (its error below
-  // Precision times the curvature or the inverse radius), or the
-  // positions have some noise after all, which the jet's few neighbors
-  // do not average (a fifth of a spacing's thousandth already puts some
-  // jets 20 % off).
-  const double magnitude =
-    std::max({ std::fabs(near.MinimumCurvature), std::fabs(near.MaximumCurvature), 1.0 / radius });
-  if (!(error < this->Rule.Precision * magnitude))
-  {
-    return;
-  }
-  const PointCurvature& ladder = estimate.Fit.Curvature;
-  const double difference = std::max(std::fabs(near.MinimumCurvature - ladder.MinimumCurvature),
-    std::fabs(near.MaximumCurvature - ladder.MaximumCurvature));
-  // The ladder's error at its first radius leaves out the bias of its
-  // truncation (no smaller radius to compare with); the jet, of a higher
-  // order, shows it: where the two differ by more than the jet's error,
-  // the ladder is off by at least the excess, but by no more than
-  // LadderBiasAllowance times its error (a jet whose few neighbors barely
-  // determine it, on the rings of a latitude-longitude grid's pole, can
-  // differ by far more with a small error). The jet is taken where its
-  // error is the smaller.
-  const double ladderAtLeast =
-    std::max(ladderError, std::min(difference - error, LadderBiasAllowance * ladderError));
-  if (!(error < ladderAtLeast))
-  {
-    return;
-  }
-  // Lepski's test against the ladder's estimate, at twice its tolerance:
-  // a residual of a few degrees of freedom can be small by chance where
-  // the positions do have noise, and such a jet is off by many times both
-  // errors; at its first radius the ladder's own error misses the bias
-  // where the curvature varies fast (an ellipsoid's tips), where the jet
-  // is right.
-  const double allowed = JetAgreement * this->Rule.Tolerance * (error + estimate.Error);
-  if (difference > allowed)
-  {
-    return;
-  }
-  PointCurvature& out = estimate.Fit.Curvature;
-  out.MinimumCurvature = near.MinimumCurvature;
-  out.MaximumCurvature = near.MaximumCurvature;
-  out.MinimumDirection = near.MinimumDirection;
-  out.MaximumDirection = near.MaximumDirection;
-  out.FittedNormal = near.FittedNormal;
-  // The neighbors, as the ladder counts them: the other points, those
-  // strictly within the radius.
-  out.NeighborCount = others;
-  estimate.Radius = std::nextafter(radius, HUGE_VAL);
-  estimate.Error = error;
-  estimate.Jet = true;
-}
-
-double AutomaticScaleEstimator::FirstRadius(const double* x, AutomaticScaleScratch& scratch) const
-{
-  // k + 1: the point itself is found too.
-  const int k = this->Rule.BaseCount + 1;
-  NearestPoints& nearest = scratch.Nearest;
-  const ShellPoints& points = nearest.Points;
-  nearest.Radius = this->Grid.GatherNearest(x, std::max(k, JetCount), nearest.Points);
-  if (!(nearest.Radius > 0.0))
-  {
-    return std::sqrt(this->Grid.SquaredDistanceToKth(x, k, scratch.Distances));
-  }
-  std::vector<double>& squared = nearest.Squared;
-  squared.resize(points.Count);
-  for (std::size_t i = 0; i < points.Count; ++i)
-  {
-    // As the grid's gathers compute it.
-    squared[i] =
-      points.Dx[i] * points.Dx[i] + points.Dy[i] * points.Dy[i] + points.Dz[i] * points.Dz[i];
-  }
-  // Fewer points than k in the whole cloud: the farthest of them, as
-  // SquaredDistanceToKth.
-  const std::size_t first = std::min(static_cast<std::size_t>(k), points.Count);
-  const std::size_t jet =
-    std::min(std::max(first, static_cast<std::size_t>(JetCount)), points.Count);
-  const std::array<double, 2> kth =
-    SquaredDistanceRanks(squared, { first, jet }, nearest.Radius * nearest.Radius, nearest.Ranks);
-  nearest.JetCountSquared = kth[1];
-  return std::sqrt(kth[0]);
-}
-
-void AutomaticScaleEstimator::GatherLevel(const double* x,
-  double inner,
-  double radius,
-  AutomaticScaleScratch& scratch) const
-{
-  // The nearest points hold every point within their radius, in
-  // GatherShell's order.
-  if (inner == 0.0 && radius < scratch.Nearest.Radius)
-  {
-    KeepNearerThan(scratch.Nearest, radius * radius, scratch.Shell);
-  }
-  else
-  {
-    this->Grid.GatherShell(x, inner, radius, scratch.Shell);
-  }
+  return ladder.Estimate();
 }
 
 int AutomaticScaleEstimator::NormalFollowsSurface(std::int64_t point,

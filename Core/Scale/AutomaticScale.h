@@ -118,6 +118,9 @@ public:
     double tolerance);
 
 private:
+  /// Estimate's ladder of oriented circles at one point.
+  struct CircleLadder;
+
   /// Estimate's ladder with the fit of the normal field (NormalFieldFit.h)
   /// instead of the oriented circles, where the normals were given
   /// (AutomaticScaleRule::NormalField) and the positions are noisy: the
