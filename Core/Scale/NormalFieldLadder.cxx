@@ -172,6 +172,86 @@ private:
   std::vector<OrientedCircleResult>& Waiting;
   double Tolerance;
 };
+
+/// The normal field's ladder's choice at a point: the radius kept so far,
+/// the one before it, and why none was kept where none was.
+struct FieldChoice
+{
+  OrientedCircleResult Chosen, Before;
+  double Radius = std::numeric_limits<double>::quiet_NaN();
+  /// The offsets gathered up to the chosen radius.
+  std::size_t Count = 0;
+  UnestimatedReason Reason = UnestimatedReason::TooFewNeighbors;
+
+  /// Judges the fit `result` at `r` (of `count` offsets gathered) against
+  /// `references` and keeps it where it passes; false where the growth
+  /// ends there. `confirm`: a reference only once the next radius agrees.
+  bool Judge(const OrientedCircleResult& result,
+    double r,
+    bool confirm,
+    std::size_t count,
+    const AutomaticScaleRule& rule,
+    const FitSettings& settings,
+    LadderReferences& references)
+  {
+    this->Reason = result.Curvature.Valid
+      ? UnestimatedReason::TooFewNeighbors
+      : UnestimatedReasonOf(result.Curvature, settings.MinimumPointsPerDirection);
+    if (result.Curvature.Valid && result.Curvature.NeighborCount >= rule.MinimumCount)
+    {
+      if (!references.Agree(result) ||
+        (TurnsPastModel(result, r, rule.Tolerance) && this->Chosen.Curvature.Valid))
+      {
+        return false;
+      }
+      references.Add(result, confirm);
+      this->Before = this->Chosen;
+      this->Chosen = result;
+      this->Radius = r;
+      this->Count = count;
+      // More neighbors would not change the estimate measurably: done. (Not
+      // against the inverse of this radius, as the circles' ladder: the
+      // normals' precise rows reach that early on a dense cloud, long
+      // before the noise is averaged; flat parts grow to the largest.)
+      const double magnitude = std::max({ std::fabs(result.Curvature.MinimumCurvature),
+        std::fabs(result.Curvature.MaximumCurvature),
+        1.0 / rule.LargestRadius });
+      if (result.StandardError < rule.Precision * magnitude)
+      {
+        return false;
+      }
+    }
+    return true;
+  }
+
+  /// The estimate of the chosen radius, its surface's height and noise
+  /// from the offsets `gathered` up to it.
+  ScaleEstimate Estimate(const TangentFrame& frame,
+    const std::array<std::vector<double>, 3>& gathered,
+    double precision)
+  {
+    OrientedCircleResult& chosen = this->Chosen;
+    if (!chosen.Curvature.Valid)
+    {
+      chosen.Curvature.Reason = this->Reason;
+    }
+    else
+    {
+      // The height and the positions' noise of the surface a point near this
+      // one may take (SharedFits.h).
+      SetHeightOfPoints(frame,
+        gathered[0].data(),
+        gathered[1].data(),
+        gathered[2].data(),
+        this->Count,
+        chosen.Surface);
+    }
+    const OrientedCircleResult* previous = this->Before.Curvature.Valid ? &this->Before : nullptr;
+    return ScaleEstimate{ chosen,
+      this->Radius,
+      NormalFieldErrorFactor * ReportedStandardError(chosen, previous, precision) };
+  }
+};
 } // namespace
 
 bool AutomaticScaleEstimator::EstimateNormalField(std::int64_t point,
@@ -193,10 +273,7 @@ bool AutomaticScaleEstimator::EstimateNormalField(std::int64_t point,
     axis.clear();
   }
   LadderReferences references(scratch.Scales, scratch.Waiting, rule.Tolerance);
-  OrientedCircleResult chosen, before;
-  double chosenRadius = std::numeric_limits<double>::quiet_NaN();
-  std::size_t chosenCount = 0;
-  UnestimatedReason reason = UnestimatedReason::TooFewNeighbors;
+  FieldChoice choice;
   double inner = 0.0, noise = 0.0;
   for (int level = 0; level < rule.Levels; ++level)
   {
@@ -208,7 +285,7 @@ bool AutomaticScaleEstimator::EstimateNormalField(std::int64_t point,
     const NormalFieldSums& sums = field.Sums();
     if (sums.ReachesAcross(this->Settings.MaximumOpposingFraction))
     {
-      reason = UnestimatedReason::ReachesAcross;
+      choice.Reason = UnestimatedReason::ReachesAcross;
       break;
     }
     const OrientedCircleResult result = FitSimplerField(sums, frame, inverseUnit, this->Settings);
@@ -221,57 +298,17 @@ bool AutomaticScaleEstimator::EstimateNormalField(std::int64_t point,
         return false;
       }
     }
-    reason = result.Curvature.Valid
-      ? UnestimatedReason::TooFewNeighbors
-      : UnestimatedReasonOf(result.Curvature, this->Settings.MinimumPointsPerDirection);
-    if (result.Curvature.Valid && result.Curvature.NeighborCount >= rule.MinimumCount)
+    const bool confirm = noise > ConfirmedNoiseRatio * r * inverseUnit;
+    if (!choice.Judge(result, r, confirm, gathered[0].size(), rule, this->Settings, references))
     {
-      if (!references.Agree(result) ||
-        (TurnsPastModel(result, r, rule.Tolerance) && chosen.Curvature.Valid))
-      {
-        break;
-      }
-      references.Add(result, noise > ConfirmedNoiseRatio * r * inverseUnit);
-      before = chosen;
-      chosen = result;
-      chosenRadius = r;
-      chosenCount = gathered[0].size();
-      // More neighbors would not change the estimate measurably: done. (Not
-      // against the inverse of this radius, as the circles' ladder: the
-      // normals' precise rows reach that early on a dense cloud, long
-      // before the noise is averaged; flat parts grow to the largest.)
-      const double magnitude = std::max({ std::fabs(result.Curvature.MinimumCurvature),
-        std::fabs(result.Curvature.MaximumCurvature),
-        1.0 / rule.LargestRadius });
-      if (result.StandardError < rule.Precision * magnitude)
-      {
-        break;
-      }
+      break;
     }
     if (r >= rule.LargestRadius)
     {
       break;
     }
   }
-  if (!chosen.Curvature.Valid)
-  {
-    chosen.Curvature.Reason = reason;
-  }
-  else
-  {
-    // The height and the positions' noise of the surface a point near this
-    // one may take (SharedFits.h).
-    SetHeightOfPoints(frame,
-      gathered[0].data(),
-      gathered[1].data(),
-      gathered[2].data(),
-      chosenCount,
-      chosen.Surface);
-  }
-  const OrientedCircleResult* previous = before.Curvature.Valid ? &before : nullptr;
-  estimate = ScaleEstimate{ chosen,
-    chosenRadius,
-    NormalFieldErrorFactor * ReportedStandardError(chosen, previous, rule.Precision) };
+  estimate = choice.Estimate(frame, gathered, rule.Precision);
   return true;
 }
 
