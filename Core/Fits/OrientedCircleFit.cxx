@@ -237,14 +237,20 @@ UnestimatedReason OrientedCircleTallies::WhyUnfit(int count,
   return UnestimatedReason::None;
 }
 
+namespace
+{
+/// The fit of the positions' rows and the normals' together, each weighted
+/// by the inverse of its residual variance, into `combined` where it
+/// solves (where the normals' rows determine their unknowns); true where
+/// combined.Inverse is then the combined fit's covariance (with
+/// `combinedError`).
 template<int Order>
-OrientedCircleResult FitOrientedCircles(const OrientedCircleSumsOf<Order>& sums,
-  const TangentFrame& frame,
-  double inverseScale,
-  double heightVarianceFloor,
-  int minimumNeighbors,
-  double maximumOpposing,
-  bool combinedError)
+bool CombineWithNormals(const OrientedCircleSumsOf<Order>& sums,
+  const Matrix<OrientedCircleSumsOf<Order>::PositionUnknowns>& positionMatrix,
+  const Vector<OrientedCircleSumsOf<Order>::PositionUnknowns>& positionRight,
+  double positionVariance,
+  bool combinedError,
+  Solution<OrientedCircleSumsOf<Order>::PositionUnknowns>& combined)
 {
   constexpr int PositionUnknowns = OrientedCircleSumsOf<Order>::PositionUnknowns;
   constexpr int NormalUnknowns = OrientedCircleSumsOf<Order>::NormalUnknowns;
@@ -252,35 +258,6 @@ OrientedCircleResult FitOrientedCircles(const OrientedCircleSumsOf<Order>& sums,
   using PositionMatrix = Matrix<PositionUnknowns>;
   using NormalVector = Vector<NormalUnknowns>;
   using NormalMatrix = Matrix<NormalUnknowns>;
-  OrientedCircleResult result;
-  result.Order = Order;
-  PointCurvature& out = result.Curvature;
-  result.StandardError = std::numeric_limits<double>::quiet_NaN();
-  out.NeighborCount = sums.Neighbors;
-  out.ValidDirections = PopCount(sums.Sectors);
-  out.Reason = sums.WhyUnfit(sums.Neighbors,
-    std::max(minimumNeighbors, PositionUnknowns + ResidualNeighbors),
-    maximumOpposing);
-  if (out.Reason != UnestimatedReason::None)
-  {
-    return result;
-  }
-  const PositionMatrix positionMatrix = Full<PositionUnknowns>(sums.PositionMatrix);
-  const PositionVector positionRight = Full<PositionUnknowns>(sums.PositionRight);
-  const Solution<PositionUnknowns> positions =
-    Solve<PositionUnknowns>(positionMatrix, positionRight, true);
-  if (!positions.Valid)
-  {
-    return result;
-  }
-  // The positions' rows fit twice the height (in units of the scale).
-  const double positionVariance =
-    std::max({ ResidualVariance(positions, positionRight, sums.PositionTargets, sums.Neighbors),
-      4.0 * heightVarianceFloor * inverseScale * inverseScale,
-      VarianceFloor });
-  Solution<PositionUnknowns> combined = positions;
-  // With `combinedError`: combined.Inverse is the combined fit's covariance
-  // (its rows are weighted by the inverse of their variances).
   bool hasCombinedCovariance = false;
   if (sums.NeighborsWithNormal > NormalUnknowns)
   {
@@ -305,7 +282,39 @@ OrientedCircleResult FitOrientedCircles(const OrientedCircleSumsOf<Order>& sums,
       hasCombinedCovariance = both.Valid && combinedError;
     }
   }
+  return hasCombinedCovariance;
+}
 
+/// The surface's coefficients of the fit's unknowns `x`, which have the
+/// height last: up to the cubic's, the height, the quartic's.
+template<int N>
+void SetSurfaceCoefficients(const Vector<N>& x, std::array<double, 15>& surface)
+{
+  // (A fit of the second order leaves the cubic's zero.)
+  constexpr int Leading = std::min(oriented::FirstQuarticColumn, N - 1);
+  std::copy_n(x.data(), Leading, surface.begin());
+  surface[oriented::FirstQuarticColumn] = x[N - 1];
+  std::copy_n(
+    x.data() + Leading, N - 1 - Leading, surface.begin() + FittedSurface::FirstQuarticCoefficient);
+}
+
+/// The fit's curvatures, directions, errors and surface into `result`,
+/// from the positions' rows alone (`positions`, of residual variance
+/// `positionVariance`) and the combined fit (`combined`, its covariance
+/// in combined.Inverse where `hasCombinedCovariance`).
+template<int Order>
+void DescribeCircleFit(const OrientedCircleSumsOf<Order>& sums,
+  const Matrix<OrientedCircleSumsOf<Order>::PositionUnknowns>& positionMatrix,
+  const Solution<OrientedCircleSumsOf<Order>::PositionUnknowns>& positions,
+  const Solution<OrientedCircleSumsOf<Order>::PositionUnknowns>& combined,
+  double positionVariance,
+  bool hasCombinedCovariance,
+  const TangentFrame& frame,
+  double inverseScale,
+  OrientedCircleResult& result)
+{
+  constexpr int PositionUnknowns = OrientedCircleSumsOf<Order>::PositionUnknowns;
+  PointCurvature& out = result.Curvature;
   const Eigen::Matrix<double, PositionUnknowns, 3> covariance =
     positions.Inverse * positionVariance;
   const double c = combined.X[1], s = combined.X[2];
@@ -339,16 +348,7 @@ OrientedCircleResult FitOrientedCircles(const OrientedCircleSumsOf<Order>& sums,
     combined.X[0] - amplitude,
     positionVariance / 4.0);
   PrincipalCurvaturesFromSine(sine, fitted, out);
-  // The surface's coefficients: up to the cubic's, the height, the quartic's
-  // (the fit's unknowns have the height last).
-  std::array<double, 15>& surface = result.Surface.Coefficients;
-  // (A fit of the second order leaves the cubic's zero.)
-  constexpr int Leading = std::min(oriented::FirstQuarticColumn, PositionUnknowns - 1);
-  std::copy_n(combined.X.data(), Leading, surface.begin());
-  surface[oriented::FirstQuarticColumn] = combined.X[PositionUnknowns - 1];
-  std::copy_n(combined.X.data() + Leading,
-    PositionUnknowns - 1 - Leading,
-    surface.begin() + FittedSurface::FirstQuarticCoefficient);
+  SetSurfaceCoefficients<PositionUnknowns>(combined.X, result.Surface.Coefficients);
   result.Surface.InverseScale = inverseScale;
   result.Surface.NoiseVariance = positionVariance / 4.0;
   out.FittedNormal = out.Valid ? fitted.Normal : Vector3{ { 0.0, 0.0, 0.0 } };
@@ -357,6 +357,61 @@ OrientedCircleResult FitOrientedCircles(const OrientedCircleSumsOf<Order>& sums,
   {
     result.StandardError = std::numeric_limits<double>::quiet_NaN();
   }
+}
+} // namespace
+
+template<int Order>
+OrientedCircleResult FitOrientedCircles(const OrientedCircleSumsOf<Order>& sums,
+  const TangentFrame& frame,
+  double inverseScale,
+  double heightVarianceFloor,
+  int minimumNeighbors,
+  double maximumOpposing,
+  bool combinedError)
+{
+  constexpr int PositionUnknowns = OrientedCircleSumsOf<Order>::PositionUnknowns;
+  using PositionVector = Vector<PositionUnknowns>;
+  using PositionMatrix = Matrix<PositionUnknowns>;
+  OrientedCircleResult result;
+  result.Order = Order;
+  PointCurvature& out = result.Curvature;
+  result.StandardError = std::numeric_limits<double>::quiet_NaN();
+  out.NeighborCount = sums.Neighbors;
+  out.ValidDirections = PopCount(sums.Sectors);
+  out.Reason = sums.WhyUnfit(sums.Neighbors,
+    std::max(minimumNeighbors, PositionUnknowns + ResidualNeighbors),
+    maximumOpposing);
+  if (out.Reason != UnestimatedReason::None)
+  {
+    return result;
+  }
+  const PositionMatrix positionMatrix = Full<PositionUnknowns>(sums.PositionMatrix);
+  const PositionVector positionRight = Full<PositionUnknowns>(sums.PositionRight);
+  const Solution<PositionUnknowns> positions =
+    Solve<PositionUnknowns>(positionMatrix, positionRight, true);
+  if (!positions.Valid)
+  {
+    return result;
+  }
+  // The positions' rows fit twice the height (in units of the scale).
+  const double positionVariance =
+    std::max({ ResidualVariance(positions, positionRight, sums.PositionTargets, sums.Neighbors),
+      4.0 * heightVarianceFloor * inverseScale * inverseScale,
+      VarianceFloor });
+  Solution<PositionUnknowns> combined = positions;
+  // With `combinedError`: combined.Inverse is the combined fit's covariance
+  // (its rows are weighted by the inverse of their variances).
+  const bool hasCombinedCovariance = CombineWithNormals<Order>(
+    sums, positionMatrix, positionRight, positionVariance, combinedError, combined);
+  DescribeCircleFit<Order>(sums,
+    positionMatrix,
+    positions,
+    combined,
+    positionVariance,
+    hasCombinedCovariance,
+    frame,
+    inverseScale,
+    result);
   return result;
 }
 
