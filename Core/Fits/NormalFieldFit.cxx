@@ -144,6 +144,56 @@ void NormalFieldAccumulator::Add(const double d[3], const double* normal)
   ++sums.Rows;
 }
 
+namespace
+{
+/// The fit's curvatures, directions, errors and surface into `result`,
+/// from its unknowns `x`, the covariance of (C, A, B) and the residual
+/// variances of a neighbor's two rows (`uu`, `vv`).
+template<int N>
+void DescribeFieldFit(const small::Vector<N>& x,
+  const Eigen::Matrix3d& covariance,
+  double uu,
+  double vv,
+  const TangentFrame& frame,
+  double inverseScale,
+  OrientedCircleResult& result)
+{
+  PointCurvature& out = result.Curvature;
+  const double variance = 0.5 * (uu + vv);
+  const double c = x[1], s = x[2];
+  const double amplitude = std::hypot(c, s);
+  result.StandardError = CurvatureStandardError(covariance, c, s) * inverseScale;
+  result.CombinedStandardError = result.StandardError;
+  result.TiltBias = (x[3] * x[3] + x[4] * x[4]) * (std::fabs(x[0]) + amplitude) * inverseScale;
+  SineFit sine;
+  sine.Valid = true;
+  sine.Offset = x[0] * inverseScale;
+  sine.CosineAmplitude = c * inverseScale;
+  sine.SineAmplitude = s * inverseScale;
+  sine.RmsResidual = std::sqrt(variance) * inverseScale;
+  sine.ValidDirections = out.ValidDirections;
+  // The query point's displacement along the surface tilts an exact
+  // normal's frame against the fitted one by the shape operator times that
+  // displacement, as a neighbor's displacement moves its rows: the rows'
+  // residual is the displacement's expected square tilt.
+  const double k1 = x[0] + amplitude, k2 = x[0] - amplitude;
+  const double curvatures = k1 * k1 + k2 * k2;
+  const double displacement = curvatures > 0.0 ? (uu + vv) / curvatures : 0.0;
+  const TangentFrame fitted = FittedFrame(frame, x[3], x[4], k1, k2, displacement);
+  PrincipalCurvaturesFromSine(sine, fitted, out);
+  std::array<double, 15>& surface = result.Surface.Coefficients;
+  std::copy_n(x.data(), N, surface.begin());
+  result.Surface.InverseScale = inverseScale;
+  result.Surface.NoiseVariance = variance;
+  result.Surface.Circles = false;
+  out.FittedNormal = out.Valid ? fitted.Normal : Vector3{ { 0.0, 0.0, 0.0 } };
+  if (!out.Valid)
+  {
+    result.StandardError = std::numeric_limits<double>::quiet_NaN();
+  }
+}
+} // namespace
+
 template<int Order>
 OrientedCircleResult FitNormalField(const NormalFieldSums& sums,
   const TangentFrame& frame,
@@ -187,45 +237,13 @@ OrientedCircleResult FitNormalField(const NormalFieldSums& sums,
   const double uv = (sums.TargetsUV - x.dot(Leading<N>(sums.RightUV)) -
                       x.dot(Leading<N>(sums.RightVU)) + 0.5 * x.dot(cross * x)) /
     degrees;
-  const double variance = 0.5 * (uu + vv);
   // The sandwich: (C, A, B)'s covariance is B' (uu Mu + vv Mv + uv Mx) B,
   // B their three columns of the inverse normal matrix.
   const small::Matrix<N> meat = uu * alongU + vv * alongV + uv * cross;
   const Eigen::Matrix<double, N, 3>& columns = fit.Inverse;
   const Eigen::Matrix3d covariance = columns.transpose() * meat * columns;
-  const double c = fit.X[1], s = fit.X[2];
-  const double amplitude = std::hypot(c, s);
-  result.StandardError = CurvatureStandardError(covariance, c, s) * inverseScale;
-  result.CombinedStandardError = result.StandardError;
-  result.TiltBias =
-    (fit.X[3] * fit.X[3] + fit.X[4] * fit.X[4]) * (std::fabs(fit.X[0]) + amplitude) * inverseScale;
-  SineFit sine;
-  sine.Valid = true;
-  sine.Offset = fit.X[0] * inverseScale;
-  sine.CosineAmplitude = c * inverseScale;
-  sine.SineAmplitude = s * inverseScale;
-  sine.RmsResidual = std::sqrt(variance) * inverseScale;
-  sine.ValidDirections = out.ValidDirections;
-  // The query point's displacement along the surface tilts an exact
-  // normal's frame against the fitted one by the shape operator times that
-  // displacement, as a neighbor's displacement moves its rows: the rows'
-  // residual is the displacement's expected square tilt.
-  const double k1 = fit.X[0] + amplitude, k2 = fit.X[0] - amplitude;
-  const double curvatures = k1 * k1 + k2 * k2;
-  const double displacement = curvatures > 0.0 ? (uu + vv) / curvatures : 0.0;
-  const TangentFrame fitted = FittedFrame(frame, fit.X[3], fit.X[4], k1, k2, displacement);
-  PrincipalCurvaturesFromSine(sine, fitted, out);
-  std::array<double, 15>& surface = result.Surface.Coefficients;
-  std::copy_n(fit.X.data(), N, surface.begin());
-  result.Surface.InverseScale = inverseScale;
-  result.Surface.NoiseVariance = variance;
-  result.Surface.Circles = false;
-  out.FittedNormal = out.Valid ? fitted.Normal : Vector3{ { 0.0, 0.0, 0.0 } };
+  DescribeFieldFit<N>(fit.X, covariance, uu, vv, frame, inverseScale, result);
   out.NeighborCount = sums.Neighbors;
-  if (!out.Valid)
-  {
-    result.StandardError = std::numeric_limits<double>::quiet_NaN();
-  }
   return result;
 }
 
