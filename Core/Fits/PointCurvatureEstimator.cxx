@@ -135,14 +135,21 @@ void PointCurvatureEstimator::SumBanks()
   }
 }
 
-void PointCurvatureEstimator::FitDirections(const FitSettings& settings)
+namespace
 {
-  std::array<CircleFit, NumberOfDirections> candidate12{};
-  std::array<CircleFit, NumberOfDirections> candidate23{};
+/// The circle of each direction with enough points and extent, by the
+/// settings' mode, into `candidate12` (the equations 1 and 2) and
+/// `candidate23` (the equations 2 and 3, or the previous fit); true where
+/// some direction has both (New02 then keeps the closer).
+bool FitCandidates(const std::array<CgaSums, NumberOfDirections>& directionSums,
+  const FitSettings& settings,
+  std::array<CircleFit, NumberOfDirections>& candidate12,
+  std::array<CircleFit, NumberOfDirections>& candidate23)
+{
   bool needQuality = false;
   for (int i = 0; i < NumberOfDirections; ++i)
   {
-    const CgaSums& sums = this->Sums[i];
+    const CgaSums& sums = directionSums[i];
     if (sums.Count < settings.MinimumPointsPerDirection ||
       sums.Extent < settings.MinimumDirectionExtent) // lengths are in units of the scale
     {
@@ -167,72 +174,19 @@ void PointCurvatureEstimator::FitDirections(const FitSettings& settings)
         break;
     }
   }
+  return needQuality;
+}
+} // namespace
+
+void PointCurvatureEstimator::FitDirections(const FitSettings& settings)
+{
+  std::array<CircleFit, NumberOfDirections> candidate12{};
+  std::array<CircleFit, NumberOfDirections> candidate23{};
+  const bool needQuality = FitCandidates(this->Sums, settings, candidate12, candidate23);
 
   if (needQuality)
   {
-    // Q = summed geometric distance of the direction's points to each
-    // candidate circle; keep the candidate with the smaller Q.
-    // Each direction's points side by side, then a square root and a
-    // division per point and circle in vector instructions.
-    std::uint32_t wanted = 0;
-    for (int i = 0; i < NumberOfDirections; ++i)
-    {
-      wanted |= (candidate12[i].Valid && candidate23[i].Valid) ? 1u << i : 0u;
-    }
-    const std::size_t stride = this->Capacity + binning::Padding;
-    // One more row: a dead end for the neighbors in no wanted direction.
-    this->DirectionH.resize((NumberOfDirections + 1) * stride);
-    this->DirectionD.resize((NumberOfDirections + 1) * stride);
-    // Locals, not members: the stores could alias members.
-    std::array<std::size_t, NumberOfDirections + 1> count{};
-    double* directionH = this->DirectionH.data();
-    double* directionD = this->DirectionD.data();
-    const std::int64_t* mask = this->AddedMask.data();
-    const double* addedH = this->AddedH.data();
-    const double* addedD = this->AddedD.data();
-    auto put = [&](std::size_t k, int i, std::size_t keep)
-    {
-      const std::size_t at = i * stride + count[i];
-      directionH[at] = addedH[k];
-      directionD[at] = addedD[k];
-      count[i] += keep;
-    };
-    for (std::size_t k = 0; k < this->NumberOfSlots; ++k)
-    {
-      // The first direction without a branch (most neighbors have one or
-      // none: a loop over the bits mispredicted at nearly every one).
-      const std::uint32_t bits = static_cast<std::uint32_t>(mask[k]) & wanted;
-      put(k, __builtin_ctz(bits | 1u << NumberOfDirections), bits != 0);
-      for (std::uint32_t rest = bits & (bits - 1); rest; rest &= rest - 1)
-      {
-        put(k, __builtin_ctz(rest), 1);
-      }
-    }
-    std::array<double, NumberOfDirections> quality12{};
-    std::array<double, NumberOfDirections> quality23{};
-    for (int i = 0; i < NumberOfDirections; ++i)
-    {
-      if (!(wanted >> i & 1u))
-      {
-        continue;
-      }
-      const double kappa[2] = { candidate12[i].Curvature, candidate23[i].Curvature };
-      double sums[2];
-      circles::DistanceSums(this->DirectionH.data() + i * stride,
-        this->DirectionD.data() + i * stride,
-        count[i],
-        kappa,
-        sums);
-      quality12[i] = sums[0];
-      quality23[i] = sums[1];
-    }
-    for (int i = 0; i < NumberOfDirections; ++i)
-    {
-      if (candidate12[i].Valid && candidate23[i].Valid && quality12[i] < quality23[i])
-      {
-        candidate23[i] = candidate12[i];
-      }
-    }
+    this->KeepCloserCircles(candidate12, candidate23);
   }
 
   for (int i = 0; i < NumberOfDirections; ++i)
@@ -240,6 +194,82 @@ void PointCurvatureEstimator::FitDirections(const FitSettings& settings)
     const CircleFit& chosen = candidate23[i].Valid ? candidate23[i] : candidate12[i];
     this->DirectionValid[i] = chosen.Valid;
     this->DirectionCurvature[i] = chosen.Valid ? chosen.Curvature * this->InverseScale : 0.0;
+  }
+}
+
+void PointCurvatureEstimator::GatherDirections(std::uint32_t wanted,
+  std::size_t stride,
+  std::array<std::size_t, NumberOfDirections + 1>& count)
+{
+  // One more row: a dead end for the neighbors in no wanted direction.
+  this->DirectionH.resize((NumberOfDirections + 1) * stride);
+  this->DirectionD.resize((NumberOfDirections + 1) * stride);
+  // Locals, not members: the stores could alias members.
+  double* directionH = this->DirectionH.data();
+  double* directionD = this->DirectionD.data();
+  const std::int64_t* mask = this->AddedMask.data();
+  const double* addedH = this->AddedH.data();
+  const double* addedD = this->AddedD.data();
+  auto put = [&](std::size_t k, int i, std::size_t keep)
+  {
+    const std::size_t at = i * stride + count[i];
+    directionH[at] = addedH[k];
+    directionD[at] = addedD[k];
+    count[i] += keep;
+  };
+  for (std::size_t k = 0; k < this->NumberOfSlots; ++k)
+  {
+    // The first direction without a branch (most neighbors have one or
+    // none: a loop over the bits mispredicted at nearly every one).
+    const std::uint32_t bits = static_cast<std::uint32_t>(mask[k]) & wanted;
+    put(k, __builtin_ctz(bits | 1u << NumberOfDirections), bits != 0);
+    for (std::uint32_t rest = bits & (bits - 1); rest; rest &= rest - 1)
+    {
+      put(k, __builtin_ctz(rest), 1);
+    }
+  }
+}
+
+void PointCurvatureEstimator::KeepCloserCircles(
+  const std::array<CircleFit, NumberOfDirections>& candidate12,
+  std::array<CircleFit, NumberOfDirections>& candidate23)
+{
+  // Q = summed geometric distance of the direction's points to each
+  // candidate circle; keep the candidate with the smaller Q.
+  // Each direction's points side by side, then a square root and a
+  // division per point and circle in vector instructions.
+  std::uint32_t wanted = 0;
+  for (int i = 0; i < NumberOfDirections; ++i)
+  {
+    wanted |= (candidate12[i].Valid && candidate23[i].Valid) ? 1u << i : 0u;
+  }
+  const std::size_t stride = this->Capacity + binning::Padding;
+  std::array<std::size_t, NumberOfDirections + 1> count{};
+  this->GatherDirections(wanted, stride, count);
+  std::array<double, NumberOfDirections> quality12{};
+  std::array<double, NumberOfDirections> quality23{};
+  for (int i = 0; i < NumberOfDirections; ++i)
+  {
+    if (!(wanted >> i & 1u))
+    {
+      continue;
+    }
+    const double kappa[2] = { candidate12[i].Curvature, candidate23[i].Curvature };
+    double sums[2];
+    circles::DistanceSums(this->DirectionH.data() + i * stride,
+      this->DirectionD.data() + i * stride,
+      count[i],
+      kappa,
+      sums);
+    quality12[i] = sums[0];
+    quality23[i] = sums[1];
+  }
+  for (int i = 0; i < NumberOfDirections; ++i)
+  {
+    if (candidate12[i].Valid && candidate23[i].Valid && quality12[i] < quality23[i])
+    {
+      candidate23[i] = candidate12[i];
+    }
   }
 }
 

@@ -159,7 +159,19 @@ private:
   void Reserve(std::size_t neighbors);
   /// The six sums of each direction from its banks and rare record.
   void SumBanks();
+  /// The circle of each direction and its curvature (DirectionValid,
+  /// DirectionCurvature) by the settings' mode.
   void FitDirections(const FitSettings& settings);
+  /// New02: where a direction has both circles, the one closer to its
+  /// points into `candidate23`.
+  void KeepCloserCircles(const std::array<CircleFit, NumberOfDirections>& candidate12,
+    std::array<CircleFit, NumberOfDirections>& candidate23);
+  /// The heights and squared distances of the neighbors of each `wanted`
+  /// direction side by side in DirectionH and DirectionD (a row of
+  /// `stride` per direction), and their `count` per row.
+  void GatherDirections(std::uint32_t wanted,
+    std::size_t stride,
+    std::array<std::size_t, NumberOfDirections + 1>& count);
 
   Vector3 Point{ { 0.0, 0.0, 0.0 } };
   TangentFrame Frame{};
