@@ -236,18 +236,26 @@ CircleFit FitEquations23(const CgaSums& sums)
   return MakeFit((m.c * m.d - m.b * m.e) / denominator);
 }
 
-SineFit FitSine(const std::array<double, NumberOfDirections>& curvature,
-  const std::array<bool, NumberOfDirections>& valid)
+namespace
 {
-  SineFit fit;
-  // 2 theta_i = i pi / 4: directions i and i + 8 share one position on the
-  // circle of 2 theta (they are the two halves of one plane).
-  std::array<bool, 8> occupied{};
-  // Normal equations of the least-squares fit of k = a + b cos 2t + c sin 2t
-  // (symmetric: six entries), and their right-hand side.
+/// Normal equations of the least-squares fit of k = a + b cos 2t + c sin 2t
+/// (symmetric: six entries), and their right-hand side.
+struct SineEquations
+{
   double n00 = 0.0, n01 = 0.0, n02 = 0.0, n11 = 0.0, n12 = 0.0, n22 = 0.0;
   double r0 = 0.0, r1 = 0.0, r2 = 0.0;
-  const DirectionTable& table = Directions();
+};
+
+/// The normal equations of the valid directions' curvatures; counts them
+/// in fit.ValidDirections and marks their positions on the circle of
+/// 2 theta in `occupied`.
+SineEquations SumSineEquations(const std::array<double, NumberOfDirections>& curvature,
+  const std::array<bool, NumberOfDirections>& valid,
+  const DirectionTable& table,
+  std::array<bool, 8>& occupied,
+  SineFit& fit)
+{
+  SineEquations e;
   for (int i = 0; i < NumberOfDirections; ++i)
   {
     if (!valid[i])
@@ -258,17 +266,23 @@ SineFit FitSine(const std::array<double, NumberOfDirections>& curvature,
     occupied[i % 8] = true;
     const int doubled = (2 * i) % NumberOfDirections;
     const double c = table.Cos[doubled], s = table.Sin[doubled], k = curvature[i];
-    n00 += 1.0;
-    n01 += c;
-    n02 += s;
-    n11 += c * c;
-    n12 += c * s;
-    n22 += s * s;
-    r0 += k;
-    r1 += c * k;
-    r2 += s * k;
+    e.n00 += 1.0;
+    e.n01 += c;
+    e.n02 += s;
+    e.n11 += c * c;
+    e.n12 += c * s;
+    e.n22 += s * s;
+    e.r0 += k;
+    e.r1 += c * k;
+    e.r2 += s * k;
   }
+  return e;
+}
 
+/// Whether at least three positions of 2 theta are occupied and no closed
+/// half-turn holds them all.
+bool SpreadOverHalfTurn(const std::array<bool, 8>& occupied)
+{
   int distinct = 0;
   int largestGap = 0;
   int firstOccupied = -1;
@@ -292,27 +306,40 @@ SineFit FitSine(const std::array<double, NumberOfDirections>& curvature,
   }
   if (distinct < 3)
   {
-    return fit;
+    return false;
   }
   largestGap = std::max(largestGap, firstOccupied + 8 - previous);
   if (largestGap >= 4) // all positions inside one closed half-turn of 2 theta
   {
-    return fit;
+    return false;
   }
+  return true;
+}
 
+/// The sine's offset and amplitudes from its normal equations into `fit`.
+void SolveSineEquations(const SineEquations& e, SineFit& fit)
+{
   // L D L^T without pivoting: with three directions spread over more than
   // a half-turn the matrix is positive definite and well conditioned (its
   // pivots are at least about 1); written out, it costs a tenth of Eigen's
   // pivoting solver.
-  const double l10 = n01 / n00, l20 = n02 / n00;
-  const double d1 = n11 - l10 * n01;
-  const double l21 = (n12 - l20 * n01) / d1;
-  const double d2 = n22 - l20 * n02 - l21 * l21 * d1;
-  const double y1 = r1 - l10 * r0;
-  const double y2 = r2 - l20 * r0 - l21 * y1;
+  const double l10 = e.n01 / e.n00, l20 = e.n02 / e.n00;
+  const double d1 = e.n11 - l10 * e.n01;
+  const double l21 = (e.n12 - l20 * e.n01) / d1;
+  const double d2 = e.n22 - l20 * e.n02 - l21 * l21 * d1;
+  const double y1 = e.r1 - l10 * e.r0;
+  const double y2 = e.r2 - l20 * e.r0 - l21 * y1;
   fit.SineAmplitude = y2 / d2;
   fit.CosineAmplitude = y1 / d1 - l21 * fit.SineAmplitude;
-  fit.Offset = r0 / n00 - l10 * fit.CosineAmplitude - l20 * fit.SineAmplitude;
+  fit.Offset = e.r0 / e.n00 - l10 * fit.CosineAmplitude - l20 * fit.SineAmplitude;
+}
+
+/// The RMS of the valid directions' residuals from the fitted sine.
+double SineRmsResidual(const std::array<double, NumberOfDirections>& curvature,
+  const std::array<bool, NumberOfDirections>& valid,
+  const DirectionTable& table,
+  const SineFit& fit)
+{
   // Residuals relative to the largest curvature, so that their squares
   // cannot overflow where the curvatures are huge (a degenerate
   // neighborhood can give 1e283).
@@ -334,7 +361,25 @@ SineFit FitSine(const std::array<double, NumberOfDirections>& curvature,
       squaredResidual += residual * residual;
     }
   }
-  fit.RmsResidual = unit * std::sqrt(squaredResidual / fit.ValidDirections);
+  return unit * std::sqrt(squaredResidual / fit.ValidDirections);
+}
+} // namespace
+
+SineFit FitSine(const std::array<double, NumberOfDirections>& curvature,
+  const std::array<bool, NumberOfDirections>& valid)
+{
+  SineFit fit;
+  // 2 theta_i = i pi / 4: directions i and i + 8 share one position on the
+  // circle of 2 theta (they are the two halves of one plane).
+  std::array<bool, 8> occupied{};
+  const DirectionTable& table = Directions();
+  const SineEquations equations = SumSineEquations(curvature, valid, table, occupied, fit);
+  if (!SpreadOverHalfTurn(occupied))
+  {
+    return fit;
+  }
+  SolveSineEquations(equations, fit);
+  fit.RmsResidual = SineRmsResidual(curvature, valid, table, fit);
   fit.Valid = std::isfinite(fit.Offset) && std::isfinite(fit.CosineAmplitude) &&
     std::isfinite(fit.SineAmplitude) && std::isfinite(fit.RmsResidual);
   return fit;
