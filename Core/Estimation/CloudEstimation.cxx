@@ -2,11 +2,10 @@
 #include "Cloud/CloudStatistics.h"
 #include "Cloud/Halo.h"
 #include "Common/ScratchPool.h"
-#include "Estimation/GivenNormals.h"
+#include "Estimation/CloudNormals.h"
 #include "Estimation/ItemEstimation.h"
 #include "Estimation/RemoteCopies.h"
 #include "Estimation/ResultStore.h"
-#include "Normals/NormalEstimation.h"
 #include "Outliers/SurfaceOutliers.h"
 
 #include <algorithm>
@@ -159,63 +158,6 @@ void SummarizeThresholds(const NeighborhoodRule& rule,
   }
 }
 
-/// Replaces the normals of the own points of `cloud` by estimated ones
-/// (writing them to out.Normals too). Distributed, every process estimates
-/// the whole cloud, gathered, and keeps its own part: the grid's order, not
-/// the split, decides the result. Reported to `monitor` as the part [0,
-/// share) of the whole: the plane fits (most of the time) counted, the
-/// orientation at the end; Aborted when any process was asked to stop
-/// (every process then stops: what follows is collective).
-NormalSummary ReplaceNormals(CloudPoints& cloud,
-  const NormalSettings& settings,
-  const Collectives& processes,
-  WorkRunner& runner,
-  ProgressMonitor* monitor,
-  double share,
-  const RealBuffer& out)
-{
-  CloudPoints whole;
-  std::int64_t first = 0;
-  if (processes.IsDistributed())
-  {
-    std::vector<std::int64_t> lengths;
-    whole.Coordinates = processes.Gather(std::vector<double>(cloud.Coordinates.begin(),
-                                           cloud.Coordinates.begin() + 3 * cloud.NumberOfOwnPoints),
-      &lengths);
-    whole.NumberOfOwnPoints = static_cast<std::int64_t>(whole.Coordinates.size() / 3);
-    for (int p = 0; p < processes.GetLocalProcessId(); ++p)
-    {
-      first += lengths[p] / 3;
-    }
-  }
-  CloudPoints& estimated = processes.IsDistributed() ? whole : cloud;
-  StageProgress planes(monitor, 0.0, 0.8 * share, estimated.NumberOfOwnPoints);
-  // The cloud's own normals are unknown until estimated (not read by the
-  // estimate): released meanwhile, they are not part of its peak memory.
-  std::vector<double>().swap(cloud.Normals);
-  std::vector<double> normals;
-  NormalSummary summary = EstimateNormals(estimated, settings, runner, normals, &planes);
-  summary.Aborted =
-    !processes.Min(planes.Stopped() ? 0 : 1) || !StageProgress(monitor, 0.0, share, 1).Reach(1.0);
-  cloud.DropHalo(); // the normals back, zero
-  if (!normals.empty())
-  {
-    std::copy_n(normals.begin() + 3 * first, 3 * cloud.NumberOfOwnPoints, cloud.Normals.begin());
-  }
-  if (out)
-  {
-    for (std::int64_t i = 0; i < 3 * cloud.GetNumberOfInputPoints(); ++i)
-    {
-      out.Set(i, 0.0);
-    }
-    for (std::int64_t i = 0; i < cloud.NumberOfOwnPoints; ++i)
-    {
-      out.SetRange(3 * cloud.InputId(i), &cloud.Normals[3 * i], 3);
-    }
-  }
-  return summary;
-}
-
 /// Between the serial steps of an estimation (each up to a second or so on
 /// a million points): false once the monitor asks to stop, on any process
 /// (all of them ask here, in the same order: what follows is collective).
@@ -226,32 +168,6 @@ bool ContinueBetweenSteps(ProgressMonitor* monitor, double reached, const Collec
   return processes.IsDistributed() ? processes.Min(local ? 1 : 0) == 1 : local;
 }
 } // namespace
-
-NormalSummary EstimateCloudNormals(CloudPoints cloud,
-  const NormalSettings& settings,
-  const Collectives& processes,
-  WorkRunner& runner,
-  const RealBuffer& out,
-  ProgressMonitor* monitor)
-{
-  const std::vector<RepeatedPoint> repeats = RemoveRepeatedPoints(cloud);
-  const double scale = WorkingLengthScale(cloud, processes);
-  cloud.ScaleCoordinates(scale);
-  NormalSettings scaled = settings;
-  for (double& c : scaled.Viewpoint)
-  {
-    c *= scale;
-  }
-  const NormalSummary summary = ReplaceNormals(cloud, scaled, processes, runner, monitor, 1.0, out);
-  for (const RepeatedPoint& repeat : repeats)
-  {
-    if (out)
-    {
-      out.CopyRange(3 * repeat.Original, 3 * repeat.Copy, 3);
-    }
-  }
-  return summary;
-}
 
 const char* UnestimatedReasonName(UnestimatedReason reason)
 {
@@ -344,6 +260,67 @@ bool NormalsFollowTheSurface(const CloudPoints& cloud,
   return counts[1] >= FewestTested && 2 * counts[0] > counts[1];
 }
 
+/// The halo of `cloud` (distributed), the grid of its points and their
+/// processing order.
+void BuildGridAndOrder(CloudPoints& cloud,
+  NeighborhoodRule& rule,
+  const GridLattice& lattice,
+  const EstimationRun& run,
+  PointGrid& grid,
+  ProcessingOrder& order)
+{
+  if (run.Processes.IsDistributed())
+  {
+    if (rule.KNearest)
+    {
+      rule.Reach = run.Processes.Max(LargestLocalKthDistance(cloud, lattice, rule.K));
+    }
+    ExchangeHalo(cloud, run.Processes, rule.Reach);
+    RemoveRepeatedHalo(cloud);
+  }
+  grid.Build(cloud.Coordinates.data(), cloud.GetNumberOfPoints(), lattice, &run.Runner);
+  if (rule.Adjusted)
+  {
+    order.MakeBlocks(grid, cloud, lattice, rule.BlockLength);
+  }
+  else
+  {
+    order.MakePointwise(grid, cloud);
+  }
+}
+
+/// The automatic scale's choices that need the cloud's grid and normals:
+/// the coordinates' lattice, whether the normals were estimated and follow
+/// the surface (the fourth order), the normal field's fit and the levels.
+void ChooseLadder(NeighborhoodRule& rule,
+  const CloudPoints& cloud,
+  const PointGrid& grid,
+  const FitSettings& fit,
+  const CloudBoxes& boxes,
+  const EstimationSettings& settings,
+  const EstimationRun& run,
+  EstimationSummary& summary)
+{
+  // The lattice first: the gate's fits weigh the noise too.
+  rule.Automatic.CoordinateStep = CoordinateSteps(cloud, grid, run.Processes);
+  rule.Automatic.EstimatedNormals = settings.EstimateNormals || summary.GivenNormalsReplaced;
+  rule.Automatic.FourthOrder = rule.Automatic.EstimatedNormals &&
+    NormalsFollowTheSurface(cloud, grid, rule, fit, boxes, run.Processes);
+  summary.FourthOrderFits = !rule.Automatic.EstimatedNormals || rule.Automatic.FourthOrder;
+  rule.Automatic.NormalField = settings.NormalFieldFit && !rule.Automatic.EstimatedNormals;
+  if (rule.Automatic.EstimatedNormals)
+  {
+    rule.Automatic.SetLevels(rule.Automatic.WideLevels);
+  }
+}
+
+/// How many points of all processes `marks` marks.
+std::int64_t CountMarked(const std::vector<unsigned char>& marks, const Collectives& processes)
+{
+  return processes.Sum(static_cast<std::int64_t>(
+    std::count(marks.begin(), marks.end(), static_cast<unsigned char>(1))));
+}
+
 /// The estimation proper, on the working copy `cloud` (consumed: it, its
 /// grid and the anchors are freed on return, before the passes over the
 /// results, which on large clouds would otherwise add to the peak memory).
@@ -357,26 +334,9 @@ bool EstimateEveryPoint(CloudPoints cloud,
   EstimationSummary& summary)
 {
   const GridLattice lattice = GlobalLattice(boxes, rule.CellRadius);
-  if (run.Processes.IsDistributed())
-  {
-    if (rule.KNearest)
-    {
-      rule.Reach = run.Processes.Max(LargestLocalKthDistance(cloud, lattice, rule.K));
-    }
-    ExchangeHalo(cloud, run.Processes, rule.Reach);
-    RemoveRepeatedHalo(cloud);
-  }
   PointGrid grid;
-  grid.Build(cloud.Coordinates.data(), cloud.GetNumberOfPoints(), lattice, &run.Runner);
   ProcessingOrder order;
-  if (rule.Adjusted)
-  {
-    order.MakeBlocks(grid, cloud, lattice, rule.BlockLength);
-  }
-  else
-  {
-    order.MakePointwise(grid, cloud);
-  }
+  BuildGridAndOrder(cloud, rule, lattice, run, grid, order);
   if (!ContinueBetweenSteps(run.Monitor, run.NormalsShare, run.Processes))
   {
     return false;
@@ -388,17 +348,7 @@ bool EstimateEveryPoint(CloudPoints cloud,
   fit.MaximumOpposingFraction = settings.MaximumOpposingFraction;
   if (rule.AutomaticScale)
   {
-    // The lattice first: the gate's fits weigh the noise too.
-    rule.Automatic.CoordinateStep = CoordinateSteps(cloud, grid, run.Processes);
-    rule.Automatic.EstimatedNormals = settings.EstimateNormals || summary.GivenNormalsReplaced;
-    rule.Automatic.FourthOrder = rule.Automatic.EstimatedNormals &&
-      NormalsFollowTheSurface(cloud, grid, rule, fit, boxes, run.Processes);
-    summary.FourthOrderFits = !rule.Automatic.EstimatedNormals || rule.Automatic.FourthOrder;
-    rule.Automatic.NormalField = settings.NormalFieldFit && !rule.Automatic.EstimatedNormals;
-    if (rule.Automatic.EstimatedNormals)
-    {
-      rule.Automatic.SetLevels(rule.Automatic.WideLevels);
-    }
+    ChooseLadder(rule, cloud, grid, fit, boxes, settings, run, summary);
   }
   // With shared fits the anchors come first, and take most of the time.
   AnchorTable anchors;
@@ -445,12 +395,11 @@ bool EstimateEveryPoint(CloudPoints cloud,
   {
     return false;
   }
-  summary.NumberOfSharedPoints = run.Processes.Sum(static_cast<std::int64_t>(
-    std::count(sharedMarks.begin(), sharedMarks.end(), static_cast<unsigned char>(1))));
-  summary.NumberOfJetPoints = run.Processes.Sum(static_cast<std::int64_t>(
-    std::count(jetMarks.begin(), jetMarks.end(), static_cast<unsigned char>(1))));
+  summary.NumberOfSharedPoints = CountMarked(sharedMarks, run.Processes);
+  summary.NumberOfJetPoints = CountMarked(jetMarks, run.Processes);
   return true;
 }
+
 /// The outlier flags and surface distances of the own points into their
 /// buffers (every other input point, and every point when none were
 /// looked for: not an outlier, no distance).
@@ -478,21 +427,17 @@ void StoreOutliers(const CurvatureBuffers& out,
     store(cloud.InputId(i), outliers.Flag[i], outliers.Distance[i]);
   }
 }
-} // namespace
 
-EstimationSummary EstimateCloud(CloudPoints cloud,
+/// The outliers moved onto the surface (where asked for) and their flags
+/// stored; returns the repeats they made, taken out of `cloud`.
+std::vector<RepeatedPoint> MoveOutliers(CloudPoints& cloud,
   const EstimationSettings& settings,
   const Collectives& processes,
   WorkRunner& runner,
-  ProgressMonitor* monitor,
-  const CurvatureBuffers& out)
+  const CurvatureBuffers& out,
+  RemoteCopies& remote,
+  EstimationSummary& summary)
 {
-  EstimationSummary summary;
-  const std::vector<RepeatedPoint> repeats = RemoveRepeatedPoints(cloud);
-  summary.NumberOfRepeatedPoints = static_cast<std::int64_t>(repeats.size());
-  const WorkingUnit unit{ WorkingLengthScale(cloud, processes) };
-  cloud.ScaleCoordinates(unit.Scale);
-  // Before the normals, which they would pull too.
   SurfaceOutliers outliers;
   if (settings.MoveOutliers && settings.Mode == FitMode::OrientedCircles)
   {
@@ -505,49 +450,18 @@ EstimationSummary EstimateCloud(CloudPoints cloud,
   }
   // Outliers moved onto a point of the surface are its exact repeats (or,
   // that point in another process's part, take its results from there).
-  RemoteCopies remote;
   remote.TakeOut(cloud, outliers);
-  const std::vector<RepeatedPoint> movedOutliers =
+  std::vector<RepeatedPoint> movedOutliers =
     outliers.Count > 0 ? RemoveRepeatedPoints(cloud) : std::vector<RepeatedPoint>{};
   remote.FindAnswers(cloud, processes);
-  // Plane fits cost about as much as the curvatures, orientation a little more.
-  // Given normals that the positions contradict: estimated, signed as given.
-  summary.GivenNormalsReplaced = GivenNormalsDisagree(settings, cloud, processes, runner);
-  const std::vector<double> given(
-    summary.GivenNormalsReplaced ? cloud.Normals : std::vector<double>{});
-  const bool estimate = settings.EstimateNormals || summary.GivenNormalsReplaced;
-  const double normalsShare = estimate ? 0.45 : 0.0;
-  if (estimate)
-  {
-    NormalSettings normals = settings.Normals;
-    normals.ChooseScale = settings.Mode == FitMode::OrientedCircles;
-    for (double& c : normals.Viewpoint)
-    {
-      c *= unit.Scale;
-    }
-    summary.Normals =
-      ReplaceNormals(cloud, normals, processes, runner, monitor, normalsShare, out.Normals);
-    if (summary.Normals.Aborted)
-    {
-      summary.Aborted = true;
-      return summary;
-    }
-    SignLikeGiven(cloud.Normals, given);
-  }
-  const CloudBoxes boxes = MeasureBoxes(cloud, processes);
-  NeighborhoodRule rule =
-    ChooseThresholds(settings, cloud, processes, boxes, unit, runner, summary);
-  SummarizeThresholds(rule, unit, summary);
-  if (!ContinueBetweenSteps(monitor, normalsShare, processes))
-  {
-    summary.Aborted = true;
-    return summary;
-  }
+  return movedOutliers;
+}
 
-  const std::int64_t numberOfPoints = cloud.GetNumberOfInputPoints();
-  std::vector<std::uint8_t> reasons(numberOfPoints, 0);
-  const ResultStore writer(out, reasons.data(), settings.MinimumPointsPerDirection);
-  for (std::int64_t i = 0; i < numberOfPoints; ++i)
+/// The input points whose coordinates are not finite, stored as not
+/// estimated; the cloud's flags of them released.
+void StoreBadCoordinates(CloudPoints& cloud, const ResultStore& writer)
+{
+  for (std::int64_t i = 0; i < cloud.GetNumberOfInputPoints(); ++i)
   {
     if (!cloud.FiniteInput[i])
     {
@@ -555,22 +469,18 @@ EstimationSummary EstimateCloud(CloudPoints cloud,
     }
   }
   cloud.ReleaseFiniteInput(); // not read again
-  const EstimationRun run{ processes, runner, monitor, normalsShare };
-  if (!EstimateEveryPoint(std::move(cloud), rule, boxes, settings, run, writer, summary))
-  {
-    summary.Aborted = true;
-    return summary;
-  }
-  for (const RepeatedPoint& moved : movedOutliers)
-  {
-    writer.Copy(moved.Original, moved.Copy, false);
-  }
-  remote.Deliver(writer, processes);
-  for (const RepeatedPoint& repeat : repeats)
-  {
-    writer.Copy(repeat.Original, repeat.Copy);
-  }
-  summary.UnestimatedByReason = CountUnestimated(out, reasons.data(), numberOfPoints);
+}
+
+/// The passes over every result at the end: the unestimated points'
+/// counts, the input's unit, the clipped mean and the verdicts.
+void FinishResults(const CurvatureBuffers& out,
+  const std::uint8_t* reasons,
+  std::int64_t numberOfPoints,
+  const WorkingUnit& unit,
+  const Collectives& processes,
+  EstimationSummary& summary)
+{
+  summary.UnestimatedByReason = CountUnestimated(out, reasons, numberOfPoints);
   for (const std::int64_t count : summary.UnestimatedByReason)
   {
     summary.NumberOfUnestimatedPoints += count;
@@ -593,6 +503,62 @@ EstimationSummary EstimateCloud(CloudPoints cloud,
   {
     summary.TrustedCurvatureScale = WriteTrustAndShape(out, numberOfPoints, processes);
   }
+}
+} // namespace
+
+EstimationSummary EstimateCloud(CloudPoints cloud,
+  const EstimationSettings& settings,
+  const Collectives& processes,
+  WorkRunner& runner,
+  ProgressMonitor* monitor,
+  const CurvatureBuffers& out)
+{
+  EstimationSummary summary;
+  const std::vector<RepeatedPoint> repeats = RemoveRepeatedPoints(cloud);
+  summary.NumberOfRepeatedPoints = static_cast<std::int64_t>(repeats.size());
+  const WorkingUnit unit{ WorkingLengthScale(cloud, processes) };
+  cloud.ScaleCoordinates(unit.Scale);
+  // Before the normals, which they would pull too.
+  RemoteCopies remote;
+  const std::vector<RepeatedPoint> movedOutliers =
+    MoveOutliers(cloud, settings, processes, runner, out, remote, summary);
+  const double normalsShare =
+    SettleNormals(cloud, settings, unit, processes, runner, monitor, out.Normals, summary);
+  if (summary.Normals.Aborted)
+  {
+    summary.Aborted = true;
+    return summary;
+  }
+  const CloudBoxes boxes = MeasureBoxes(cloud, processes);
+  NeighborhoodRule rule =
+    ChooseThresholds(settings, cloud, processes, boxes, unit, runner, summary);
+  SummarizeThresholds(rule, unit, summary);
+  if (!ContinueBetweenSteps(monitor, normalsShare, processes))
+  {
+    summary.Aborted = true;
+    return summary;
+  }
+
+  const std::int64_t numberOfPoints = cloud.GetNumberOfInputPoints();
+  std::vector<std::uint8_t> reasons(numberOfPoints, 0);
+  const ResultStore writer(out, reasons.data(), settings.MinimumPointsPerDirection);
+  StoreBadCoordinates(cloud, writer);
+  const EstimationRun run{ processes, runner, monitor, normalsShare };
+  if (!EstimateEveryPoint(std::move(cloud), rule, boxes, settings, run, writer, summary))
+  {
+    summary.Aborted = true;
+    return summary;
+  }
+  for (const RepeatedPoint& moved : movedOutliers)
+  {
+    writer.Copy(moved.Original, moved.Copy, false);
+  }
+  remote.Deliver(writer, processes);
+  for (const RepeatedPoint& repeat : repeats)
+  {
+    writer.Copy(repeat.Original, repeat.Copy);
+  }
+  FinishResults(out, reasons.data(), numberOfPoints, unit, processes, summary);
   return summary;
 }
 
