@@ -45,7 +45,7 @@ void TestNoEstimate(Checks& checks)
 
 /// A run whose first steps report nothing for 4 s, then go at a steady
 /// pace to the end at 24 s: the first estimate is near the 19 s left, not
-/// the 395 s the pace since the start would say.
+/// the 416 s (about 7 min) the pace since the start would say.
 void TestSilentStart(Checks& checks)
 {
   pcurv::TimeLeftClock clock;
